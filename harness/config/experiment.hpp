@@ -1,0 +1,50 @@
+// An experiment: scenes x techniques x parameter values x resolutions, with timing settings.
+#pragma once
+
+#include "core/param.hpp"
+#include "scene/scene.hpp"
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace canopy {
+
+struct Resolution {
+    int width = 640;
+    int height = 360;
+};
+
+// One [[technique]] entry. Each parameter may list several values; the experiment runs the
+// cartesian product of all lists (a sweep).
+struct TechniqueEntry {
+    std::string name;                                     // registry name, already checked to exist
+    std::map<std::string, std::vector<ParamValue>> sweep; // parameter -> values
+    std::map<std::string, int> param_lines;               // parameter -> line in the config
+    std::vector<std::string> param_order;                 // parameters in the order the config gives them
+    SourceLocation where;
+};
+
+struct Experiment {
+    std::string name;
+    std::filesystem::path file;
+    std::string description;
+    std::vector<Scene> scenes;
+    std::vector<Resolution> resolutions{{640, 360}};
+    std::vector<TechniqueEntry> techniques;
+    int warmup_frames = 5;
+    int measured_frames = 20;
+    // Hash of the experiment file and every scene file it uses (hex), for the results record.
+    std::string config_hash;
+};
+
+// One thing to run: one scene, one resolution, one technique with concrete parameters.
+struct Case {
+    size_t scene_index = 0;
+    Resolution resolution;
+    std::string technique;
+    ParamSet params;
+    std::string id;  // unique, file-name safe: "spheres_640x360_shadow.pcf_kernel-5_pattern-grid"
+};
+
+}  // namespace canopy

@@ -1,0 +1,67 @@
+// The Vulkan instance, the chosen device and its one graphics queue.
+#pragma once
+
+#include "gpu/vk_check.hpp"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace canopy {
+
+struct DeviceInfo {
+    int index = 0;
+    std::string name;          // "llvmpipe (LLVM 15.0.6, 256 bits)"
+    std::string type;          // "cpu", "discrete-gpu", "integrated-gpu", "virtual-gpu", "other"
+    std::string driver_name;   // "llvmpipe", "NVIDIA"
+    std::string driver_info;   // "Mesa 22.3.6 (LLVM 15.0.6)"
+    std::string api_version;   // "1.3.230"
+    uint32_t vendor_id = 0, device_id = 0;
+    bool is_lavapipe() const { return type == "cpu"; }
+};
+
+class GpuContext {
+public:
+    // Every Vulkan device on this machine. Throws GpuError when Vulkan itself is unavailable.
+    static std::vector<DeviceInfo> list_devices();
+
+    // `selector` is "" (lavapipe if present, else the first device), an index from `canopy
+    // devices`, or a case-insensitive substring of a device name. Unknown selectors throw
+    // ConfigError listing the devices. Needs Vulkan 1.3 (dynamic rendering, synchronization2).
+    explicit GpuContext(const std::string& selector = "");
+    ~GpuContext();
+    GpuContext(const GpuContext&) = delete;
+    GpuContext& operator=(const GpuContext&) = delete;
+
+    VkInstance instance() const { return instance_; }
+    VkPhysicalDevice physical_device() const { return physical_; }
+    VkDevice device() const { return device_; }
+    VkQueue queue() const { return queue_; }
+    uint32_t queue_family() const { return queue_family_; }
+    const DeviceInfo& info() const { return info_; }
+    double timestamp_period_ns() const { return timestamp_period_ns_; }
+    uint32_t timestamp_valid_bits() const { return timestamp_valid_bits_; }
+
+    uint32_t memory_type(uint32_t type_bits, VkMemoryPropertyFlags wanted) const;
+    VkFormatFeatureFlags2 format_features(VkFormat format) const;  // optimal tiling
+
+    // One-shot command buffers for uploads and readbacks.
+    VkCommandBuffer begin_commands() const;
+    void submit_and_wait(VkCommandBuffer commands) const;  // frees the buffer
+
+private:
+    VkInstance instance_ = VK_NULL_HANDLE;
+    VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+    VkPhysicalDevice physical_ = VK_NULL_HANDLE;
+    VkDevice device_ = VK_NULL_HANDLE;
+    VkQueue queue_ = VK_NULL_HANDLE;
+    VkCommandPool pool_ = VK_NULL_HANDLE;
+    VkFence fence_ = VK_NULL_HANDLE;
+    uint32_t queue_family_ = 0;
+    DeviceInfo info_;
+    double timestamp_period_ns_ = 1.0;
+    uint32_t timestamp_valid_bits_ = 0;
+    VkPhysicalDeviceMemoryProperties memory_{};
+};
+
+}  // namespace canopy

@@ -1,0 +1,263 @@
+#include "render/frame_renderer.hpp"
+
+#include "scene/camera.hpp"
+
+#include <fmt/format.h>
+
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+
+namespace canopy {
+
+namespace {
+
+enum PassSlot : size_t { kShadowPass = 0, kLitPass = 1 };
+
+FrameUniforms make_uniforms(const Scene& scene, uint32_t width, uint32_t height, const FramePlan& plan,
+                            const std::optional<LightView>& light_view) {
+    FrameUniforms u{};
+    const Camera& camera = scene.camera;
+    u.view_proj = projection_matrix(camera, float(width) / float(height)) * view_matrix(camera);
+    u.camera_position = glm::vec4(camera.position, 1.0f);
+    u.ambient = glm::vec4(scene.ambient, 0.0f);
+
+    const Light& light = scene.shadow_light() ? *scene.shadow_light() : scene.lights.front();
+    u.light_position = glm::vec4(light.position, float(int(light.type)));
+    u.light_axis = glm::vec4(glm::normalize(light.direction), std::cos(glm::radians(light.spot_angle_degrees)));
+    u.light_intensity = glm::vec4(light.color * light.intensity, 0.0f);
+    const float second = light.type == LightType::sphere ? light.sphere_radius : light.rect_size.y;
+    u.light_size = glm::vec4(light.size(), light.rect_size.x, second, 0.0f);
+
+    if (light_view) {
+        u.light_view = light_view->view;
+        u.light_proj = light_view->projection;
+        const float range = light_view->far_plane - light_view->near_plane;
+        u.shadow_depth_range = glm::vec4(light_view->near_plane, light_view->far_plane, 1.0f / range,
+                                         light_view->perspective ? 1.0f : 0.0f);
+        const float resolution = float(plan.shadow_map->resolution);
+        u.shadow_texel = glm::vec4(resolution, 1.0f / resolution, light_view->texel_world, 0.0f);
+    }
+    for (size_t i = 0; i < 16; ++i) u.technique_params[i / 4][int(i % 4)] = plan.shader_params.values[i];
+    for (size_t i = 0; i < plan.shader_params.offsets.size(); ++i) {
+        u.sample_offsets[i / 2][int(2 * (i % 2))] = plan.shader_params.offsets[i][0];
+        u.sample_offsets[i / 2][int(2 * (i % 2) + 1)] = plan.shader_params.offsets[i][1];
+    }
+    return u;
+}
+
+VkSampler create_sampler(VkDevice device, bool compare) {
+    VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+    info.magFilter = info.minFilter = compare ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
+    info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+    info.addressModeU = info.addressModeV = info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    info.compareEnable = compare ? VK_TRUE : VK_FALSE;
+    info.compareOp = VK_COMPARE_OP_LESS_OR_EQUAL;  // reference <= stored depth: lit
+    info.maxLod = 0.0f;
+    VkSampler sampler;
+    VK_CHECK(vkCreateSampler(device, &info, nullptr, &sampler));
+    return sampler;
+}
+
+}  // namespace
+
+std::optional<std::string> unsupported_reason(const GpuContext& gpu, const Scene& scene, const FramePlan& plan) {
+    if (scene.lights.size() != 1)
+        return fmt::format("scene '{}' has {} lights; the raster lit pass shades exactly one light", scene.name,
+                           scene.lights.size());
+    if (plan.shadow_map) {
+        const Light* light = scene.shadow_light();
+        if (!light) return fmt::format("scene '{}' has no shadow-casting light (casts_shadows = false)", scene.name);
+        if (plan.needs_area_light && !light->is_area())
+            return fmt::format("scene '{}': this technique needs an area light (rect or sphere) with a size", scene.name);
+        const VkFormat format = vk_format(plan.shadow_map->format);
+        const VkFormatFeatureFlags2 features = gpu.format_features(format);
+        const char* name = to_string(plan.shadow_map->format);
+        if (!(features & VK_FORMAT_FEATURE_2_DEPTH_STENCIL_ATTACHMENT_BIT) || !(features & VK_FORMAT_FEATURE_2_SAMPLED_IMAGE_BIT))
+            return fmt::format("device '{}' cannot render to and sample depth format {}", gpu.info().name, name);
+        if (plan.shadow_map->compare_sampler && !(features & VK_FORMAT_FEATURE_2_SAMPLED_IMAGE_DEPTH_COMPARISON_BIT))
+            return fmt::format("device '{}' has no depth-compare sampling for {} (needed by hardware PCF)",
+                               gpu.info().name, name);
+    }
+    const VkFormatFeatureFlags2 color = gpu.format_features(LitPass::kColorFormat);
+    if (!(color & VK_FORMAT_FEATURE_2_COLOR_ATTACHMENT_BIT))
+        return fmt::format("device '{}' cannot render to RGBA32F", gpu.info().name);
+    return std::nullopt;
+}
+
+FrameRenderer::FrameRenderer(const GpuContext& gpu, const Scene& scene, const std::vector<TriangleMesh>& meshes,
+                             uint32_t width, uint32_t height, const FramePlan& plan)
+    : gpu_(gpu), plan_(plan), background_(scene.background) {
+    if (auto reason = unsupported_reason(gpu, scene, plan)) throw GpuError(*reason);
+    scene_ = std::make_unique<GpuScene>(gpu, ledger_, scene, meshes);
+    if (plan.shadow_map)
+        light_view_ = compute_light_view(*scene.shadow_light(), scene_bounds(scene, meshes), plan.shadow_map->resolution);
+
+    uniforms_ = Buffer(gpu, ledger_, "frame", sizeof(FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
+    FrameUniforms u = make_uniforms(scene, width, height, plan, light_view_);
+    std::memcpy(uniforms_.mapped(), &u, sizeof(u));
+
+    create_descriptors();
+    std::vector<std::string> names;
+    if (plan.shadow_map) {
+        shadow_pass_ = std::make_unique<ShadowMapPass>(gpu, ledger_, *plan.shadow_map, pipeline_layout_);
+        names.push_back("shadow_map");
+    }
+    lit_pass_ = std::make_unique<LitPass>(gpu, ledger_, width, height, plan.forward_fragment_spirv, pipeline_layout_);
+    names.push_back("lit");
+    timer_ = std::make_unique<PassTimer>(gpu, names);
+
+    // Bind the shadow map (or nothing) now that it exists.
+    if (shadow_pass_) {
+        std::array<VkDescriptorImageInfo, 2> images{{
+            {nearest_sampler_, shadow_pass_->depth().view(), VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL},
+            {compare_sampler_, shadow_pass_->depth().view(), VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL},
+        }};
+        std::array<VkWriteDescriptorSet, 2> writes{};
+        for (uint32_t i = 0; i < 2; ++i) {
+            writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+            writes[i].dstSet = descriptor_set_;
+            writes[i].dstBinding = 1 + i;
+            writes[i].descriptorCount = 1;
+            writes[i].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+            writes[i].pImageInfo = &images[i];
+        }
+        vkUpdateDescriptorSets(gpu.device(), uint32_t(writes.size()), writes.data(), 0, nullptr);
+    }
+
+    VkCommandPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+    pool_info.queueFamilyIndex = gpu.queue_family();
+    VK_CHECK(vkCreateCommandPool(gpu.device(), &pool_info, nullptr, &command_pool_));
+    VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    alloc.commandPool = command_pool_;
+    alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    alloc.commandBufferCount = 1;
+    VK_CHECK(vkAllocateCommandBuffers(gpu.device(), &alloc, &commands_));
+    VkFenceCreateInfo fence_info{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    VK_CHECK(vkCreateFence(gpu.device(), &fence_info, nullptr, &fence_));
+    record();
+}
+
+FrameRenderer::~FrameRenderer() {
+    VkDevice device = gpu_.device();
+    vkDeviceWaitIdle(device);
+    vkDestroyFence(device, fence_, nullptr);
+    vkDestroyCommandPool(device, command_pool_, nullptr);
+    vkDestroySampler(device, nearest_sampler_, nullptr);
+    vkDestroySampler(device, compare_sampler_, nullptr);
+    vkDestroyDescriptorPool(device, descriptor_pool_, nullptr);
+    vkDestroyPipelineLayout(device, pipeline_layout_, nullptr);
+    vkDestroyDescriptorSetLayout(device, set_layout_, nullptr);
+}
+
+void FrameRenderer::create_descriptors() {
+    VkDevice device = gpu_.device();
+    const VkShaderStageFlags stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+    std::array<VkDescriptorSetLayoutBinding, 3> bindings{{
+        {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, stages, nullptr},
+        {1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
+        {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
+    }};
+    VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+    set_info.bindingCount = uint32_t(bindings.size());
+    set_info.pBindings = bindings.data();
+    VK_CHECK(vkCreateDescriptorSetLayout(device, &set_info, nullptr, &set_layout_));
+
+    VkPushConstantRange push{stages, 0, sizeof(DrawConstants)};
+    VkPipelineLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+    layout_info.setLayoutCount = 1;
+    layout_info.pSetLayouts = &set_layout_;
+    layout_info.pushConstantRangeCount = 1;
+    layout_info.pPushConstantRanges = &push;
+    VK_CHECK(vkCreatePipelineLayout(device, &layout_info, nullptr, &pipeline_layout_));
+
+    std::array<VkDescriptorPoolSize, 2> sizes{{{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
+                                               {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 2}}};
+    VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+    pool_info.maxSets = 1;
+    pool_info.poolSizeCount = uint32_t(sizes.size());
+    pool_info.pPoolSizes = sizes.data();
+    VK_CHECK(vkCreateDescriptorPool(device, &pool_info, nullptr, &descriptor_pool_));
+    VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+    alloc.descriptorPool = descriptor_pool_;
+    alloc.descriptorSetCount = 1;
+    alloc.pSetLayouts = &set_layout_;
+    VK_CHECK(vkAllocateDescriptorSets(device, &alloc, &descriptor_set_));
+
+    VkDescriptorBufferInfo buffer{uniforms_.handle(), 0, sizeof(FrameUniforms)};
+    VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    write.dstSet = descriptor_set_;
+    write.dstBinding = 0;
+    write.descriptorCount = 1;
+    write.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+    write.pBufferInfo = &buffer;
+    vkUpdateDescriptorSets(device, 1, &write, 0, nullptr);
+
+    if (plan_.shadow_map) {
+        nearest_sampler_ = create_sampler(device, false);
+        compare_sampler_ = create_sampler(device, true);
+    }
+}
+
+void FrameRenderer::record() {
+    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    VK_CHECK(vkBeginCommandBuffer(commands_, &begin));
+    timer_->reset(commands_);
+    size_t slot = 0;
+    if (shadow_pass_) {
+        timer_->begin(commands_, slot);
+        shadow_pass_->record(commands_, *scene_, pipeline_layout_, descriptor_set_);
+        timer_->end(commands_, slot);
+        ++slot;
+    }
+    timer_->begin(commands_, slot);
+    lit_pass_->record(commands_, *scene_, pipeline_layout_, descriptor_set_, background_);
+    timer_->end(commands_, slot);
+    VK_CHECK(vkEndCommandBuffer(commands_));
+}
+
+FrameTiming FrameRenderer::render() {
+    VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+    submit.commandBufferCount = 1;
+    submit.pCommandBuffers = &commands_;
+    const auto start = std::chrono::steady_clock::now();
+    VK_CHECK(vkQueueSubmit(gpu_.queue(), 1, &submit, fence_));
+    VK_CHECK(vkWaitForFences(gpu_.device(), 1, &fence_, VK_TRUE, UINT64_MAX));
+    const auto stop = std::chrono::steady_clock::now();
+    VK_CHECK(vkResetFences(gpu_.device(), 1, &fence_));
+
+    FrameTiming timing;
+    timing.wall_ms = std::chrono::duration<double, std::milli>(stop - start).count();
+    timing.pass_gpu_ms = timer_->read_milliseconds();
+    timing.gpu_ms = timing.pass_gpu_ms.back();
+    timing.pass_gpu_ms.pop_back();
+    return timing;
+}
+
+Image FrameRenderer::read_color() const {
+    const Texture& color = lit_pass_->color();
+    const size_t bytes = size_t(color.width()) * color.height() * 4 * sizeof(float);
+    MemoryLedger readback_ledger;  // transient, not charged to the technique
+    Buffer staging(gpu_, readback_ledger, "readback", bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
+    VkCommandBuffer commands = gpu_.begin_commands();
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageExtent = {color.width(), color.height(), 1};
+    vkCmdCopyImageToBuffer(commands, color.image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, staging.handle(), 1, &region);
+    gpu_.submit_and_wait(commands);
+    Image image(int(color.width()), int(color.height()));
+    std::memcpy(image.pixels.data(), staging.mapped(), bytes);
+    return image;
+}
+
+MemoryUse FrameRenderer::memory() const {
+    return {ledger_.bytes("technique"), ledger_.bytes("targets"), ledger_.bytes("scene")};
+}
+
+std::string FrameRenderer::shadow_sampler() const {
+    if (!plan_.shadow_map) return "";
+    return plan_.shadow_map->compare_sampler ? "compare-linear" : "nearest";
+}
+
+}  // namespace canopy

@@ -1,0 +1,77 @@
+// Builds, from a technique's FramePlan, exactly the passes and resources it asks for, records
+// one frame's commands once, and replays them: each render() is one timed frame.
+#pragma once
+
+#include "core/image.hpp"
+#include "core/technique.hpp"
+#include "gpu/pass_timer.hpp"
+#include "render/gpu_scene.hpp"
+#include "render/light_view.hpp"
+#include "render/lit_pass.hpp"
+#include "render/shadow_map_pass.hpp"
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace canopy {
+
+struct FrameTiming {
+    std::vector<double> pass_gpu_ms;  // per pass, in pass_names() order
+    double gpu_ms = 0;                // first pass start to last pass end
+    double wall_ms = 0;               // CPU: submit to fence signalled
+};
+
+struct MemoryUse {
+    uint64_t technique_bytes = 0;  // resources the technique asked for (shadow maps, ...)
+    uint64_t target_bytes = 0;     // camera colour and depth targets, the same for every technique
+    uint64_t scene_bytes = 0;      // vertex and index buffers
+};
+
+// Why `plan` cannot run on this device or scene, or nullopt when it can.
+std::optional<std::string> unsupported_reason(const GpuContext& gpu, const Scene& scene, const FramePlan& plan);
+
+class FrameRenderer {
+public:
+    FrameRenderer(const GpuContext& gpu, const Scene& scene, const std::vector<TriangleMesh>& meshes,
+                  uint32_t width, uint32_t height, const FramePlan& plan);
+    ~FrameRenderer();
+    FrameRenderer(const FrameRenderer&) = delete;
+    FrameRenderer& operator=(const FrameRenderer&) = delete;
+
+    FrameTiming render();
+    Image read_color() const;  // the last rendered frame, linear RGBA
+    const std::vector<std::string>& pass_names() const { return timer_->pass_names(); }
+    MemoryUse memory() const;
+    size_t triangle_count() const { return scene_->triangle_count(); }
+    // "compare-linear" when hardware 2x2 PCF sampling is bound, "nearest" otherwise, "" without a map.
+    std::string shadow_sampler() const;
+    const std::optional<LightView>& light_view() const { return light_view_; }
+
+private:
+    void create_descriptors();
+    void record();
+
+    const GpuContext& gpu_;
+    FramePlan plan_;
+    glm::vec3 background_;
+    MemoryLedger ledger_;
+    std::unique_ptr<GpuScene> scene_;
+    std::optional<LightView> light_view_;
+    VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
+    VkPipelineLayout pipeline_layout_ = VK_NULL_HANDLE;
+    VkDescriptorPool descriptor_pool_ = VK_NULL_HANDLE;
+    VkDescriptorSet descriptor_set_ = VK_NULL_HANDLE;
+    VkSampler nearest_sampler_ = VK_NULL_HANDLE;
+    VkSampler compare_sampler_ = VK_NULL_HANDLE;
+    Buffer uniforms_;
+    std::unique_ptr<ShadowMapPass> shadow_pass_;
+    std::unique_ptr<LitPass> lit_pass_;
+    std::unique_ptr<PassTimer> timer_;
+    VkCommandPool command_pool_ = VK_NULL_HANDLE;
+    VkCommandBuffer commands_ = VK_NULL_HANDLE;
+    VkFence fence_ = VK_NULL_HANDLE;
+};
+
+}  // namespace canopy

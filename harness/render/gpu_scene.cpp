@@ -1,0 +1,49 @@
+#include "render/gpu_scene.hpp"
+
+namespace canopy {
+
+GpuScene::GpuScene(const GpuContext& gpu, MemoryLedger& ledger, const Scene& scene,
+                   const std::vector<TriangleMesh>& meshes) {
+    std::vector<Vertex> all_vertices;
+    std::vector<uint32_t> all_indices;
+    for (size_t i = 0; i < scene.objects.size(); ++i) {
+        const Object& object = scene.objects[i];
+        const TriangleMesh& mesh = meshes[i];
+        const uint32_t first_index = uint32_t(all_indices.size());
+        const int32_t vertex_offset = int32_t(all_vertices.size());
+        all_vertices.insert(all_vertices.end(), mesh.vertices.begin(), mesh.vertices.end());
+        all_indices.insert(all_indices.end(), mesh.indices.begin(), mesh.indices.end());
+        for (const Transform& instance : object.instances) {
+            SceneDraw draw;
+            draw.first_index = first_index;
+            draw.index_count = uint32_t(mesh.indices.size());
+            draw.vertex_offset = vertex_offset;
+            draw.casts_shadows = object.casts_shadows;
+            draw.constants.model = instance.matrix();
+            glm::mat3 normal = glm::transpose(glm::inverse(glm::mat3(draw.constants.model)));
+            for (int c = 0; c < 3; ++c) draw.constants.normal_matrix[c] = glm::vec4(normal[c], 0.0f);
+            draw.constants.albedo = glm::vec4(object.material.albedo, 1.0f);
+            draws_.push_back(draw);
+            triangles_ += mesh.triangle_count();
+        }
+    }
+    vertices_ = upload_buffer(gpu, ledger, "scene", all_vertices.data(), all_vertices.size() * sizeof(Vertex),
+                              VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+    indices_ = upload_buffer(gpu, ledger, "scene", all_indices.data(), all_indices.size() * sizeof(uint32_t),
+                             VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+}
+
+void GpuScene::draw(VkCommandBuffer commands, VkPipelineLayout layout, bool casters_only) const {
+    VkBuffer vertex_buffer = vertices_.handle();
+    VkDeviceSize offset = 0;
+    vkCmdBindVertexBuffers(commands, 0, 1, &vertex_buffer, &offset);
+    vkCmdBindIndexBuffer(commands, indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
+    for (const SceneDraw& d : draws_) {
+        if (casters_only && !d.casts_shadows) continue;
+        vkCmdPushConstants(commands, layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+                           sizeof(DrawConstants), &d.constants);
+        vkCmdDrawIndexed(commands, d.index_count, 1, d.first_index, d.vertex_offset, 0);
+    }
+}
+
+}  // namespace canopy

@@ -1,0 +1,14 @@
+// results.json: every case with every sample, its statistics, parameters and the environment.
+#pragma once
+
+#include "run/case_result.hpp"
+
+#include <filesystem>
+#include <string>
+
+namespace canopy {
+
+std::string json_report(const RunRecord& run);
+void write_json_report(const std::filesystem::path& path, const RunRecord& run);
+
+}  // namespace canopy

@@ -1,0 +1,90 @@
+#include "report/markdown_report.hpp"
+
+#include "report/atomic_file.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+namespace canopy {
+
+namespace {
+
+std::string render(const std::vector<std::string>& header, const std::vector<std::vector<std::string>>& rows,
+                   const std::vector<bool>& right_aligned) {
+    std::vector<size_t> width(header.size());
+    for (size_t c = 0; c < header.size(); ++c) {
+        width[c] = std::max<size_t>(header[c].size(), 3);
+        for (const auto& row : rows) width[c] = std::max(width[c], row[c].size());
+    }
+    auto line = [&](const std::vector<std::string>& cells) {
+        std::string out = "|";
+        for (size_t c = 0; c < cells.size(); ++c)
+            out += right_aligned[c] ? fmt::format(" {:>{}} |", cells[c], width[c]) : fmt::format(" {:<{}} |", cells[c], width[c]);
+        return out + "\n";
+    };
+    std::string out = line(header) + "|";
+    for (size_t c = 0; c < header.size(); ++c)
+        out += right_aligned[c] ? std::string(width[c] + 1, '-') + ":|" : std::string(width[c] + 2, '-') + "|";
+    out += "\n";
+    for (const auto& row : rows) out += line(row);
+    return out;
+}
+
+std::string mib(uint64_t bytes) { return fmt::format("{:.2f}", double(bytes) / (1024.0 * 1024.0)); }
+
+}  // namespace
+
+std::string markdown_table(const RunRecord& run) {
+    const std::vector<std::string> header = {"scene", "resolution", "technique", "parameters", "GPU ms", "± MAD",
+                                             "CV %",  "ratio",      "wall ms",   "passes (GPU ms)", "memory MiB", "status"};
+    const std::vector<bool> right = {false, false, false, false, true, true, true, true, true, false, true, false};
+    std::vector<std::vector<std::string>> rows;
+    std::string group;
+    double baseline = 0.0;
+    for (const auto& c : run.cases) {
+        const std::string this_group = fmt::format("{}@{}x{}", c.scene, c.resolution.width, c.resolution.height);
+        if (this_group != group) {
+            group = this_group;
+            baseline = c.ok ? c.gpu_frame.stats.median : 0.0;
+        }
+        std::string passes;
+        for (const auto& p : c.passes) passes += fmt::format("{}{} {:.3f}", passes.empty() ? "" : ", ", p.name, p.stats.median);
+        const bool timed = c.gpu_frame.stats.count > 0;
+        rows.push_back({c.scene, fmt::format("{}x{}", c.resolution.width, c.resolution.height), c.technique,
+                        c.params_summary.empty() ? "-" : c.params_summary,
+                        timed ? fmt::format("{:.3f}", c.gpu_frame.stats.median) : "-",
+                        timed ? fmt::format("{:.3f}", c.gpu_frame.stats.mad) : "-",
+                        timed ? fmt::format("{:.1f}", 100.0 * c.gpu_frame.stats.cv) : "-",
+                        timed && baseline > 0 ? fmt::format("{:.2f}", c.gpu_frame.stats.median / baseline) : "-",
+                        timed ? fmt::format("{:.3f}", c.wall.stats.median) : "-", passes.empty() ? "-" : passes,
+                        mib(c.memory.technique_bytes), c.ok ? "ok" : "FAILED: " + c.error});
+    }
+    return render(header, rows, right);
+}
+
+std::string markdown_report(const RunRecord& run) {
+    const Environment& e = run.environment;
+    std::string out = fmt::format("# {}\n\n", run.experiment);
+    if (!run.description.empty()) out += run.description + "\n\n";
+    out += fmt::format("- device: {} ({}, {}), Vulkan {}\n", e.device.name, e.device.type, e.device.driver_info,
+                       e.device.api_version);
+    out += fmt::format("- CPU: {}, nproc {}, LP_NUM_THREADS {}\n", e.cpu_model, e.nproc, e.lp_num_threads);
+    out += fmt::format("- canopy {} ({} build), commit {}{}, config hash {}\n", e.canopy_version, e.build_type,
+                       e.git_commit, e.git_dirty ? " (with uncommitted changes)" : "", e.config_hash);
+    out += fmt::format("- {} warm-up and {} measured frames per case{}; started {}, finished {}; status: {}\n\n",
+                       run.warmup_frames, run.measured_frames, run.quick ? " (--quick)" : "", run.started_at,
+                       run.finished_at.empty() ? "-" : run.finished_at, run.status);
+    out += markdown_table(run);
+    out += "\nGPU ms: median over measured frames of the time from the first pass's start to the last pass's end "
+           "(Vulkan timestamps). ratio: GPU median relative to the first row of the same scene and resolution. "
+           "memory: device memory the technique's own resources take (shadow maps, ...). On lavapipe a GPU time is "
+           "CPU time on a shared machine: compare ratios measured in one run, not absolute times across runs.\n";
+    return out;
+}
+
+void write_markdown_report(const std::filesystem::path& path, const RunRecord& run) {
+    write_text_atomically(path, markdown_report(run));
+}
+
+}  // namespace canopy

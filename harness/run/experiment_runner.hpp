@@ -1,0 +1,39 @@
+// Runs an experiment's cases: for each, builds the technique's frame, warms up, measures,
+// saves the image, and rewrites the reports so an interrupted run keeps every finished case.
+#pragma once
+
+#include "core/registry.hpp"
+#include "run/case_result.hpp"
+
+#include <filesystem>
+
+namespace canopy {
+
+struct RunOptions {
+    std::filesystem::path out_dir;
+    bool quick = false;          // 1 warm-up and 3 measured frames per case
+    bool show_progress = true;
+};
+
+// An experiment checked against the device: every case's plan fits its scene and the device,
+// every mesh loaded. Nothing is written before this succeeds.
+struct PreparedExperiment {
+    const Experiment* experiment = nullptr;
+    std::vector<Case> cases;
+    std::vector<std::vector<TriangleMesh>> meshes;  // per scene
+};
+
+// Throws ConfigError naming the experiment's file:line when a case cannot run here.
+PreparedExperiment prepare_experiment(const Experiment& experiment, const TechniqueRegistry& registry,
+                                      const GpuContext& gpu);
+
+// Writes results.json, results.csv, results.md and images/ under options.out_dir.
+RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegistry& registry, const GpuContext& gpu,
+                         const RunOptions& options);
+
+// Renders one case and measures it (no files written). Used by the runner and by tests.
+CaseResult measure_case(const Case& c, const Scene& scene, const std::vector<TriangleMesh>& meshes,
+                        const Technique& technique, const GpuContext& gpu, int warmup_frames, int measured_frames,
+                        Image* image_out);
+
+}  // namespace canopy

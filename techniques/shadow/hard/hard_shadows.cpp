@@ -1,0 +1,28 @@
+// shadow.hard: standard shadow mapping with constant and slope-scaled bias.
+#include "core/registry.hpp"
+#include "shaders/hard_frag.h"
+#include "../common/shadow_map_params.hpp"
+
+namespace canopy {
+namespace {
+
+class HardShadows final : public Technique {
+public:
+    std::string name() const override { return "shadow.hard"; }
+    std::string summary() const override { return "shadow mapping: one depth test per pixel, hard edges"; }
+    std::string paper() const override { return "Williams 1978; Gumbau 2011 Table 6.1 'standard'"; }
+    std::vector<ParamSpec> params() const override { return shadow_map_params(); }
+
+    FramePlan plan(const ParamSet& params) const override {
+        FramePlan plan;
+        plan.shadow_map = shadow_map_needs(params);
+        plan.forward_fragment_spirv = hard_frag;
+        write_bias_params(params, plan.shader_params);
+        return plan;
+    }
+};
+
+RegisterTechnique<HardShadows> registered;
+
+}  // namespace
+}  // namespace canopy
