@@ -27,4 +27,10 @@ Ray primary_ray(const Camera& camera, int width, int height, float px, float py)
     return {camera.position, glm::normalize(dir)};
 }
 
+glm::vec2 project_to_pixel(const Camera& camera, int width, int height, const glm::vec3& p) {
+    const glm::vec4 clip = projection_matrix(camera, float(width) / float(height)) * view_matrix(camera) * glm::vec4(p, 1.0f);
+    const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+    return {(ndc.x * 0.5f + 0.5f) * float(width), (ndc.y * 0.5f + 0.5f) * float(height)};
+}
+
 }  // namespace canopy

@@ -18,4 +18,7 @@ struct Ray {
 // The ray through image position (px, py) in pixel units (px = x + 0.5 is the centre of column x).
 Ray primary_ray(const Camera& camera, int width, int height, float px, float py);
 
+// Where world point `p` lands in the image, in pixel units (inverse of primary_ray).
+glm::vec2 project_to_pixel(const Camera& camera, int width, int height, const glm::vec3& p);
+
 }  // namespace canopy

@@ -1,0 +1,299 @@
+#include "config/experiment_config.hpp"
+
+#include "config/scene_config.hpp"
+#include "config/toml_reader.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <set>
+
+namespace canopy {
+
+uint64_t fnv1a_64(std::string_view bytes, uint64_t state) {
+    for (unsigned char byte : bytes) {
+        state ^= byte;
+        state *= 0x100000001b3ull;
+    }
+    return state;
+}
+
+namespace {
+
+constexpr int kMaxResolution = 8192;
+constexpr long long kMaxFrames = 1000000;
+
+const char* const kExperimentExample =
+    "[experiment]\n    scenes = [\"../scenes/spheres.toml\"]\n\n    [[technique]]\n    name = \"shadow.pcf\"";
+
+std::vector<Scene> read_scenes(TomlReader& reader, std::vector<std::filesystem::path>& scene_files) {
+    const toml::node* node = reader.node("scenes");
+    const std::string example = "scenes = [\"../scenes/spheres.toml\"]";
+    if (!node)
+        throw ConfigError(reader.file(), reader.line(), "[experiment] needs 'scenes', the scene files to render",
+                          fmt::format("add a line such as: {}", example));
+    const toml::array* array = node->as_array();
+    if (!array)
+        throw reader.error_at(*node, fmt::format("'scenes' must be an array of file names, got {}", describe_node(*node)),
+                              fmt::format("write it as: {}", example));
+    if (array->empty())
+        throw reader.error_at(*node, "'scenes' must name at least one scene file", fmt::format("write it as: {}", example));
+
+    const std::filesystem::path folder = reader.file().parent_path();
+    std::vector<Scene> scenes;
+    for (const toml::node& element : *array) {
+        const auto* name = element.as_string();
+        if (!name)
+            throw reader.error_at(element, fmt::format("'scenes' must hold file names (strings), got {}",
+                                                       describe_node(element)),
+                                  fmt::format("write it as: {}", example));
+        const std::filesystem::path scene_file = (folder / name->get()).lexically_normal();
+        std::error_code ignored;
+        if (!std::filesystem::is_regular_file(scene_file, ignored))
+            throw reader.error_at(element, fmt::format("scene file '{}' not found (looked for {})", name->get(),
+                                                       scene_file.string()),
+                                  "scene paths are relative to the experiment file's folder");
+        scenes.push_back(load_scene(scene_file));  // its errors carry the scene file's own file:line
+        scene_files.push_back(scene_file);
+    }
+    return scenes;
+}
+
+std::vector<Resolution> read_resolutions(TomlReader& reader, std::vector<Resolution> fallback) {
+    const toml::node* node = reader.node("resolutions");
+    if (!node) return fallback;
+    const std::string hint = "write it as: resolutions = [[640, 360], [1280, 720]]";
+    const toml::array* array = node->as_array();
+    if (!array || array->empty())
+        throw reader.error_at(*node, "'resolutions' must be a non-empty array of [width, height] pairs", hint);
+    std::vector<Resolution> resolutions;
+    for (const toml::node& element : *array) {
+        const toml::array* pair = element.as_array();
+        if (!pair || pair->size() != 2 || !pair->get(0)->is_integer() || !pair->get(1)->is_integer())
+            throw reader.error_at(element, "each resolution must be a [width, height] pair of integers", hint);
+        const long long width = pair->get(0)->as_integer()->get(), height = pair->get(1)->as_integer()->get();
+        if (width < 1 || width > kMaxResolution || height < 1 || height > kMaxResolution)
+            throw reader.error_at(element, fmt::format("resolution {}x{} is out of range", width, height),
+                                  fmt::format("width and height must lie in [1, {}]", kMaxResolution));
+        resolutions.push_back({int(width), int(height)});
+    }
+    return resolutions;
+}
+
+ParamValue to_param_value(const toml::node& node) {
+    if (const auto* integer = node.as_integer()) return integer->get();
+    if (const auto* real = node.as_floating_point()) return real->get();
+    if (const auto* boolean = node.as_boolean()) return boolean->get();
+    return node.as_string()->get();
+}
+
+bool is_param_scalar(const toml::node& node) {
+    return node.is_integer() || node.is_floating_point() || node.is_boolean() || node.is_string();
+}
+
+// Reads [technique.params]: each value a scalar or an array of scalars (a sweep). Every value is
+// checked against the technique's specs now, so bad values fail before anything runs.
+void read_params(TomlReader& params, TechniqueEntry& entry, const Technique& technique) {
+    std::vector<std::pair<const toml::key*, const toml::node*>> in_file_order;
+    for (auto&& [key, value] : params.table()) in_file_order.emplace_back(&key, &value);
+    std::sort(in_file_order.begin(), in_file_order.end(), [](const auto& a, const auto& b) {
+        const auto &pa = a.first->source().begin, &pb = b.first->source().begin;
+        return pa.line != pb.line ? pa.line < pb.line : pa.column < pb.column;
+    });
+
+    const std::vector<ParamSpec> specs = technique.params();
+    for (const auto& [key, value] : in_file_order) {
+        const std::string name(key->str());
+        const int key_line = int(key->source().begin.line);
+        std::vector<std::pair<ParamValue, int>> values;  // with each value's own line
+        const std::string hint = fmt::format("give one value ({0} = 5) or a list to sweep ({0} = [3, 5, 7])", name);
+        if (const toml::array* array = value->as_array()) {
+            if (array->empty())
+                throw params.error_at(*value, fmt::format("parameter '{}' of {} has an empty list of values", name,
+                                                          entry.name), hint);
+            for (const toml::node& element : *array) {
+                if (!is_param_scalar(element))
+                    throw params.error_at(element, fmt::format("parameter '{}' of {}: a sweep holds only numbers, "
+                                                               "booleans or strings, got {}",
+                                                               name, entry.name, describe_node(element)),
+                                          hint);
+                values.emplace_back(to_param_value(element), line_of(element));
+            }
+        } else if (is_param_scalar(*value)) {
+            values.emplace_back(to_param_value(*value), key_line);
+        } else {
+            throw params.error_at(*value, fmt::format("parameter '{}' of {} must be a value or a list of values, got {}",
+                                                      name, entry.name, describe_node(*value)),
+                                  hint);
+        }
+
+        for (const auto& [param, line] : values)
+            ParamSet::resolve(specs, {{name, param}}, {{name, line > 0 ? line : key_line}}, entry.where, entry.name);
+
+        for (auto& [param, line] : values) entry.sweep[name].push_back(std::move(param));
+        entry.param_lines[name] = key_line;
+        entry.param_order.push_back(name);
+    }
+}
+
+TechniqueEntry read_technique(TomlReader& reader, const TechniqueRegistry& registry) {
+    TechniqueEntry entry;
+    entry.where = reader.where();
+    entry.name = reader.require_string("name", "\"shadow.pcf\"");
+    const Technique* technique = registry.find(entry.name);
+    if (!technique) {
+        const std::string suggestion = closest_match(entry.name, registry.names());
+        const std::vector<std::string> names = registry.names();
+        std::string hint = suggestion.empty() ? "" : fmt::format("did you mean '{}'? ", suggestion);
+        if (suggestion.empty() && !names.empty() && names.size() <= 12)
+            hint += fmt::format("known techniques: {}; ", fmt::join(names, ", "));
+        hint += "run `canopy list` to see every technique and its parameters";
+        throw reader.error("name", fmt::format("unknown technique '{}'", entry.name), hint);
+    }
+    if (std::optional<TomlReader> params = reader.get_table("params", "[technique.params]"))
+        read_params(*params, entry, *technique);
+    reader.finish();
+    return entry;
+}
+
+std::string hash_files(const std::string& experiment_bytes, const std::vector<std::filesystem::path>& files) {
+    uint64_t hash = fnv1a_64(experiment_bytes);
+    for (const std::filesystem::path& file : files) hash = fnv1a_64(read_config_file(file), hash);
+    return fmt::format("{:016x}", hash);
+}
+
+}  // namespace
+
+Experiment load_experiment(const std::filesystem::path& file, const TechniqueRegistry& registry) {
+    const std::string text = read_config_file(file);
+    const toml::table root = parse_toml(text, file);
+    TomlReader top(root, file, "");
+    std::optional<TomlReader> section = top.get_table("experiment", "[experiment]");
+    std::vector<TomlReader> technique_sections = top.get_tables("technique", "[[technique]]");
+    top.finish();
+    if (!section)
+        throw ConfigError(file, 0, "missing the [experiment] section",
+                          fmt::format("an experiment file starts like this:\n    {}", kExperimentExample));
+
+    Experiment experiment;
+    experiment.file = file;
+    experiment.name = section->get_string("name", file.stem().string());
+    if (experiment.name.empty())
+        throw section->error("name", "the experiment name must not be empty", "name = \"shadow-filtering\"");
+    experiment.description = section->get_string("description", "");
+    experiment.resolutions = read_resolutions(*section, experiment.resolutions);
+    const long long warmup = section->get_int("warmup", experiment.warmup_frames);
+    if (warmup < 0 || warmup > kMaxFrames)
+        throw section->error("warmup", fmt::format("'warmup' must lie in [0, {}], got {}", kMaxFrames, warmup),
+                             "warmup is the number of unmeasured frames before timing, e.g. warmup = 5");
+    const long long repetitions = section->get_int("repetitions", experiment.measured_frames);
+    if (repetitions < 1 || repetitions > kMaxFrames)
+        throw section->error("repetitions",
+                             fmt::format("'repetitions' must lie in [1, {}], got {}", kMaxFrames, repetitions),
+                             "repetitions is the number of measured frames, e.g. repetitions = 20");
+    experiment.warmup_frames = int(warmup);
+    experiment.measured_frames = int(repetitions);
+
+    std::vector<std::filesystem::path> hashed_files;
+    experiment.scenes = read_scenes(*section, hashed_files);
+    section->finish();
+
+    if (technique_sections.empty())
+        throw ConfigError(file, 0, "the experiment has no [[technique]] entries",
+                          "add one per technique to run, e.g.\n    [[technique]]\n    name = \"shadow.pcf\"\n"
+                          "run `canopy list` to see every technique");
+    for (TomlReader& technique_section : technique_sections)
+        experiment.techniques.push_back(read_technique(technique_section, registry));
+
+    // Mesh files change the results as much as the configs do.
+    for (const Scene& scene : experiment.scenes)
+        for (const Object& object : scene.objects)
+            if (object.shape == ShapeType::mesh &&
+                std::find(hashed_files.begin(), hashed_files.end(), object.mesh_file) == hashed_files.end())
+                hashed_files.push_back(object.mesh_file);
+    experiment.config_hash = hash_files(text, hashed_files);
+    return experiment;
+}
+
+namespace {
+
+// Keeps [A-Za-z0-9._-] so ids are safe as file names on every platform.
+std::string sanitise_id(const std::string& text) {
+    std::string safe = text;
+    for (char& c : safe) {
+        const bool allowed = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') ||
+                             c == '.' || c == '_' || c == '-';
+        if (!allowed) c = '-';
+    }
+    return safe;
+}
+
+// The entry's swept parameters in config order; entries built in code may lack param_order.
+std::vector<std::string> ordered_keys(const TechniqueEntry& entry) {
+    std::vector<std::string> keys;
+    for (const std::string& key : entry.param_order)
+        if (entry.sweep.count(key) && std::find(keys.begin(), keys.end(), key) == keys.end()) keys.push_back(key);
+    for (const auto& [key, values] : entry.sweep)
+        if (std::find(keys.begin(), keys.end(), key) == keys.end()) keys.push_back(key);
+    std::erase_if(keys, [&](const std::string& key) { return entry.sweep.at(key).empty(); });
+    return keys;
+}
+
+// Moves to the next combination of the sweep (last key fastest); false after the last one.
+bool advance(std::vector<size_t>& choice, const std::vector<std::string>& keys, const TechniqueEntry& entry) {
+    for (size_t k = keys.size(); k-- > 0;) {
+        if (++choice[k] < entry.sweep.at(keys[k]).size()) return true;
+        choice[k] = 0;
+    }
+    return false;
+}
+
+}  // namespace
+
+std::vector<Case> expand_cases(const Experiment& experiment, const TechniqueRegistry& registry) {
+    std::vector<Case> cases;
+    std::set<std::string> used_ids;
+    for (size_t scene_index = 0; scene_index < experiment.scenes.size(); ++scene_index) {
+        const Scene& scene = experiment.scenes[scene_index];
+        for (const Resolution& resolution : experiment.resolutions) {
+            for (const TechniqueEntry& entry : experiment.techniques) {
+                const Technique* technique = registry.find(entry.name);
+                if (!technique)
+                    throw ConfigError(entry.where.file, entry.where.line,
+                                      fmt::format("unknown technique '{}'", entry.name),
+                                      "run `canopy list` to see every technique");
+                const std::vector<ParamSpec> specs = technique->params();
+                const std::vector<std::string> keys = ordered_keys(entry);
+
+                // Odometer over the sweep: the first key varies slowest.
+                std::vector<size_t> choice(keys.size(), 0);
+                do {
+                    std::map<std::string, ParamValue> given;
+                    std::string id = fmt::format("{}_{}x{}_{}", scene.name, resolution.width, resolution.height,
+                                                 entry.name);
+                    for (size_t k = 0; k < keys.size(); ++k) {
+                        const ParamValue& value = entry.sweep.at(keys[k])[choice[k]];
+                        given[keys[k]] = value;
+                        id += fmt::format("_{}-{}", keys[k], to_string(value));
+                    }
+                    id = sanitise_id(id);
+                    std::string unique_id = id;
+                    for (int copy = 2; used_ids.count(unique_id); ++copy) unique_id = fmt::format("{}_{}", id, copy);
+                    used_ids.insert(unique_id);
+
+                    Case run_case;
+                    run_case.scene_index = scene_index;
+                    run_case.resolution = resolution;
+                    run_case.technique = entry.name;
+                    run_case.params = ParamSet::resolve(specs, given, entry.param_lines, entry.where, entry.name);
+                    run_case.id = std::move(unique_id);
+                    cases.push_back(std::move(run_case));
+                } while (advance(choice, keys, entry));
+            }
+        }
+    }
+    return cases;
+}
+
+}  // namespace canopy

@@ -1,0 +1,335 @@
+#include "config/scene_config.hpp"
+
+#include "config/toml_reader.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace canopy {
+
+namespace {
+
+constexpr std::array kLightTypeNames{"directional", "spot", "rect", "sphere"};
+constexpr std::array kLightTypes{LightType::directional, LightType::spot, LightType::rect, LightType::sphere};
+constexpr std::array kShapeNames{"plane", "box", "sphere", "cylinder", "mesh"};
+constexpr std::array kShapes{ShapeType::plane, ShapeType::box, ShapeType::sphere, ShapeType::cylinder,
+                             ShapeType::mesh};
+
+// Reads a required enum-like string, suggesting the closest name when it is misspelled.
+template <typename Enum, size_t N>
+Enum read_kind(TomlReader& reader, std::string_view key, const std::array<const char*, N>& names,
+               const std::array<Enum, N>& values, const char* what) {
+    const std::string text = reader.require_string(key, fmt::format("\"{}\"", names[0]));
+    std::vector<std::string> choices(names.begin(), names.end());
+    for (size_t i = 0; i < N; ++i)
+        if (text == names[i]) return values[i];
+    const std::string suggestion = closest_match(text, choices);
+    const std::string all = fmt::format("{}", fmt::join(choices, ", "));
+    throw reader.error(key, fmt::format("unknown {} '{}'", what, text),
+                       suggestion.empty() ? fmt::format("{}s: {}", what, all)
+                                          : fmt::format("did you mean '{}'? {}s: {}", suggestion, what, all));
+}
+
+// Value checks that name the key's line.
+void require_positive(TomlReader& reader, std::string_view key, float value) {
+    if (value > 0.0f) return;
+    throw reader.error(key, fmt::format("{} must be greater than 0, got {}", reader.describe_key(key), value),
+                       "use a positive value");
+}
+
+void require_non_negative(TomlReader& reader, std::string_view key, float value) {
+    if (value >= 0.0f) return;
+    throw reader.error(key, fmt::format("{} must not be negative, got {}", reader.describe_key(key), value),
+                       "use a value >= 0");
+}
+
+void require_positive(TomlReader& reader, std::string_view key, const glm::vec2& value) {
+    if (value.x > 0.0f && value.y > 0.0f) return;
+    throw reader.error(key, fmt::format("{} must be greater than 0 in every component, got [{}, {}]",
+                                        reader.describe_key(key), value.x, value.y),
+                       "use positive sizes");
+}
+
+void require_positive(TomlReader& reader, std::string_view key, const glm::vec3& value) {
+    if (value.x > 0.0f && value.y > 0.0f && value.z > 0.0f) return;
+    throw reader.error(key, fmt::format("{} must be greater than 0 in every component, got [{}, {}, {}]",
+                                        reader.describe_key(key), value.x, value.y, value.z),
+                       "use positive sizes");
+}
+
+void require_in_range(TomlReader& reader, std::string_view key, const glm::vec3& value, float min, float max) {
+    for (int i = 0; i < 3; ++i) {
+        if (value[i] >= min && value[i] <= max) continue;
+        throw reader.error(key, fmt::format("{} must lie in [{}, {}] in every component, got [{}, {}, {}]",
+                                            reader.describe_key(key), min, max, value.x, value.y, value.z),
+                           fmt::format("use values in [{}, {}]", min, max));
+    }
+}
+
+void require_non_negative(TomlReader& reader, std::string_view key, const glm::vec3& value) {
+    for (int i = 0; i < 3; ++i) {
+        if (value[i] >= 0.0f) continue;
+        throw reader.error(key, fmt::format("{} must not be negative, got [{}, {}, {}]", reader.describe_key(key),
+                                            value.x, value.y, value.z),
+                           "use values >= 0");
+    }
+}
+
+bool nearly_parallel(const glm::vec3& a, const glm::vec3& b) {
+    return std::abs(glm::dot(glm::normalize(a), glm::normalize(b))) > 0.9999f;
+}
+
+void read_scene_section(TomlReader& reader, Scene& scene) {
+    scene.name = reader.get_string("name", scene.name);
+    if (scene.name.empty()) throw reader.error("name", "the scene name must not be empty", "name = \"spheres\"");
+    scene.ambient = reader.get_vec3("ambient", scene.ambient);
+    require_non_negative(reader, "ambient", scene.ambient);
+    scene.background = reader.get_vec3("background", scene.background);
+    require_non_negative(reader, "background", scene.background);
+    reader.finish();
+}
+
+void read_camera(TomlReader& reader, Camera& camera) {
+    camera.position = reader.get_vec3("position", camera.position, Broadcast::forbidden);
+    camera.target = reader.get_vec3("target", camera.target, Broadcast::forbidden);
+    camera.up = reader.get_vec3("up", camera.up, Broadcast::forbidden);
+    camera.fov_y_degrees = float(reader.get_float("fov", camera.fov_y_degrees));
+    camera.near_plane = float(reader.get_float("near", camera.near_plane));
+    camera.far_plane = float(reader.get_float("far", camera.far_plane));
+    reader.finish();
+
+    if (!(camera.fov_y_degrees > 0.0f && camera.fov_y_degrees < 179.0f))
+        throw reader.error("fov", fmt::format("'fov' in [camera] must lie in (0, 179) degrees, got {}", camera.fov_y_degrees),
+                           "fov is the vertical field of view in degrees, e.g. fov = 45");
+    require_positive(reader, "near", camera.near_plane);
+    if (!(camera.far_plane > camera.near_plane))
+        throw reader.error(reader.has("far") ? "far" : "near",
+                           fmt::format("'far' ({}) must be greater than 'near' ({}) in [camera]", camera.far_plane,
+                                       camera.near_plane),
+                           "choose near < far, e.g. near = 0.1, far = 100");
+    const glm::vec3 view = camera.target - camera.position;
+    if (glm::length(view) < 1e-6f)
+        throw reader.error("target", "the camera's 'target' equals its 'position'",
+                           "the camera looks from position towards target; move one of them");
+    if (glm::length(camera.up) < 1e-6f || nearly_parallel(camera.up, view))
+        throw reader.error("up", "the camera's 'up' is zero or parallel to its viewing direction",
+                           "use an up vector that is not along target - position, e.g. up = [0, 1, 0]");
+}
+
+// Which light types use each type-specific key, so a misplaced key gets a precise hint.
+struct LightKeyUse {
+    const char* key;
+    std::vector<LightType> types;
+    const char* described;
+};
+
+const std::vector<LightKeyUse>& light_key_uses() {
+    static const std::vector<LightKeyUse> uses{
+        {"position", {LightType::spot, LightType::rect, LightType::sphere}, "spot, rect and sphere lights"},
+        {"direction", {LightType::directional, LightType::spot, LightType::rect}, "directional, spot and rect lights"},
+        {"size", {LightType::rect}, "rect lights"},
+        {"radius", {LightType::sphere}, "sphere lights"},
+        {"angle", {LightType::spot}, "spot lights"},
+        {"up", {LightType::rect}, "rect lights"},
+    };
+    return uses;
+}
+
+Light read_light(TomlReader& reader) {
+    Light light;
+    light.where = reader.where();
+    light.type = read_kind(reader, "type", kLightTypeNames, kLightTypes, "light type");
+    const std::string type_name = kLightTypeNames[size_t(light.type)];
+
+    for (const LightKeyUse& use : light_key_uses()) {
+        if (std::find(use.types.begin(), use.types.end(), light.type) == use.types.end())
+            reader.reject(use.key, fmt::format("{} lights", type_name), use.described);
+    }
+    auto applies = [&](const char* key) {
+        for (const LightKeyUse& use : light_key_uses())
+            if (use.key == std::string_view(key))
+                return std::find(use.types.begin(), use.types.end(), light.type) != use.types.end();
+        return true;
+    };
+
+    if (applies("position")) light.position = reader.get_vec3("position", light.position, Broadcast::forbidden);
+    if (applies("direction")) {
+        const glm::vec3 direction = reader.get_vec3("direction", light.direction, Broadcast::forbidden);
+        if (glm::length(direction) < 1e-6f)
+            throw reader.error("direction", fmt::format("{} must not be the zero vector", reader.describe_key("direction")),
+                               "give the direction the light travels in, e.g. direction = [0, -1, 0]");
+        light.direction = glm::normalize(direction);
+    }
+    light.color = reader.get_vec3("color", light.color);
+    require_non_negative(reader, "color", light.color);
+    light.intensity = float(reader.get_float("intensity", light.intensity));
+    require_non_negative(reader, "intensity", light.intensity);
+    if (applies("size")) {
+        light.rect_size = reader.get_vec2("size", light.rect_size, Broadcast::forbidden);
+        require_positive(reader, "size", light.rect_size);
+    }
+    if (applies("radius")) {
+        light.sphere_radius = float(reader.get_float("radius", light.sphere_radius));
+        require_positive(reader, "radius", light.sphere_radius);
+    }
+    if (applies("angle")) {
+        light.spot_angle_degrees = float(reader.get_float("angle", light.spot_angle_degrees));
+        if (!(light.spot_angle_degrees > 0.0f && light.spot_angle_degrees <= 89.0f))
+            throw reader.error("angle", fmt::format("{} must lie in (0, 89] degrees, got {}", reader.describe_key("angle"),
+                                           light.spot_angle_degrees),
+                               "angle is the cone's half-angle in degrees, e.g. angle = 30");
+    }
+    if (applies("up")) {
+        light.rect_up_hint = reader.get_vec3("up", light.rect_up_hint, Broadcast::forbidden);
+        const std::string up_hint = "'up' orients the rectangle's height axis; choose one not along 'direction', "
+                                    "e.g. up = [0, 0, 1] for a light facing down";
+        if (!reader.has("up") && nearly_parallel(light.rect_up_hint, light.direction))
+            throw reader.error("direction",
+                               fmt::format("{} is parallel to the default 'up' [0, 0, 1]", reader.describe_key("direction")),
+                               "add an 'up' key: " + up_hint);
+        if (glm::length(light.rect_up_hint) < 1e-6f || nearly_parallel(light.rect_up_hint, light.direction))
+            throw reader.error("up", fmt::format("'up' in {} is zero or parallel to its 'direction'", reader.context()),
+                               up_hint);
+    }
+    light.casts_shadows = reader.get_bool("casts_shadows", light.casts_shadows);
+    reader.finish();
+    return light;
+}
+
+Transform read_transform(TomlReader& reader) {
+    Transform transform;
+    transform.translate = reader.get_vec3("translate", transform.translate, Broadcast::forbidden);
+    transform.rotate_degrees = reader.get_vec3("rotate", transform.rotate_degrees, Broadcast::forbidden);
+    transform.scale = reader.get_vec3("scale", transform.scale);
+    if (transform.scale.x == 0.0f || transform.scale.y == 0.0f || transform.scale.z == 0.0f)
+        throw reader.error("scale", fmt::format("{} must not be zero in any component", reader.describe_key("scale")),
+                           "a zero scale flattens the object away; use e.g. scale = 1");
+    return transform;
+}
+
+struct ShapeKeyUse {
+    const char* key;
+    std::vector<ShapeType> shapes;
+    const char* described;
+};
+
+const std::vector<ShapeKeyUse>& shape_key_uses() {
+    static const std::vector<ShapeKeyUse> uses{
+        {"size", {ShapeType::plane, ShapeType::box}, "plane ([x, z]) and box ([x, y, z]) shapes"},
+        {"radius", {ShapeType::sphere, ShapeType::cylinder}, "sphere and cylinder shapes"},
+        {"height", {ShapeType::cylinder}, "cylinder shapes"},
+        {"segments", {ShapeType::sphere, ShapeType::cylinder}, "sphere and cylinder shapes"},
+        {"file", {ShapeType::mesh}, "mesh shapes"},
+    };
+    return uses;
+}
+
+Object read_object(TomlReader& reader, size_t index, const std::filesystem::path& config_folder) {
+    Object object;
+    object.where = reader.where();
+    object.shape = read_kind(reader, "shape", kShapeNames, kShapes, "shape");
+    const std::string shape_name = kShapeNames[size_t(object.shape)];
+    object.name = reader.get_string("name", fmt::format("{}{}", shape_name, index));
+    if (object.name.empty()) throw reader.error("name", "an object's name must not be empty", "name = \"floor\"");
+
+    for (const ShapeKeyUse& use : shape_key_uses()) {
+        if (std::find(use.shapes.begin(), use.shapes.end(), object.shape) == use.shapes.end())
+            reader.reject(use.key, fmt::format("{} shapes", shape_name), use.described);
+    }
+
+    switch (object.shape) {
+        case ShapeType::plane:
+            object.plane_size = reader.get_vec2("size", object.plane_size, Broadcast::forbidden);
+            require_positive(reader, "size", object.plane_size);
+            break;
+        case ShapeType::box:
+            object.box_size = reader.get_vec3("size", object.box_size);
+            require_positive(reader, "size", object.box_size);
+            break;
+        case ShapeType::cylinder:
+            object.height = float(reader.get_float("height", object.height));
+            require_positive(reader, "height", object.height);
+            [[fallthrough]];
+        case ShapeType::sphere: {
+            object.radius = float(reader.get_float("radius", object.radius));
+            require_positive(reader, "radius", object.radius);
+            const long long segments = reader.get_int("segments", object.segments);
+            if (segments < 3 || segments > 1024)
+                throw reader.error("segments", fmt::format("{} must lie in [3, 1024], got {}", reader.describe_key("segments"), segments),
+                                   "use e.g. segments = 32");
+            object.segments = int(segments);
+            break;
+        }
+        case ShapeType::mesh: {
+            const std::string file = reader.require_string("file", "\"meshes/model.glb\"");
+            std::filesystem::path path(file);
+            if (path.is_relative()) path = config_folder / path;
+            object.mesh_file = std::filesystem::absolute(path).lexically_normal();
+            std::error_code ignored;
+            if (!std::filesystem::is_regular_file(object.mesh_file, ignored))
+                throw reader.error("file", fmt::format("mesh file '{}' not found (looked for {})", file,
+                                                       object.mesh_file.string()),
+                                   fmt::format("relative paths are resolved against the scene config's folder, {}",
+                                               config_folder.string()));
+            break;
+        }
+    }
+
+    object.material.albedo = reader.get_vec3("albedo", object.material.albedo);
+    require_in_range(reader, "albedo", object.material.albedo, 0.0f, 1.0f);
+    object.casts_shadows = reader.get_bool("casts_shadows", object.casts_shadows);
+
+    const Transform own = read_transform(reader);
+    const std::string instance_context = fmt::format("instance of {}", reader.context());
+    std::vector<TomlReader> instance_readers = reader.get_tables("instances", instance_context);
+    if (reader.has("instances") && instance_readers.empty())
+        throw reader.error("instances", fmt::format("{} must not be empty", reader.describe_key("instances")),
+                           "remove 'instances' to draw the object once, or list at least one { translate = [...] }");
+    object.instances.clear();
+    if (instance_readers.empty()) object.instances.push_back(own);
+    for (TomlReader& instance_reader : instance_readers) {
+        Transform copy = own;
+        copy.outer = read_transform(instance_reader).matrix();  // world = instance * object
+        instance_reader.finish();
+        object.instances.push_back(copy);
+    }
+    reader.finish();
+    return object;
+}
+
+}  // namespace
+
+Scene parse_scene(const std::string& text, const std::filesystem::path& file) {
+    const toml::table root = parse_toml(text, file);
+    TomlReader top(root, file, "");
+    Scene scene;
+    scene.file = file;
+    scene.name = file.stem().string();
+
+    std::optional<TomlReader> scene_section = top.get_table("scene", "[scene]");
+    std::optional<TomlReader> camera_section = top.get_table("camera", "[camera]");
+    std::vector<TomlReader> light_sections = top.get_tables("light", "[[light]]");
+    std::vector<TomlReader> object_sections = top.get_tables("object", "[[object]]");
+    top.finish();  // a misspelled table name is reported before its absence is
+
+    if (scene_section) read_scene_section(*scene_section, scene);
+    if (camera_section) read_camera(*camera_section, scene.camera);
+
+    if (light_sections.empty())
+        throw ConfigError(file, 0, "the scene has no lights",
+                          "add at least one light, e.g.\n    [[light]]\n    type = \"directional\"\n    direction = [0, -1, 0]");
+    for (TomlReader& section : light_sections) scene.lights.push_back(read_light(section));
+
+    const std::filesystem::path config_folder = std::filesystem::absolute(file).parent_path();
+    for (size_t i = 0; i < object_sections.size(); ++i)
+        scene.objects.push_back(read_object(object_sections[i], i, config_folder));
+    return scene;
+}
+
+Scene load_scene(const std::filesystem::path& file) { return parse_scene(read_config_file(file), file); }
+
+}  // namespace canopy
