@@ -1,0 +1,81 @@
+// A whole (small) experiment through the runner: every output file, well formed, complete.
+#include "config/experiment_config.hpp"
+#include "report/image_files.hpp"
+#include "run/experiment_runner.hpp"
+
+#include <doctest/doctest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+using namespace canopy;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string read_text(const fs::path& path) {
+    std::ifstream in(path);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+}  // namespace
+
+TEST_CASE("canopy run writes JSON, CSV, Markdown, EXR and PNG for every case") {
+    const TechniqueRegistry& registry = TechniqueRegistry::instance();
+    const Experiment experiment = load_experiment(std::string(CANOPY_TEST_DATA) + "/experiments/tiny.toml", registry);
+    GpuContext gpu;
+    const PreparedExperiment prepared = prepare_experiment(experiment, registry, gpu);
+    REQUIRE(prepared.cases.size() == 3);
+
+    const fs::path out = fs::temp_directory_path() / "canopy-test-outputs";
+    fs::remove_all(out);
+    RunOptions options;
+    options.out_dir = out;
+    options.quick = true;
+    options.show_progress = false;
+    const RunRecord record = run_experiment(prepared, registry, gpu, options);
+    CHECK(record.status == "complete");
+
+    const nlohmann::json json = nlohmann::json::parse(read_text(out / "results.json"));
+    CHECK(json["status"] == "complete");
+    CHECK(json["measured_frames"] == 3);
+    const auto& env = json["environment"];
+    for (const char* key : {"device", "driver_info", "commit", "nproc", "lp_num_threads", "cpu_model", "build_type", "config_hash"}) {
+        CAPTURE(key);
+        CHECK(env.contains(key));
+    }
+    CHECK(env["config_hash"] == experiment.config_hash);
+    REQUIRE(json["cases"].size() == 3);
+    for (const auto& c : json["cases"]) {
+        CAPTURE(c["id"].get<std::string>());
+        CHECK(c["ok"] == true);
+        CHECK(c["timing"]["gpu_frame"]["samples_ms"].size() == 3);
+        CHECK(c["timing"]["wall"]["stats_ms"]["median"].get<double>() > 0.0);
+        CHECK(c["timing"]["passes"].size() == 2);
+        CHECK(c["params"].contains("resolution"));
+        CHECK(c["memory_bytes"]["technique"].get<uint64_t>() >= 256u * 256u * 4u);
+        const Image exr = read_image(out / c["images"]["exr"].get<std::string>());
+        const Image png = read_image(out / c["images"]["png"].get<std::string>());
+        CHECK(exr.width == 96);
+        CHECK(exr.height == 64);
+        CHECK(png.width == 96);
+    }
+    CHECK(json["cases"][1]["params"]["kernel"] == 3);
+    CHECK(json["cases"][2]["params"]["kernel"] == 5);
+
+    const std::string csv = read_text(out / "results.csv");
+    CHECK(std::count(csv.begin(), csv.end(), '\n') == 4);  // header and three cases
+    CHECK(csv.find("shadow_map_gpu_ms_median") != std::string::npos);
+    const std::string md = read_text(out / "results.md");
+    CHECK(md.find("| shadow.pcf") != std::string::npos);
+    CHECK(md.find("llvmpipe") != std::string::npos);
+
+    // Atomic writes leave no temporary files behind.
+    for (const auto& entry : fs::recursive_directory_iterator(out))
+        CHECK_MESSAGE(entry.path().filename().string().find(".tmp") == std::string::npos, entry.path().string());
+    fs::remove_all(out);
+}

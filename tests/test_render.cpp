@@ -1,0 +1,158 @@
+// Integration on the Vulkan device (lavapipe by default): every shadow technique, in several
+// settings and under every light type, darkens the floor under an occluder, lights the open
+// floor exactly as the shading model says, and renders identically twice.
+#include "config/scene_config.hpp"
+#include "core/registry.hpp"
+#include "render/frame_renderer.hpp"
+#include "scene/camera.hpp"
+#include "shading.h"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstring>
+#include <memory>
+
+using namespace canopy;
+
+namespace {
+
+constexpr int kWidth = 96, kHeight = 64;
+
+GpuContext& gpu() {
+    static GpuContext context;
+    return context;
+}
+
+Scene tiny_scene() { return load_scene(std::string(CANOPY_TEST_DATA) + "/scenes/tiny.toml"); }
+
+Image render(const Scene& scene, const std::string& technique, std::map<std::string, ParamValue> given = {}) {
+    const Technique& t = *TechniqueRegistry::instance().find(technique);
+    const ParamSet params = ParamSet::resolve(t.params(), given, {}, SourceLocation{}, technique);
+    FrameRenderer renderer(gpu(), scene, build_scene_meshes(scene), kWidth, kHeight, t.plan(params));
+    renderer.render();
+    return renderer.read_color();
+}
+
+// Mean luminance of a 3x3 block around the pixel that shows world point p.
+float luminance_at(const Image& image, const Scene& scene, glm::vec3 p) {
+    const glm::vec2 px = project_to_pixel(scene.camera, image.width, image.height, p);
+    float sum = 0.0f;
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) sum += image.luminance(int(px.x) + dx, int(px.y) + dy);
+    return sum / 9.0f;
+}
+
+void check_all_finite(const Image& image) {
+    long long bad = 0;
+    for (float v : image.pixels) bad += std::isfinite(v) ? 0 : 1;
+    CHECK_MESSAGE(bad == 0, "non-finite channel values: ", bad);
+}
+
+struct Variant {
+    std::string technique;
+    std::map<std::string, ParamValue> params;
+};
+
+std::vector<Variant> variants() {
+    return {
+        {"shadow.hard", {}},
+        {"shadow.hard", {{"depth_format", std::string("d16")}}},
+        {"shadow.pcf", {}},
+        {"shadow.pcf", {{"kernel", 5LL}, {"pattern", std::string("poisson")}}},
+        {"shadow.pcf", {{"kernel", 3LL}, {"hardware_2x2", true}}},
+        {"shadow.pcf", {{"kernel", 7LL}, {"receiver_plane", false}, {"depth_format", std::string("d16")}}},
+    };
+}
+
+}  // namespace
+
+TEST_CASE("under the occluder is dark and the open floor is lit exactly as Lambert says") {
+    const Scene scene = tiny_scene();
+    const glm::vec3 under_occluder(0.0f, 0.0f, 0.0f), open_floor(-1.8f, 0.0f, 1.5f);
+    // Directional light straight down: E = intensity on the floor.
+    const float albedo = 0.8f, ambient = 0.05f, irradiance = 2.0f;
+    const float lit_expected = albedo * (irradiance / shader::PI + ambient);
+    const float umbra_expected = albedo * ambient;
+    for (const Variant& v : variants()) {
+        CAPTURE(v.technique);
+        CAPTURE(v.params.size());
+        const Image image = render(scene, v.technique, v.params);
+        check_all_finite(image);
+        const float lit = luminance_at(image, scene, open_floor);
+        const float shadowed = luminance_at(image, scene, under_occluder);
+        CHECK(lit == doctest::Approx(lit_expected).epsilon(0.01));
+        CHECK(shadowed == doctest::Approx(umbra_expected).epsilon(0.05));
+        CHECK(shadowed < 0.3f * lit);
+    }
+}
+
+TEST_CASE("every light type casts the occluder's shadow") {
+    for (LightType type : {LightType::spot, LightType::rect, LightType::sphere}) {
+        Scene scene = tiny_scene();
+        Light& light = scene.lights.front();
+        light.type = type;
+        light.position = glm::vec3(0.0f, 4.0f, 0.0f);
+        light.direction = glm::vec3(0.0f, -1.0f, 0.0f);
+        light.intensity = 30.0f;
+        light.spot_angle_degrees = 50.0f;
+        light.rect_size = glm::vec2(0.2f);
+        light.sphere_radius = 0.1f;
+        CAPTURE(int(type));
+        for (const char* technique : {"shadow.hard", "shadow.pcf"}) {
+            CAPTURE(technique);
+            const Image image = render(scene, technique);
+            check_all_finite(image);
+            // Raster techniques light with the area light's centre: the shading model's point_irradiance.
+            const glm::vec3 open_floor(-1.6f, 0.0f, 1.4f);
+            const glm::vec3 E = shader::point_irradiance(int(type), open_floor, glm::vec3(0, 1, 0), light.position,
+                                                         light.direction, glm::vec3(light.intensity),
+                                                         std::cos(glm::radians(light.spot_angle_degrees)));
+            const float lit_expected = 0.8f * (E.x / shader::PI + 0.05f);
+            const float lit = luminance_at(image, scene, open_floor);
+            const float shadowed = luminance_at(image, scene, glm::vec3(0.0f));
+            CHECK(lit == doctest::Approx(lit_expected).epsilon(0.02));
+            CHECK(shadowed < 0.3f * lit);
+        }
+    }
+}
+
+TEST_CASE("the same configuration renders identical images twice") {
+    const Scene scene = tiny_scene();
+    for (const Variant& v : variants()) {
+        CAPTURE(v.technique);
+        const Image a = render(scene, v.technique, v.params);
+        const Image b = render(scene, v.technique, v.params);
+        REQUIRE(a.pixels.size() == b.pixels.size());
+        CHECK(std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(float)) == 0);
+    }
+}
+
+TEST_CASE("memory is reported per technique: the shadow map is the technique's") {
+    const Scene scene = tiny_scene();
+    const Technique& hard = *TechniqueRegistry::instance().find("shadow.hard");
+    for (long long resolution : {256LL, 1024LL}) {
+        const ParamSet params = ParamSet::resolve(hard.params(), {{"resolution", resolution}}, {}, {}, "shadow.hard");
+        FrameRenderer renderer(gpu(), scene, build_scene_meshes(scene), kWidth, kHeight, hard.plan(params));
+        const MemoryUse m = renderer.memory();
+        CHECK(m.technique_bytes >= uint64_t(resolution * resolution * 4));   // D32F texels
+        CHECK(m.technique_bytes < uint64_t(resolution * resolution * 4 * 2));
+        CHECK(m.target_bytes >= uint64_t(kWidth * kHeight * (16 + 4)));
+        CHECK(m.scene_bytes > 0);
+        CHECK(renderer.pass_names() == std::vector<std::string>{"shadow_map", "lit"});
+        const FrameTiming t = renderer.render();
+        CHECK(t.pass_gpu_ms.size() == 2);
+        CHECK(t.gpu_ms > 0.0);
+        CHECK(t.wall_ms > 0.0);
+    }
+}
+
+TEST_CASE("a scene without a shadow-casting light is refused with a reason") {
+    Scene scene = tiny_scene();
+    scene.lights.front().casts_shadows = false;
+    const Technique& hard = *TechniqueRegistry::instance().find("shadow.hard");
+    const FramePlan plan = hard.plan(ParamSet::resolve(hard.params(), {}, {}, {}, "shadow.hard"));
+    const auto reason = unsupported_reason(gpu(), scene, plan);
+    REQUIRE(reason.has_value());
+    CHECK(reason->find("shadow-casting") != std::string::npos);
+}

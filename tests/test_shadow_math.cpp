@@ -1,0 +1,132 @@
+// The shadow and shading math that the shaders run, checked as C++ (shared headers).
+#include "shading.h"
+#include "shadow_common.h"
+
+#include <doctest/doctest.h>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+#include <initializer_list>
+
+using namespace canopy::shader;
+
+namespace {
+
+// Depth along -z of the plane n.P = c seen through image-plane coordinates s (perspective).
+float plane_depth(glm::vec3 n, float c, glm::vec2 s) { return c / glm::dot(n, glm::vec3(s, -1.0f)); }
+
+}  // namespace
+
+TEST_CASE("depth gradient matches finite differences of a tilted plane (perspective)") {
+    const glm::vec3 n = glm::normalize(glm::vec3(0.3f, -0.2f, 0.9f));
+    const float c = -4.0f;  // plane in front of the light (depth > 0)
+    const glm::vec2 s(0.2f, -0.1f);
+    const float depth = plane_depth(n, c, s);
+    REQUIRE(depth > 0.0f);
+    const float texel_s = 1e-3f;  // image-plane size of one texel
+    const glm::vec2 g = depth_gradient_per_texel(n, glm::vec3(s, -1.0f), texel_s * depth);
+    const float du = plane_depth(n, c, s + glm::vec2(texel_s, 0.0f)) - depth;
+    const float dv = plane_depth(n, c, s + glm::vec2(0.0f, texel_s)) - depth;
+    CHECK(g.x == doctest::Approx(du).epsilon(0.01));
+    CHECK(g.y == doctest::Approx(dv).epsilon(0.01));
+    CHECK(depth_change_per_texel(g) == doctest::Approx(std::abs(du) + std::abs(dv)).epsilon(0.01));
+}
+
+TEST_CASE("depth gradient of an orthographic view is the plane's slope") {
+    const glm::vec3 n = glm::normalize(glm::vec3(1.0f, 0.0f, 1.0f));  // 45 degrees
+    const glm::vec2 g = depth_gradient_per_texel(n, glm::vec3(0.0f, 0.0f, -1.0f), 0.5f);
+    CHECK(g.x == doctest::Approx(0.5f));  // depth -z rises by one texel per texel at 45 degrees
+    CHECK(g.y == doctest::Approx(0.0f));
+}
+
+TEST_CASE("a receiver facing the light head-on has no depth gradient") {
+    const glm::vec2 g = depth_gradient_per_texel(glm::vec3(0.0f, 0.0f, 1.0f), glm::vec3(0.0f, 0.0f, -1.0f), 1.0f);
+    CHECK(g.x == 0.0f);
+    CHECK(g.y == 0.0f);
+    CHECK(slope_scaled_bias(0.001f, 4.0f, depth_change_per_texel(g)) == doctest::Approx(0.001f));
+}
+
+TEST_CASE("grazing receivers keep the gradient and the bias finite") {
+    for (float angle_degrees : {80.0f, 89.0f, 89.99f, 90.0f, 90.01f, 100.0f}) {
+        const float a = glm::radians(angle_degrees);
+        const glm::vec3 n(std::sin(a), 0.0f, std::cos(a));  // 90 degrees: edge-on to the light
+        const glm::vec2 g = depth_gradient_per_texel(n, glm::vec3(0.0f, 0.0f, -1.0f), 1.0f);
+        CAPTURE(angle_degrees);
+        CHECK(std::isfinite(g.x));
+        CHECK(std::isfinite(g.y));
+        CHECK(std::abs(g.x) <= 1.0f / GRAZING_COS + 1e-3f);
+        const float bias = slope_scaled_bias(0.0005f, 16.0f, depth_change_per_texel(g) * 1e-3f);
+        CHECK(std::isfinite(bias));
+        CHECK(bias >= 0.0005f);
+    }
+}
+
+TEST_CASE("depth test and grid offsets") {
+    CHECK(depth_test(0.5f, 0.5f) == 1.0f);   // equal depth counts as lit
+    CHECK(depth_test(0.5f, 0.49f) == 0.0f);  // occluder nearer the light
+    CHECK(depth_test(0.0f, 1.0f) == 1.0f);
+    // A 3x3 grid is centred: offsets -1..1; a 4x4 grid -1.5..1.5.
+    CHECK(grid_offset(0, 3) == glm::vec2(-1.0f, -1.0f));
+    CHECK(grid_offset(4, 3) == glm::vec2(0.0f, 0.0f));
+    CHECK(grid_offset(8, 3) == glm::vec2(1.0f, 1.0f));
+    CHECK(grid_offset(0, 4) == glm::vec2(-1.5f, -1.5f));
+    CHECK(grid_offset(15, 4) == glm::vec2(1.5f, 1.5f));
+    CHECK(grid_offset(0, 1) == glm::vec2(0.0f, 0.0f));
+}
+
+TEST_CASE("shadow-map coordinates from light clip space") {
+    CHECK(shadow_uv(glm::vec4(0.0f, 0.0f, 0.5f, 1.0f)) == glm::vec2(0.5f, 0.5f));
+    CHECK(shadow_uv(glm::vec4(-2.0f, 2.0f, 0.5f, 2.0f)) == glm::vec2(0.0f, 1.0f));
+    CHECK(inside_shadow_map(glm::vec2(0.0f, 1.0f)));
+    CHECK_FALSE(inside_shadow_map(glm::vec2(-0.01f, 0.5f)));
+    CHECK(normalised_light_depth(3.0f, 1.0f, 0.25f) == doctest::Approx(0.5f));
+}
+
+TEST_CASE("Lambert shading with ambient") {
+    const glm::vec3 albedo(0.5f);
+    const glm::vec3 radiance = lambert_radiance(albedo, glm::vec3(PI), 1.0f, glm::vec3(0.1f));
+    CHECK(radiance.x == doctest::Approx(0.5f * (1.0f + 0.1f)));
+    const glm::vec3 shadowed = lambert_radiance(albedo, glm::vec3(PI), 0.0f, glm::vec3(0.1f));
+    CHECK(shadowed.x == doctest::Approx(0.05f));  // only ambient in umbra
+}
+
+TEST_CASE("point-like light irradiance: inverse square, receiver and emitter cosines") {
+    const glm::vec3 n(0.0f, 1.0f, 0.0f);
+    const glm::vec3 down(0.0f, -1.0f, 0.0f);
+    const glm::vec3 I(8.0f);
+    const float cos_half = std::cos(glm::radians(30.0f));
+    // Sphere light 2 m straight above: E = I / d^2.
+    CHECK(point_irradiance(LIGHT_SPHERE, glm::vec3(0.0f), n, glm::vec3(0, 2, 0), down, I, cos_half).x == doctest::Approx(2.0f));
+    // Rect light, receiver 45 degrees off its axis: both cosines apply; d^2 = 8.
+    const glm::vec3 p(2.0f, 0.0f, 0.0f);
+    const float c45 = std::sqrt(0.5f);
+    CHECK(point_irradiance(LIGHT_RECT, p, n, glm::vec3(0, 2, 0), down, I, cos_half).x == doctest::Approx(8.0f * c45 * c45 / 8.0f));
+    // Behind a one-sided rect light: nothing.
+    CHECK(point_irradiance(LIGHT_RECT, glm::vec3(0, 4, 0), down, glm::vec3(0, 2, 0), down, I, cos_half).x == 0.0f);
+    // Light on the far side of the receiver: nothing, never negative.
+    CHECK(point_irradiance(LIGHT_SPHERE, glm::vec3(0.0f), n, glm::vec3(0, -2, 0), down, I, cos_half).x == 0.0f);
+    // Coincident light and receiver stays finite.
+    CHECK(std::isfinite(point_irradiance(LIGHT_SPHERE, glm::vec3(0.0f), n, glm::vec3(0.0f), down, I, cos_half).x));
+}
+
+TEST_CASE("spot cone falloff is 1 inside, 0 outside, monotone between") {
+    const float cos_half = std::cos(glm::radians(30.0f));
+    CHECK(spot_falloff(1.0f, cos_half) == 1.0f);
+    CHECK(spot_falloff(std::cos(glm::radians(26.0f)), cos_half) == 1.0f);  // inside 90% of the half-angle
+    CHECK(spot_falloff(std::cos(glm::radians(31.0f)), cos_half) == 0.0f);
+    float previous = 1.0f;
+    for (float deg = 26.0f; deg <= 30.0f; deg += 0.25f) {
+        const float f = spot_falloff(std::cos(glm::radians(deg)), cos_half);
+        CHECK(f <= previous + 1e-6f);
+        CHECK(f >= 0.0f);
+        previous = f;
+    }
+}
+
+TEST_CASE("directional irradiance") {
+    const glm::vec3 E(3.0f);
+    CHECK(directional_irradiance(glm::vec3(0, 1, 0), glm::vec3(0, -1, 0), E).x == doctest::Approx(3.0f));
+    CHECK(directional_irradiance(glm::vec3(0, -1, 0), glm::vec3(0, -1, 0), E).x == 0.0f);
+    const glm::vec3 tilted = glm::normalize(glm::vec3(1, -1, 0));
+    CHECK(directional_irradiance(glm::vec3(0, 1, 0), tilted, E).x == doctest::Approx(3.0f * std::sqrt(0.5f)));
+}
