@@ -55,7 +55,7 @@ CANOPY_FN vec2 grid_offset(int i, int k) {
 // Light-space position -> shadow-map uv (0..1, row 0 at v = 0) and the receiver's normalised
 // linear depth. `light_clip` is light_proj * light_view * world.
 CANOPY_FN vec2 shadow_uv(vec4 light_clip) {
-    vec2 ndc = light_clip.xy / light_clip.w;
+    vec2 ndc = vec2(light_clip.x, light_clip.y) / light_clip.w;  // no swizzles: glm has none
     return ndc * 0.5f + 0.5f;
 }
 
