@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/param.hpp"
+#include "reference/reference_settings.hpp"
 #include "scene/scene.hpp"
 
 #include <map>
@@ -34,6 +35,9 @@ struct Experiment {
     std::vector<TechniqueEntry> techniques;
     int warmup_frames = 5;
     int measured_frames = 20;
+    // The ray-traced reference every case's image is compared with ([reference] table).
+    bool reference_enabled = true;
+    ReferenceSettings reference{64, 4, 1, 0};  // 64 light samples x 4 pixel samples = 256 shadow rays per pixel
     // Hash of the experiment file and every scene file it uses (hex), for the results record.
     std::string config_hash;
 };

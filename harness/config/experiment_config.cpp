@@ -163,6 +163,25 @@ std::string hash_files(const std::string& experiment_bytes, const std::vector<st
     return fmt::format("{:016x}", hash);
 }
 
+// [reference]: whether and how precisely to ray-trace the ground truth.
+void read_reference(TomlReader& section, Experiment& experiment) {
+    experiment.reference_enabled = section.get_bool("enabled", experiment.reference_enabled);
+    const long long light_samples = section.get_int("light_samples", experiment.reference.light_samples);
+    if (light_samples < 1 || light_samples > 65536)
+        throw section.error("light_samples", fmt::format("'light_samples' must lie in [1, 65536], got {}", light_samples),
+                            "shadow rays per pixel sample towards an area light, e.g. light_samples = 64");
+    const long long pixel_samples = section.get_int("pixel_samples", experiment.reference.pixel_samples);
+    if (pixel_samples < 1 || pixel_samples > 1024)
+        throw section.error("pixel_samples", fmt::format("'pixel_samples' must lie in [1, 1024], got {}", pixel_samples),
+                            "sub-pixel samples per pixel (anti-aliasing), e.g. pixel_samples = 4");
+    const long long seed = section.get_int("seed", (long long)experiment.reference.seed);
+    if (seed < 0) throw section.error("seed", "'seed' must not be negative", "seed = 1");
+    experiment.reference.light_samples = int(light_samples);
+    experiment.reference.pixel_samples = int(pixel_samples);
+    experiment.reference.seed = uint64_t(seed);
+    section.finish();
+}
+
 }  // namespace
 
 Experiment load_experiment(const std::filesystem::path& file, const TechniqueRegistry& registry) {
@@ -171,6 +190,7 @@ Experiment load_experiment(const std::filesystem::path& file, const TechniqueReg
     TomlReader top(root, file, "");
     std::optional<TomlReader> section = top.get_table("experiment", "[experiment]");
     std::vector<TomlReader> technique_sections = top.get_tables("technique", "[[technique]]");
+    std::optional<TomlReader> reference_section = top.get_table("reference", "[reference]");
     top.finish();
     if (!section)
         throw ConfigError(file, 0, "missing the [experiment] section",
@@ -194,6 +214,7 @@ Experiment load_experiment(const std::filesystem::path& file, const TechniqueReg
                              "repetitions is the number of measured frames, e.g. repetitions = 20");
     experiment.warmup_frames = int(warmup);
     experiment.measured_frames = int(repetitions);
+    if (reference_section) read_reference(*reference_section, experiment);
 
     std::vector<std::filesystem::path> hashed_files;
     experiment.scenes = read_scenes(*section, hashed_files);

@@ -1,0 +1,189 @@
+#include "reference/embree_scene.hpp"
+
+#include "core/error.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace canopy {
+
+namespace {
+
+const char* embree_error_name(RTCError error) {
+    switch (error) {
+        case RTC_ERROR_NONE: return "no error";
+        case RTC_ERROR_UNKNOWN: return "unknown error";
+        case RTC_ERROR_INVALID_ARGUMENT: return "invalid argument";
+        case RTC_ERROR_INVALID_OPERATION: return "invalid operation";
+        case RTC_ERROR_OUT_OF_MEMORY: return "out of memory";
+        case RTC_ERROR_UNSUPPORTED_CPU: return "unsupported CPU";
+        case RTC_ERROR_CANCELLED: return "cancelled";
+    }
+    return "unrecognised error";
+}
+
+void throw_if_embree_failed(RTCDevice device, const char* what) {
+    const RTCError error = rtcGetDeviceError(device);
+    if (error != RTC_ERROR_NONE)
+        throw std::runtime_error(fmt::format("Embree failed while {}: {}", what, embree_error_name(error)));
+}
+
+bool is_finite(const glm::mat4& m) {
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+            if (!std::isfinite(m[c][r])) return false;
+    return true;
+}
+
+// Discards hits the object's alpha test calls transparent; serves camera and shadow rays alike.
+void alpha_test_filter(const RTCFilterFunctionNArguments* args) {
+    const AlphaTest& alpha_test = *static_cast<const AlphaTest*>(args->geometryUserPtr);
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] != -1) continue;
+        const unsigned triangle = RTCHitN_primID(args->hit, args->N, i);
+        const float u = RTCHitN_u(args->hit, args->N, i);
+        const float v = RTCHitN_v(args->hit, args->N, i);
+        if (!alpha_test(triangle, u, v)) args->valid[i] = 0;
+    }
+}
+
+}  // namespace
+
+EmbreeScene::EmbreeScene(const Scene& scene, const std::vector<TriangleMesh>& meshes,
+                         const EmbreeSceneOptions& options) {
+    if (meshes.size() != scene.objects.size())
+        throw std::invalid_argument(fmt::format("EmbreeScene: {} meshes for {} scene objects", meshes.size(),
+                                                scene.objects.size()));
+    materials_.reserve(scene.objects.size());
+    alpha_tests_.resize(scene.objects.size());
+    for (size_t object_index = 0; object_index < scene.objects.size(); ++object_index) {
+        materials_.push_back(scene.objects[object_index].material);
+        if (object_index < options.alpha_tests.size()) alpha_tests_[object_index] = options.alpha_tests[object_index];
+    }
+
+    // Flatten every instance into world space.
+    for (size_t object_index = 0; object_index < scene.objects.size(); ++object_index) {
+        const Object& object = scene.objects[object_index];
+        const TriangleMesh& mesh = meshes[object_index];
+        const auto reject = [&](size_t instance, const std::string& message) {
+            return ConfigError(object.where.file, object.where.line,
+                               fmt::format("the reference renderer cannot represent object '{}' (instance {}): {}",
+                                           object.name, instance, message));
+        };
+        if (mesh.triangle_count() == 0) continue;
+        for (uint32_t index : mesh.indices)
+            if (index >= mesh.vertices.size())
+                throw reject(0, fmt::format("its mesh references vertex {} of {}", index, mesh.vertices.size()));
+        auto indices = std::make_shared<const std::vector<uint32_t>>(mesh.indices.begin(),
+                                                                      mesh.indices.begin() + mesh.triangle_count() * 3);
+        for (size_t instance_index = 0; instance_index < object.instances.size(); ++instance_index) {
+            const glm::mat4 model = object.instances[instance_index].matrix();
+            const glm::mat3 linear(model);
+            const float determinant = glm::determinant(linear);
+            if (!is_finite(model) || !std::isfinite(determinant))
+                throw reject(instance_index, "its transform is not finite");
+            if (std::abs(determinant) < 1e-12f)
+                throw reject(instance_index, "its transform is degenerate (a zero scale flattens it)");
+            const glm::mat3 normal_matrix = glm::transpose(glm::inverse(linear));
+
+            Record record;
+            record.instance = {uint32_t(object_index), uint32_t(instance_index)};
+            record.indices = indices;
+            record.positions.reserve(mesh.vertices.size() * 3 + 1);
+            record.normals.reserve(mesh.vertices.size());
+            for (const Vertex& vertex : mesh.vertices) {
+                const glm::vec3 world = glm::vec3(model * glm::vec4(vertex.position, 1.0f));
+                if (!std::isfinite(world.x) || !std::isfinite(world.y) || !std::isfinite(world.z))
+                    throw reject(instance_index, "a vertex position is not finite");
+                record.positions.insert(record.positions.end(), {world.x, world.y, world.z});
+                bounds_.extend(world);
+                glm::vec3 normal = normal_matrix * vertex.normal;
+                const float length = glm::length(normal);
+                record.normals.push_back(length > 0.0f && std::isfinite(length) ? normal / length : glm::vec3(0.0f));
+            }
+            record.positions.push_back(0.0f);  // Embree loads vertices with 16-byte reads
+            triangle_count_ += mesh.triangle_count();
+            records_.push_back(std::move(record));
+        }
+    }
+    extent_ = bounds_.radius();
+
+    try {
+        build_embree_scenes(scene);
+    } catch (...) {
+        release();
+        throw;
+    }
+}
+
+void EmbreeScene::build_embree_scenes(const Scene& scene) {
+    device_ = rtcNewDevice(nullptr);
+    if (!device_) throw std::runtime_error(fmt::format("Embree: cannot create a device: {}",
+                                                       embree_error_name(rtcGetDeviceError(nullptr))));
+    bool every_object_casts = true;
+    for (const Object& object : scene.objects) every_object_casts = every_object_casts && object.casts_shadows;
+
+    visible_scene_ = rtcNewScene(device_);
+    shadow_scene_ = every_object_casts ? visible_scene_ : rtcNewScene(device_);
+    if (every_object_casts) rtcRetainScene(visible_scene_);
+    for (RTCScene target : {visible_scene_, shadow_scene_}) {
+        rtcSetSceneBuildQuality(target, RTC_BUILD_QUALITY_HIGH);
+        rtcSetSceneFlags(target, RTC_SCENE_FLAG_NONE);
+    }
+    for (size_t geom_id = 0; geom_id < records_.size(); ++geom_id) {
+        const Record& record = records_[geom_id];
+        const AlphaTest* alpha_test = alpha_tests_[record.instance.object] ? &alpha_tests_[record.instance.object] : nullptr;
+        RTCGeometry visible = create_geometry(record, alpha_test);
+        rtcAttachGeometryByID(visible_scene_, visible, unsigned(geom_id));
+        rtcReleaseGeometry(visible);
+        if (!every_object_casts && scene.objects[record.instance.object].casts_shadows) {
+            RTCGeometry shadow = create_geometry(record, alpha_test);
+            rtcAttachGeometryByID(shadow_scene_, shadow, unsigned(geom_id));
+            rtcReleaseGeometry(shadow);
+        }
+    }
+    throw_if_embree_failed(device_, "creating geometry");
+    rtcCommitScene(visible_scene_);
+    if (!every_object_casts) rtcCommitScene(shadow_scene_);
+    throw_if_embree_failed(device_, "building the BVH");
+}
+
+RTCGeometry EmbreeScene::create_geometry(const Record& record, const AlphaTest* alpha_test) const {
+    RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
+    const size_t vertex_count = record.normals.size();
+    rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, record.positions.data(), 0,
+                               3 * sizeof(float), vertex_count);
+    rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, record.indices->data(), 0,
+                               3 * sizeof(uint32_t), record.indices->size() / 3);
+    rtcSetGeometryBuildQuality(geometry, RTC_BUILD_QUALITY_HIGH);
+    if (alpha_test) {
+        rtcSetGeometryUserData(geometry, const_cast<AlphaTest*>(alpha_test));
+        rtcSetGeometryIntersectFilterFunction(geometry, alpha_test_filter);
+        rtcSetGeometryOccludedFilterFunction(geometry, alpha_test_filter);
+    }
+    rtcCommitGeometry(geometry);
+    return geometry;
+}
+
+EmbreeScene::~EmbreeScene() { release(); }
+
+void EmbreeScene::release() {
+    if (shadow_scene_) rtcReleaseScene(shadow_scene_);
+    if (visible_scene_) rtcReleaseScene(visible_scene_);
+    if (device_) rtcReleaseDevice(device_);
+    shadow_scene_ = visible_scene_ = nullptr;
+    device_ = nullptr;
+}
+
+glm::vec3 EmbreeScene::shading_normal(unsigned geom_id, unsigned prim_id, float u, float v) const {
+    const Record& record = records_[geom_id];
+    const uint32_t* triangle = record.indices->data() + size_t(prim_id) * 3;
+    const glm::vec3 normal = (1.0f - u - v) * record.normals[triangle[0]] + u * record.normals[triangle[1]] +
+                             v * record.normals[triangle[2]];
+    const float length = glm::length(normal);
+    return length > 0.0f ? normal / length : glm::vec3(0.0f);
+}
+
+}  // namespace canopy

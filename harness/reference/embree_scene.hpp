@@ -1,0 +1,88 @@
+// The scene as Embree sees it: one triangle geometry per object instance, with world-space
+// vertices (instances are flattened, which traces fastest for the scene sizes canopy uses).
+//
+// Two Embree scenes share the vertex and index buffers:
+//   visible scene: every object, for camera rays;
+//   shadow scene:  only objects with casts_shadows, for shadow rays (the same RTCScene when
+//                  every object casts shadows).
+// A geometry ID means the same object instance in both (see geometry()).
+#pragma once
+
+#include "scene/geometry.hpp"
+#include "scene/scene.hpp"
+
+#include <embree3/rtcore.h>
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace canopy {
+
+// Alpha testing hook for cut-out geometry (foliage, grass): called for every candidate hit of
+// a camera or shadow ray on an object that has one, with the triangle index within the object's
+// mesh and the hit's barycentric coordinates (u weights vertex 1, v weights vertex 2). Return
+// true when the surface is opaque there (the hit stands), false to let the ray pass.
+// Called concurrently from several threads: it must be thread-safe (pure is best).
+using AlphaTest = std::function<bool(uint32_t triangle, float u, float v)>;
+
+struct EmbreeSceneOptions {
+    // Indexed like scene.objects; missing or empty entries are opaque objects.
+    std::vector<AlphaTest> alpha_tests;
+};
+
+// What one geometry ID stands for.
+struct EmbreeInstance {
+    uint32_t object = 0;    // index into scene.objects
+    uint32_t instance = 0;  // index into that object's instances
+};
+
+class EmbreeScene {
+public:
+    // Throws ConfigError naming the object's file:line when an instance cannot be represented
+    // (non-finite or degenerate transform, non-finite vertices, out-of-range indices).
+    EmbreeScene(const Scene& scene, const std::vector<TriangleMesh>& meshes, const EmbreeSceneOptions& options = {});
+    ~EmbreeScene();
+    EmbreeScene(const EmbreeScene&) = delete;
+    EmbreeScene& operator=(const EmbreeScene&) = delete;
+
+    RTCScene visible_scene() const { return visible_scene_; }
+    RTCScene shadow_scene() const { return shadow_scene_; }
+
+    size_t geometry_count() const { return records_.size(); }
+    const EmbreeInstance& geometry(unsigned geom_id) const { return records_[geom_id].instance; }
+    const Material& material(unsigned geom_id) const { return materials_[records_[geom_id].instance.object]; }
+    // Interpolated vertex normal in world space (unit, not yet turned towards the viewer), as
+    // the raster pipeline interpolates it.
+    glm::vec3 shading_normal(unsigned geom_id, unsigned prim_id, float u, float v) const;
+
+    // Radius of the bounding sphere of all world-space vertices (0 for an empty scene).
+    float extent() const { return extent_; }
+    const Bounds& bounds() const { return bounds_; }
+    size_t triangle_count() const { return triangle_count_; }
+
+private:
+    struct Record {
+        EmbreeInstance instance;
+        std::vector<float> positions;           // xyz per vertex + 1 float of padding Embree may read
+        std::vector<glm::vec3> normals;         // world space, unit
+        std::shared_ptr<const std::vector<uint32_t>> indices;
+    };
+
+    void build_embree_scenes(const Scene& scene);
+    RTCGeometry create_geometry(const Record& record, const AlphaTest* alpha_test) const;
+    void release();
+
+    RTCDevice device_ = nullptr;
+    RTCScene visible_scene_ = nullptr;
+    RTCScene shadow_scene_ = nullptr;
+    std::vector<Record> records_;
+    std::vector<Material> materials_;
+    std::vector<AlphaTest> alpha_tests_;  // one per object, stable addresses for Embree user data
+    Bounds bounds_;
+    float extent_ = 0.0f;
+    size_t triangle_count_ = 0;
+};
+
+}  // namespace canopy

@@ -1,0 +1,210 @@
+#include "reference/reference_cache.hpp"
+
+#include <OpenImageIO/imageio.h>
+#include <fmt/format.h>
+
+#include <atomic>
+#include <cstring>
+#include <stdexcept>
+#include <system_error>
+#include <type_traits>
+#include <unistd.h>
+
+namespace canopy {
+
+// The key must cover every field that changes the image. These fail when a struct gains a
+// field: hash it in reference_cache_key (or decide it does not matter), then update the size.
+static_assert(sizeof(Camera) == 48, "Camera changed: update reference_cache_key");
+static_assert(sizeof(Material) == 12, "Material changed: update reference_cache_key");
+static_assert(sizeof(Light) == 80 + sizeof(SourceLocation), "Light changed: update reference_cache_key");
+static_assert(sizeof(Transform) == 36 + 64, "Transform changed: update reference_cache_key (it hashes matrix())");
+
+namespace {
+
+// FNV-1a, 64 bit.
+class Fnv1a64 {
+public:
+    void bytes(const void* data, size_t size) {
+        const auto* p = static_cast<const unsigned char*>(data);
+        for (size_t i = 0; i < size; ++i) {
+            hash_ ^= p[i];
+            hash_ *= 0x100000001b3ull;
+        }
+    }
+    template <class T>
+    void add(const T& value) {
+        static_assert(std::is_trivially_copyable_v<T>);
+        bytes(&value, sizeof(T));
+    }
+    void add_string(const std::string& text) {
+        add(uint64_t(text.size()));
+        bytes(text.data(), text.size());
+    }
+    uint64_t value() const { return hash_; }
+
+private:
+    uint64_t hash_ = 0xcbf29ce484222325ull;
+};
+
+void hash_vec(Fnv1a64& hash, glm::vec3 v) {
+    hash.add(v.x);
+    hash.add(v.y);
+    hash.add(v.z);
+}
+
+const char* kImageNames[3] = {"radiance", "variance", "visibility"};
+
+std::filesystem::path image_path(const std::filesystem::path& dir, const std::string& key, const char* name) {
+    return dir / fmt::format("{}.{}.exr", key, name);
+}
+
+void write_exr(const std::filesystem::path& path, const Image& image, const std::string& key,
+               const ReferenceImages* stats) {
+    // Same folder (so rename is atomic), unique per process and call, and still ".exr" so
+    // OpenImageIO picks the EXR writer.
+    static std::atomic<uint64_t> counter{0};
+    const std::filesystem::path temporary =
+        path.parent_path() / fmt::format(".{}.tmp-{}-{}.exr", path.stem().string(), ::getpid(), counter++);
+    auto output = OIIO::ImageOutput::create(temporary.string());
+    if (!output)
+        throw std::runtime_error(fmt::format("cannot write '{}': {}", path.string(), OIIO::geterror()));
+    OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::FLOAT);
+    spec.attribute("compression", "zip");
+    spec.attribute("canopy:key", key);
+    if (stats) {
+        spec.attribute("canopy:seconds", OIIO::TypeDesc::DOUBLE, &stats->seconds);
+        spec.attribute("canopy:shadow_rays", std::to_string(stats->shadow_rays));
+    }
+    const bool written = output->open(temporary.string(), spec) &&
+                         output->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data()) && output->close();
+    if (!written) {
+        const std::string error = output->geterror();
+        std::error_code ignored;
+        std::filesystem::remove(temporary, ignored);
+        throw std::runtime_error(fmt::format("cannot write '{}': {}", path.string(), error));
+    }
+    std::error_code error;
+    std::filesystem::rename(temporary, path, error);
+    if (error) {
+        std::error_code ignored;
+        std::filesystem::remove(temporary, ignored);
+        throw std::runtime_error(fmt::format("cannot move '{}' into place: {}", path.string(), error.message()));
+    }
+}
+
+// Reads an RGBA float image written by write_exr; nullopt when it is missing or does not fit.
+std::optional<Image> read_exr(const std::filesystem::path& path, const std::string& key, ReferenceImages* stats) {
+    std::error_code ignored;
+    if (!std::filesystem::is_regular_file(path, ignored)) return std::nullopt;
+    auto input = OIIO::ImageInput::open(path.string());
+    if (!input) {
+        (void)OIIO::geterror();  // clear OpenImageIO's error state: a miss is not an error
+        return std::nullopt;
+    }
+    const OIIO::ImageSpec& spec = input->spec();
+    if (spec.nchannels != 4 || spec.width <= 0 || spec.height <= 0 || spec.get_string_attribute("canopy:key") != key)
+        return std::nullopt;
+    Image image(spec.width, spec.height);
+    if (!input->read_image(0, 0, 0, 4, OIIO::TypeDesc::FLOAT, image.pixels.data())) {
+        (void)input->geterror();
+        return std::nullopt;
+    }
+    if (stats) {
+        stats->seconds = spec.get_float_attribute("canopy:seconds", 0.0f);
+        if (const OIIO::ParamValue* seconds = spec.find_attribute("canopy:seconds", OIIO::TypeDesc::DOUBLE))
+            stats->seconds = seconds->get<double>();
+        stats->shadow_rays = std::strtoull(std::string(spec.get_string_attribute("canopy:shadow_rays", "0")).c_str(),
+                                           nullptr, 10);
+    }
+    return image;
+}
+
+}  // namespace
+
+std::string reference_cache_key(const Scene& scene, const std::vector<TriangleMesh>& meshes, int width, int height,
+                                const ReferenceSettings& settings) {
+    Fnv1a64 hash;
+    hash.add_string("canopy reference");
+    hash.add(int32_t(kReferenceShadingVersion));
+    hash.add(int32_t(width));
+    hash.add(int32_t(height));
+    hash.add(int32_t(settings.light_samples));
+    hash.add(int32_t(settings.pixel_samples));
+    hash.add(uint64_t(settings.seed));
+
+    const Camera& camera = scene.camera;
+    hash_vec(hash, camera.position);
+    hash_vec(hash, camera.target);
+    hash_vec(hash, camera.up);
+    hash.add(camera.fov_y_degrees);
+    hash.add(camera.near_plane);
+    hash.add(camera.far_plane);
+    hash_vec(hash, scene.ambient);
+    hash_vec(hash, scene.background);
+
+    hash.add(uint64_t(scene.lights.size()));
+    for (const Light& light : scene.lights) {
+        hash.add(int32_t(light.type));
+        hash_vec(hash, light.position);
+        hash_vec(hash, light.direction);
+        hash_vec(hash, light.color);
+        hash.add(light.intensity);
+        hash.add(light.spot_angle_degrees);
+        hash.add(light.rect_size.x);
+        hash.add(light.rect_size.y);
+        hash.add(light.sphere_radius);
+        hash_vec(hash, light.rect_up_hint);
+        hash.add(uint8_t(light.casts_shadows));
+    }
+
+    hash.add(uint64_t(scene.objects.size()));
+    for (size_t index = 0; index < scene.objects.size(); ++index) {
+        const Object& object = scene.objects[index];
+        hash_vec(hash, object.material.albedo);
+        hash.add(uint8_t(object.casts_shadows));
+        hash.add(uint64_t(object.instances.size()));
+        for (const Transform& instance : object.instances) {
+            const glm::mat4 matrix = instance.matrix();
+            hash.bytes(&matrix[0][0], sizeof(matrix));
+        }
+        const TriangleMesh* mesh = index < meshes.size() ? &meshes[index] : nullptr;
+        hash.add(uint64_t(mesh ? mesh->vertices.size() : 0));
+        hash.add(uint64_t(mesh ? mesh->indices.size() : 0));
+        if (!mesh) continue;
+        for (const Vertex& vertex : mesh->vertices) {
+            hash_vec(hash, vertex.position);
+            hash_vec(hash, vertex.normal);
+        }
+        hash.bytes(mesh->indices.data(), mesh->indices.size() * sizeof(uint32_t));
+    }
+    return fmt::format("{:016x}", hash.value());
+}
+
+std::optional<ReferenceImages> load_cached_reference(const std::filesystem::path& dir, const std::string& key) {
+    ReferenceImages images;
+    std::optional<Image> radiance = read_exr(image_path(dir, key, kImageNames[0]), key, &images);
+    std::optional<Image> variance = read_exr(image_path(dir, key, kImageNames[1]), key, nullptr);
+    std::optional<Image> visibility = read_exr(image_path(dir, key, kImageNames[2]), key, nullptr);
+    if (!radiance || !variance || !visibility) return std::nullopt;
+    const auto same_size = [&](const Image& image) {
+        return image.width == radiance->width && image.height == radiance->height;
+    };
+    if (!same_size(*variance) || !same_size(*visibility)) return std::nullopt;
+    images.radiance = std::move(*radiance);
+    images.variance = std::move(*variance);
+    images.visibility = std::move(*visibility);
+    return images;
+}
+
+void store_reference(const std::filesystem::path& dir, const std::string& key, const ReferenceImages& images) {
+    std::error_code error;
+    std::filesystem::create_directories(dir, error);
+    if (error)
+        throw std::runtime_error(fmt::format("cannot create the reference cache folder '{}': {}", dir.string(),
+                                             error.message()));
+    write_exr(image_path(dir, key, kImageNames[0]), images.radiance, key, &images);
+    write_exr(image_path(dir, key, kImageNames[1]), images.variance, key, nullptr);
+    write_exr(image_path(dir, key, kImageNames[2]), images.visibility, key, nullptr);
+}
+
+}  // namespace canopy

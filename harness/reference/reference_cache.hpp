@@ -1,0 +1,36 @@
+// Reference images are expensive, so they are cached on disk under a key that hashes every
+// input that changes them. Files: <dir>/<key>.radiance.exr, <key>.variance.exr and
+// <key>.visibility.exr, 32-bit float RGBA EXR; the radiance file also records the key, the
+// render's seconds and shadow-ray count as attributes (canopy:key, canopy:seconds,
+// canopy:shadow_rays).
+#pragma once
+
+#include "reference/reference_renderer.hpp"
+
+#include <filesystem>
+#include <optional>
+#include <string>
+
+namespace canopy {
+
+// Bump whenever the reference's shading, sampling or image definitions change, so that stale
+// cached images are never reused.
+inline constexpr int kReferenceShadingVersion = 1;
+
+// 16 hex digits: FNV-1a 64 over kReferenceShadingVersion, the resolution, light and pixel sample
+// counts, seed, the camera, ambient, background, every light (all fields but `where`), and every
+// object's material, casts_shadows, world matrix per instance and mesh vertices and indices.
+// Names, file paths, source locations and the thread count do not change the image and are left out.
+std::string reference_cache_key(const Scene& scene, const std::vector<TriangleMesh>& meshes, int width, int height,
+                                const ReferenceSettings& settings);
+
+// The cached images for `key`, or nullopt when any file is missing, unreadable, of another key
+// or of mismatched sizes (a miss, never an error).
+std::optional<ReferenceImages> load_cached_reference(const std::filesystem::path& dir, const std::string& key);
+
+// Writes the three images atomically: each goes to a temporary .exr in `dir` first and is then
+// renamed into place, so readers never see a partial file. Creates `dir` if needed; throws
+// std::runtime_error when writing fails.
+void store_reference(const std::filesystem::path& dir, const std::string& key, const ReferenceImages& images);
+
+}  // namespace canopy
