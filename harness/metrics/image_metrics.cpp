@@ -1,0 +1,61 @@
+#include "metrics/image_metrics.hpp"
+
+#include "metrics/comparable_pair.hpp"
+#include "metrics/pixel_error.hpp"
+#include "metrics/shadow_error.hpp"
+#include "metrics/ssim.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <limits>
+
+namespace canopy {
+
+ImageMetrics compute_metrics(const Image& test, const Image& reference, const Image* reference_visibility,
+                             const MetricOptions& options, std::vector<float>* flip_map_out) {
+    require_same_size(test, reference, "compute_metrics");
+
+    ImageMetrics metrics{};
+    const PixelError pixel_error = compute_pixel_error(test, reference);
+    metrics.mae = pixel_error.mae;
+    metrics.rmse = pixel_error.rmse;
+    metrics.psnr = pixel_error.psnr;
+    metrics.max_error = pixel_error.max_error;
+    metrics.max_x = pixel_error.max_x;
+    metrics.max_y = pixel_error.max_y;
+
+    metrics.ssim = compute_ssim(test, reference);
+
+    std::vector<float> flip_map = compute_flip_map(test, reference, options.flip_pixels_per_degree);
+    const FlipPooled flip = pool_flip_map(flip_map);
+    metrics.flip_mean = flip.mean;
+    metrics.flip_median_weighted = flip.weighted_median;
+    if (flip_map_out) *flip_map_out = std::move(flip_map);
+
+    metrics.nonfinite_pixels = count_nonfinite_pixels(test);
+
+    if (reference_visibility) {
+        const ShadowError shadow =
+            compute_shadow_error(test, reference, *reference_visibility, options.visibility_epsilon);
+        metrics.light_bleeding = shadow.light_bleeding;
+        metrics.over_darkening = shadow.over_darkening;
+        metrics.penumbra_rmse = shadow.penumbra_rmse;
+        metrics.umbra_pixels = shadow.umbra_pixels;
+        metrics.lit_pixels = shadow.lit_pixels;
+        metrics.penumbra_pixels = shadow.penumbra_pixels;
+    } else {
+        const double nan = std::numeric_limits<double>::quiet_NaN();
+        metrics.light_bleeding = metrics.over_darkening = metrics.penumbra_rmse = nan;
+        metrics.umbra_pixels = metrics.lit_pixels = metrics.penumbra_pixels = 0;
+    }
+    return metrics;
+}
+
+std::string format_metric_value(double value) {
+    if (std::isnan(value)) return "nan";
+    if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
+    return fmt::format("{:.6g}", value);
+}
+
+}  // namespace canopy

@@ -1,0 +1,52 @@
+// Every image-error metric of a test image against the ray-traced reference, in one call.
+#pragma once
+
+#include "core/image.hpp"
+#include "metrics/flip.hpp"
+
+#include <string>
+#include <vector>
+
+namespace canopy {
+
+// Non-finite pixels: `nonfinite_pixels` counts TEST pixels with a NaN/Inf in any channel (RGBA).
+// All other metrics are computed over the finite pixels only: a pixel where the test or the
+// reference has a non-finite channel is excluded from every mean (see comparable_pair.hpp); a metric
+// with nothing left to average is NaN.
+struct ImageMetrics {
+    // Linear RGB (alpha ignored), over the R, G, B values of all included pixels; via OpenImageIO
+    // (pixel_error.hpp). psnr = 20 log10(1 / rmse), peak 1.0, +infinity for identical images.
+    double mae, rmse, psnr;
+    double max_error;  // largest |test - ref| of any R, G, B value
+    int max_x, max_y;  // where (first in row-major order on ties)
+
+    double ssim;  // mean SSIM of clamped linear luminance, 11x11 Gaussian sigma 1.5, valid region (ssim.hpp)
+
+    // LDR-FLIP (flip.hpp): mean of the per-pixel map, and the FLIP tool's weighted median.
+    double flip_mean, flip_median_weighted;
+
+    long long nonfinite_pixels;
+
+    // Shadow metrics (shadow_error.hpp); NaN (and counts 0) when no visibility image was given or
+    // the visibility has no such pixels.
+    double light_bleeding;
+    double over_darkening;
+    double penumbra_rmse;
+    long long umbra_pixels, lit_pixels, penumbra_pixels;
+};
+
+struct MetricOptions {
+    double flip_pixels_per_degree = default_flip_pixels_per_degree;
+    double visibility_epsilon = 1e-3;
+};
+
+// reference_visibility may be null (no shadow metrics). When flip_map_out is given it receives the
+// per-pixel FLIP map (for flip_heatmap) so it need not be computed twice.
+// Throws std::invalid_argument on mismatched or empty images.
+ImageMetrics compute_metrics(const Image& test, const Image& reference, const Image* reference_visibility,
+                             const MetricOptions& options = {}, std::vector<float>* flip_map_out = nullptr);
+
+// A metric value for reports: "inf", "-inf", "nan", or up to 6 significant digits.
+std::string format_metric_value(double value);
+
+}  // namespace canopy

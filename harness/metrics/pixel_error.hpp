@@ -1,0 +1,27 @@
+// Per-channel pixel error statistics (MAE, RMSE, PSNR, max error), computed by OpenImageIO.
+#pragma once
+
+#include "core/image.hpp"
+
+namespace canopy {
+
+struct PixelError {
+    double mae = 0.0;        // mean |test - ref| over the R, G, B channels of the included pixels
+    double rmse = 0.0;       // sqrt(mean (test - ref)^2) over the same values
+    double psnr = 0.0;       // 20 * log10(1 / rmse), peak 1.0; +infinity when rmse == 0
+    double max_error = 0.0;  // largest |test - ref| of any R, G, B channel
+    int max_x = -1;          // pixel of max_error (the first one in row-major order on ties)
+    int max_y = -1;
+    long long included_pixels = 0;
+};
+
+// Linear RGB values as stored (no clamping, no encoding); alpha is ignored. Pixels where either
+// image has a non-finite channel are left out of every statistic (see comparable_pair.hpp); when no
+// pixel is left all fields are NaN and max_x = max_y = -1.
+//
+// The sums come from OIIO::ImageBufAlgo::compare over channels [0, 3). Two OIIO behaviours are
+// corrected here: OIIO divides by the number of all pixels (we rescale to the included ones), and
+// OIIO's PSNR uses max(1, largest value in either image) as the peak, while ours uses 1.0.
+PixelError compute_pixel_error(const Image& test, const Image& reference);
+
+}  // namespace canopy
