@@ -37,6 +37,7 @@ TEST_CASE("canopy run writes JSON, CSV, Markdown, EXR and PNG for every case") {
     options.out_dir = out;
     options.quick = true;
     options.show_progress = false;
+    options.reference_cache_dir = out / "cache";
     const RunRecord record = run_experiment(prepared, registry, gpu, options);
     CHECK(record.status == "complete");
 
@@ -63,7 +64,22 @@ TEST_CASE("canopy run writes JSON, CSV, Markdown, EXR and PNG for every case") {
         CHECK(exr.width == 96);
         CHECK(exr.height == 64);
         CHECK(png.width == 96);
+        // Errors against the reference, and their maps.
+        const auto& e = c["image_error"];
+        REQUIRE(e.is_object());
+        CHECK(e["rmse"].get<double>() >= 0.0);
+        CHECK(e["ssim"].get<double>() <= 1.0);
+        CHECK(e["flip_mean"].get<double>() >= 0.0);
+        CHECK(e["nonfinite_pixels"] == 0);
+        CHECK(e["umbra_pixels"].get<long long>() > 0);  // the box's shadow on the floor
+        CHECK(fs::exists(out / c["images"]["error_map_png"].get<std::string>()));
+        CHECK(fs::exists(out / c["images"]["flip_map_png"].get<std::string>()));
     }
+    REQUIRE(json["references"].size() == 1);
+    CHECK(json["references"][0]["from_cache"] == false);
+    CHECK(json["references"][0]["shadow_rays"].get<uint64_t>() > 0);
+    CHECK(fs::exists(out / json["references"][0]["images"]["exr"].get<std::string>()));
+    CHECK(fs::exists(out / json["references"][0]["images"]["visibility_exr"].get<std::string>()));
     CHECK(json["cases"][1]["params"]["kernel"] == 3);
     CHECK(json["cases"][2]["params"]["kernel"] == 5);
 
@@ -73,6 +89,19 @@ TEST_CASE("canopy run writes JSON, CSV, Markdown, EXR and PNG for every case") {
     const std::string md = read_text(out / "results.md");
     CHECK(md.find("| shadow.pcf") != std::string::npos);
     CHECK(md.find("llvmpipe") != std::string::npos);
+    CHECK(md.find("penumbra RMSE") != std::string::npos);
+    CHECK(csv.find(",rmse,psnr_db,") != std::string::npos);
+
+    // A second run finds the reference in the cache.
+    const fs::path again = fs::temp_directory_path() / "canopy-test-outputs-again";
+    fs::remove_all(again);
+    RunOptions second = options;
+    second.out_dir = again;
+    const RunRecord cached = run_experiment(prepared, registry, gpu, second);
+    REQUIRE(cached.references.size() == 1);
+    CHECK(cached.references[0].from_cache);
+    CHECK(cached.cases[0].image_error->rmse == doctest::Approx(record.cases[0].image_error->rmse));
+    fs::remove_all(again);
 
     // Atomic writes leave no temporary files behind.
     for (const auto& entry : fs::recursive_directory_iterator(out))

@@ -50,7 +50,7 @@ TEST_CASE("shadow-map parameters reach the plan") {
     CHECK_FALSE(plan.shadow_map->compare_sampler);
 }
 
-TEST_CASE("PCF plans k*k samples; Poisson tables fit the uniform block for every kernel") {
+TEST_CASE("PCF plans k*k samples and its Poisson tables fit the uniform block for every kernel") {
     const Technique& pcf = *TechniqueRegistry::instance().find("shadow.pcf");
     for (long long k = 1; k <= 11; ++k) {
         CAPTURE(k);

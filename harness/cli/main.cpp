@@ -1,5 +1,9 @@
 // canopy: runs rendering techniques over configured scenes and tabulates time and error.
 #include "config/experiment_config.hpp"
+#include "config/scene_config.hpp"
+#include "reference/shadow_ray_benchmark.hpp"
+#include "report/image_files.hpp"
+#include "run/reference_provider.hpp"
 #include "core/registry.hpp"
 #include "gpu/context.hpp"
 #include "report/markdown_report.hpp"
@@ -14,6 +18,8 @@
 #include <ctime>
 #include <filesystem>
 #include <iostream>
+#include <thread>
+#include <unistd.h>
 
 namespace fs = std::filesystem;
 using namespace canopy;
@@ -46,7 +52,57 @@ fs::path default_out_dir(const std::string& experiment) {
     return fs::path("results") / "runs" / fmt::format("{:%Y-%m-%d-%H%M%S}-{}", fmt::localtime(std::time(nullptr)), experiment);
 }
 
-int run(const fs::path& config, const std::string& out, bool quick, const std::string& device, bool progress) {
+struct ReferenceOptions {
+    int width = 640, height = 360;
+    ReferenceSettings settings{64, 4, 1, 0};
+    std::string cache_dir;  // "" = default
+    bool no_cache = false;
+};
+
+fs::path cache_dir(const ReferenceOptions& o) {
+    if (o.no_cache) return {};
+    return o.cache_dir.empty() ? default_reference_cache_dir() : fs::path(o.cache_dir);
+}
+
+int reference(const fs::path& scene_file, const std::string& out, const ReferenceOptions& o) {
+    const Scene scene = load_scene(scene_file);
+    const auto meshes = build_scene_meshes(scene);
+    ReferenceProvider provider(cache_dir(o), o.settings);
+    const bool terminal = isatty(STDERR_FILENO);
+    const ReferenceEntry& entry = provider.get(scene, meshes, o.width, o.height, [&](double fraction) {
+        if (terminal) fmt::print(stderr, "\rray-tracing {} {}x{}: {:3.0f}%", scene.name, o.width, o.height, 100.0 * fraction);
+    });
+    if (terminal) fmt::print(stderr, "\r\033[K");
+    const fs::path dir = out.empty() ? fs::path("results") / "reference" : fs::path(out);
+    fs::create_directories(dir);
+    const std::string stem = fmt::format("{}_{}x{}", scene.name, o.width, o.height);
+    write_exr(dir / (stem + ".exr"), entry.images.radiance);
+    write_png_srgb(dir / (stem + ".png"), entry.images.radiance);
+    write_exr(dir / (stem + ".variance.exr"), entry.images.variance);
+    write_exr(dir / (stem + ".visibility.exr"), entry.images.visibility);
+    fmt::print("reference {} {}x{}: {} light x {} pixel samples, {} shadow rays, {:.2f} s{}\n", scene.name, o.width,
+               o.height, o.settings.light_samples, o.settings.pixel_samples, entry.images.shadow_rays,
+               entry.images.seconds, entry.from_cache ? " (from cache, key " + entry.key + ")" : "");
+    fmt::print("images: {}/{}.{{exr,png,variance.exr,visibility.exr}}\n", fs::absolute(dir).string(), stem);
+    return kExitOk;
+}
+
+int bench_reference(const fs::path& scene_file, const ReferenceOptions& o) {
+    const Scene scene = load_scene(scene_file);
+    const auto meshes = build_scene_meshes(scene);
+    fmt::print(stderr, "benchmarking shadow rays on {} at {}x{} ({} light x {} pixel samples)...\n", scene.name, o.width,
+               o.height, o.settings.light_samples, o.settings.pixel_samples);
+    const ShadowRayBenchmark b = benchmark_shadow_rays(scene, meshes, o.width, o.height, o.settings);
+    fmt::print("| renderer | shadow rays/s |\n|---|---:|\n");
+    fmt::print("| canopy reference | {:.3e} |\n| bare rtcOccluded1 loop | {:.3e} |\n", b.reference_rays_per_second,
+               b.bare_rays_per_second);
+    fmt::print("\nratio reference / bare: {:.3f} (target >= 0.80), over {} shadow rays, {} threads\n", b.ratio, b.rays,
+               std::thread::hardware_concurrency());
+    return kExitOk;
+}
+
+int run(const fs::path& config, const std::string& out, bool quick, const std::string& device, bool progress,
+        bool with_reference, const ReferenceOptions& reference_options) {
     const TechniqueRegistry& registry = TechniqueRegistry::instance();
     // Everything is checked (config, scenes, meshes, device support) before anything is written.
     const Experiment experiment = load_experiment(config, registry);
@@ -57,6 +113,8 @@ int run(const fs::path& config, const std::string& out, bool quick, const std::s
     options.out_dir = out.empty() ? default_out_dir(experiment.name) : fs::path(out);
     options.quick = quick;
     options.show_progress = progress;
+    options.reference = with_reference;
+    options.reference_cache_dir = cache_dir(reference_options);
     fmt::print(stderr, "canopy: {} cases on {} ({}); writing to {}\n", prepared.cases.size(), gpu.info().name,
                gpu.info().driver_info, options.out_dir.string());
     install_interrupt_handler();
@@ -87,16 +145,47 @@ int main(int argc, char** argv) {
     app.footer("Exit codes: 0 success, 1 a case failed (e.g. NaN pixels), 2 bad input (the message names file:line),\n"
                "130 interrupted (finished cases are kept). Set CANOPY_VALIDATION=1 for Vulkan validation layers.");
 
-    std::string config_path, out_dir, device;
-    bool quick = false, no_progress = false;
+    std::string config_path, out_dir, device, scene_path;
+    bool quick = false, no_progress = false, no_reference = false;
+    ReferenceOptions reference_options;
+    auto add_reference_options = [&](CLI::App* cmd, bool with_size) {
+        if (with_size) {
+            cmd->add_option("--width", reference_options.width, "image width")->capture_default_str()->check(CLI::Range(1, 8192));
+            cmd->add_option("--height", reference_options.height, "image height")->capture_default_str()->check(CLI::Range(1, 8192));
+            cmd->add_option("--light-samples", reference_options.settings.light_samples,
+                            "shadow rays per pixel sample towards an area light")->capture_default_str()->check(CLI::Range(1, 65536));
+            cmd->add_option("--pixel-samples", reference_options.settings.pixel_samples, "sub-pixel samples per pixel")
+                ->capture_default_str()->check(CLI::Range(1, 1024));
+        }
+        cmd->add_option("--reference-cache", reference_options.cache_dir,
+                        "reference cache folder (default $CANOPY_CACHE_DIR/reference or results/cache/reference)");
+        cmd->add_flag("--no-cache", reference_options.no_cache, "neither read nor write the reference cache");
+    };
     CLI::App* run_cmd = app.add_subcommand("run", "Run an experiment: scenes x techniques x parameters x resolutions.");
     run_cmd->add_option("experiment", config_path, "experiment TOML, e.g. configs/experiments/default.toml")->required();
     run_cmd->add_option("--out", out_dir, "output folder (default results/runs/<date>-<experiment>/)");
     run_cmd->add_flag("--quick", quick, "1 warm-up and 3 measured frames per case, for smoke tests");
     run_cmd->add_option("--device", device, "Vulkan device: index or part of its name (default: lavapipe)");
     run_cmd->add_flag("--no-progress", no_progress, "no progress bar or lines on stderr");
-    run_cmd->footer("Writes results.json (every sample, statistics, parameters, environment), results.csv, results.md\n"
-                    "and per case an EXR (linear float) and a PNG (sRGB) into the output folder.");
+    run_cmd->add_flag("--no-reference", no_reference, "skip the ray-traced reference and the error columns");
+    add_reference_options(run_cmd, false);
+    run_cmd->footer("Writes results.json (every sample, statistics, parameters, environment, errors), results.csv,\n"
+                    "results.md, and per case an EXR (linear float), a PNG (sRGB), an absolute-error heat map and a\n"
+                    "FLIP map, plus the reference images, into the output folder. The reference's sample counts come\n"
+                    "from the experiment's [reference] table; references are cached by content.");
+
+    CLI::App* reference_cmd = app.add_subcommand("reference", "Ray-trace the ground-truth image of a scene with Embree.");
+    reference_cmd->add_option("scene", scene_path, "scene TOML, e.g. configs/scenes/spheres.toml")->required();
+    reference_cmd->add_option("--out", out_dir, "output folder (default results/reference/)");
+    add_reference_options(reference_cmd, true);
+
+    CLI::App* bench_cmd = app.add_subcommand("bench", "Benchmarks (not timed tests).");
+    bench_cmd->require_subcommand(1);
+    CLI::App* bench_reference_cmd = bench_cmd->add_subcommand(
+        "reference", "Shadow-ray throughput of the reference renderer vs a bare Embree rtcOccluded1 loop, same rays.");
+    scene_path = std::string(CANOPY_SOURCE_DIR) + "/configs/scenes/spheres.toml";
+    bench_reference_cmd->add_option("scene", scene_path, "scene TOML")->capture_default_str();
+    add_reference_options(bench_reference_cmd, true);
 
     CLI::App* list_cmd = app.add_subcommand("list", "List every technique with its parameters (type, range, default).");
     CLI::App* devices_cmd = app.add_subcommand("devices", "List the Vulkan devices canopy can run on.");
@@ -111,7 +200,9 @@ int main(int argc, char** argv) {
     try {
         if (*list_cmd) return list_techniques();
         if (*devices_cmd) return list_devices();
-        if (*run_cmd) return run(config_path, out_dir, quick, device, !no_progress);
+        if (*run_cmd) return run(config_path, out_dir, quick, device, !no_progress, !no_reference, reference_options);
+        if (*reference_cmd) return reference(scene_path, out_dir, reference_options);
+        if (*bench_reference_cmd) return bench_reference(scene_path, reference_options);
     } catch (const ConfigError& e) {
         fmt::print(stderr, "{}\n", e.formatted());
         return kExitBadInput;

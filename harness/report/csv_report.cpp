@@ -30,6 +30,7 @@ std::string csv_report(const RunRecord& run) {
                       "wall_ms_median,wall_ms_mad,wall_cv";
     for (const auto& name : pass_names) out += fmt::format(",{0}_gpu_ms_median,{0}_gpu_ms_mad", name);
     out += ",technique_memory_bytes,target_memory_bytes,scene_memory_bytes,triangles,shadow_sampler,nonfinite_pixels,"
+           "mae,rmse,psnr_db,max_error,ssim,flip_mean,flip_weighted_median,light_bleeding,over_darkening,penumbra_rmse,"
            "device,commit\n";
     for (const auto& c : run.cases) {
         out += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}", quoted(c.id), quoted(c.scene), quoted(c.technique),
@@ -42,9 +43,15 @@ std::string csv_report(const RunRecord& run) {
                 if (p.name == name) pass = &p;
             out += pass ? fmt::format(",{},{}", pass->stats.median, pass->stats.mad) : std::string(",,");
         }
-        out += fmt::format(",{},{},{},{},{},{},{},{}\n", c.memory.technique_bytes, c.memory.target_bytes,
-                           c.memory.scene_bytes, c.triangles, quoted(c.shadow_sampler), c.nonfinite_pixels,
-                           quoted(run.environment.device.name), quoted(run.environment.git_commit));
+        out += fmt::format(",{},{},{},{},{},{}", c.memory.technique_bytes, c.memory.target_bytes, c.memory.scene_bytes,
+                           c.triangles, quoted(c.shadow_sampler), c.nonfinite_pixels);
+        if (const auto& m = c.image_error)
+            out += fmt::format(",{},{},{},{},{},{},{},{},{},{}", m->mae, m->rmse, m->psnr, m->max_error, m->ssim,
+                               m->flip_mean, m->flip_median_weighted, m->light_bleeding, m->over_darkening,
+                               m->penumbra_rmse);
+        else
+            out += ",,,,,,,,,,";
+        out += fmt::format(",{},{}\n", quoted(run.environment.device.name), quoted(run.environment.git_commit));
     }
     return out;
 }

@@ -4,6 +4,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
+
 namespace canopy {
 
 namespace {
@@ -19,6 +21,42 @@ nlohmann::json stats_json(const SampleStats& s) {
 
 nlohmann::json series_json(const TimingSeries& t) {
     return {{"name", t.name}, {"stats_ms", stats_json(t.stats)}, {"samples_ms", t.samples_ms}};
+}
+
+// NaN (not applicable) and infinities (PSNR of identical images) become null in JSON.
+nlohmann::json metric(double value) { return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr); }
+
+nlohmann::json error_json(const ImageMetrics& m) {
+    return {{"mae", metric(m.mae)},
+            {"rmse", metric(m.rmse)},
+            {"psnr_db", metric(m.psnr)},
+            {"psnr_infinite", std::isinf(m.psnr) && m.psnr > 0},
+            {"max_error", metric(m.max_error)},
+            {"max_error_pixel", {m.max_x, m.max_y}},
+            {"ssim", metric(m.ssim)},
+            {"flip_mean", metric(m.flip_mean)},
+            {"flip_weighted_median", metric(m.flip_median_weighted)},
+            {"nonfinite_pixels", m.nonfinite_pixels},
+            {"light_bleeding", metric(m.light_bleeding)},
+            {"over_darkening", metric(m.over_darkening)},
+            {"penumbra_rmse", metric(m.penumbra_rmse)},
+            {"umbra_pixels", m.umbra_pixels},
+            {"lit_pixels", m.lit_pixels},
+            {"penumbra_pixels", m.penumbra_pixels}};
+}
+
+nlohmann::json reference_json(const ReferenceRecord& r) {
+    return {{"scene", r.scene},
+            {"width", r.resolution.width},
+            {"height", r.resolution.height},
+            {"key", r.key},
+            {"from_cache", r.from_cache},
+            {"seconds", r.seconds},
+            {"shadow_rays", r.shadow_rays},
+            {"light_samples", r.light_samples},
+            {"pixel_samples", r.pixel_samples},
+            {"error_map_scale", r.error_map_scale},
+            {"images", {{"exr", r.image_exr}, {"png", r.image_png}, {"visibility_exr", r.visibility_exr}}}};
 }
 
 nlohmann::json case_json(const CaseResult& c) {
@@ -40,7 +78,9 @@ nlohmann::json case_json(const CaseResult& c) {
             {"triangles", c.triangles},
             {"shadow_sampler", c.shadow_sampler},
             {"nonfinite_pixels", c.nonfinite_pixels},
-            {"images", {{"exr", c.image_exr}, {"png", c.image_png}}}};
+            {"image_error", c.image_error ? error_json(*c.image_error) : nlohmann::json(nullptr)},
+            {"images", {{"exr", c.image_exr}, {"png", c.image_png}, {"error_map_png", c.error_map_png},
+                        {"flip_map_png", c.flip_map_png}}}};
 }
 
 }  // namespace
@@ -48,6 +88,8 @@ nlohmann::json case_json(const CaseResult& c) {
 std::string json_report(const RunRecord& run) {
     nlohmann::json cases = nlohmann::json::array();
     for (const auto& c : run.cases) cases.push_back(case_json(c));
+    nlohmann::json references = nlohmann::json::array();
+    for (const auto& r : run.references) references.push_back(reference_json(r));
     nlohmann::json j = {{"canopy_results_version", 1},
                         {"experiment", run.experiment},
                         {"description", run.description},
@@ -60,6 +102,8 @@ std::string json_report(const RunRecord& run) {
                         {"quick", run.quick},
                         {"planned_cases", run.planned_cases},
                         {"environment", run.environment},
+                        {"reference_enabled", run.reference_enabled},
+                        {"references", references},
                         {"cases", cases}};
     return j.dump(2) + "\n";
 }

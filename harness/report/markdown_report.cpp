@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace canopy {
 
@@ -31,14 +32,31 @@ std::string render(const std::vector<std::string>& header, const std::vector<std
     return out;
 }
 
+// 4 significant digits; "-" where a metric does not apply (NaN), "inf" for identical images.
+std::string metric_cell(double value) {
+    if (std::isnan(value)) return "-";
+    if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
+    return fmt::format("{:.4g}", value);
+}
+
 std::string mib(uint64_t bytes) { return fmt::format("{:.2f}", double(bytes) / (1024.0 * 1024.0)); }
 
 }  // namespace
 
 std::string markdown_table(const RunRecord& run) {
-    const std::vector<std::string> header = {"scene", "resolution", "technique", "parameters", "GPU ms", "± MAD",
-                                             "CV %",  "ratio",      "wall ms",   "passes (GPU ms)", "memory MiB", "status"};
-    const std::vector<bool> right = {false, false, false, false, true, true, true, true, true, false, true, false};
+    std::vector<std::string> header = {"scene", "resolution", "technique", "parameters", "GPU ms", "± MAD",
+                                       "CV %",  "ratio",      "wall ms",   "passes (GPU ms)", "memory MiB"};
+    std::vector<bool> right = {false, false, false, false, true, true, true, true, true, false, true};
+    const bool errors = std::any_of(run.cases.begin(), run.cases.end(), [](const CaseResult& c) { return c.image_error.has_value(); });
+    if (errors) {
+        for (const char* column : {"RMSE", "PSNR dB", "SSIM", "FLIP", "bleeding", "over-dark", "penumbra RMSE"}) {
+            header.push_back(column);
+            right.push_back(true);
+        }
+    }
+    header.push_back("status");
+    right.push_back(false);
+
     std::vector<std::vector<std::string>> rows;
     std::string group;
     double baseline = 0.0;
@@ -51,14 +69,24 @@ std::string markdown_table(const RunRecord& run) {
         std::string passes;
         for (const auto& p : c.passes) passes += fmt::format("{}{} {:.3f}", passes.empty() ? "" : ", ", p.name, p.stats.median);
         const bool timed = c.gpu_frame.stats.count > 0;
-        rows.push_back({c.scene, fmt::format("{}x{}", c.resolution.width, c.resolution.height), c.technique,
-                        c.params_summary.empty() ? "-" : c.params_summary,
-                        timed ? fmt::format("{:.3f}", c.gpu_frame.stats.median) : "-",
-                        timed ? fmt::format("{:.3f}", c.gpu_frame.stats.mad) : "-",
-                        timed ? fmt::format("{:.1f}", 100.0 * c.gpu_frame.stats.cv) : "-",
-                        timed && baseline > 0 ? fmt::format("{:.2f}", c.gpu_frame.stats.median / baseline) : "-",
-                        timed ? fmt::format("{:.3f}", c.wall.stats.median) : "-", passes.empty() ? "-" : passes,
-                        mib(c.memory.technique_bytes), c.ok ? "ok" : "FAILED: " + c.error});
+        std::vector<std::string> row = {
+            c.scene, fmt::format("{}x{}", c.resolution.width, c.resolution.height), c.technique, c.params_changed,
+            timed ? fmt::format("{:.3f}", c.gpu_frame.stats.median) : "-",
+            timed ? fmt::format("{:.3f}", c.gpu_frame.stats.mad) : "-",
+            timed ? fmt::format("{:.1f}", 100.0 * c.gpu_frame.stats.cv) : "-",
+            timed && baseline > 0 ? fmt::format("{:.2f}", c.gpu_frame.stats.median / baseline) : "-",
+            timed ? fmt::format("{:.3f}", c.wall.stats.median) : "-", passes.empty() ? "-" : passes,
+            mib(c.memory.technique_bytes)};
+        if (errors) {
+            if (const auto& m = c.image_error) {
+                for (double v : {m->rmse, m->psnr, m->ssim, m->flip_mean, m->light_bleeding, m->over_darkening, m->penumbra_rmse})
+                    row.push_back(metric_cell(v));
+            } else {
+                row.insert(row.end(), 7, "-");
+            }
+        }
+        row.push_back(c.ok ? "ok" : "FAILED: " + c.error);
+        rows.push_back(std::move(row));
     }
     return render(header, rows, right);
 }
@@ -76,9 +104,20 @@ std::string markdown_report(const RunRecord& run) {
                        run.warmup_frames, run.measured_frames, run.quick ? " (--quick)" : "", run.started_at,
                        run.finished_at.empty() ? "-" : run.finished_at, run.status);
     out += markdown_table(run);
+    if (!run.references.empty()) {
+        out += "\nReferences (Embree, same shading model, area lights integrated):\n\n";
+        for (const auto& r : run.references)
+            out += fmt::format("- {} {}x{}: {} light x {} pixel samples, {} shadow rays, {:.1f} s{}; `{}`\n", r.scene,
+                               r.resolution.width, r.resolution.height, r.light_samples, r.pixel_samples, r.shadow_rays,
+                               r.seconds, r.from_cache ? " (cached)" : "", r.image_png);
+    }
     out += "\nGPU ms: median over measured frames of the time from the first pass's start to the last pass's end "
            "(Vulkan timestamps). ratio: GPU median relative to the first row of the same scene and resolution. "
-           "memory: device memory the technique's own resources take (shadow maps, ...). On lavapipe a GPU time is "
+           "memory: device memory the technique's own resources take (shadow maps, ...). "
+           "Errors are against the ray-traced reference, in linear radiance: RMSE, PSNR (peak 1), SSIM and FLIP over "
+           "the image; bleeding = mean excess luminance over pixels in full umbra in the reference, over-dark = mean "
+           "missing luminance over fully lit pixels, penumbra RMSE = luminance RMSE over pixels with 0 < V < 1. "
+           "The papers define no error metric: these columns are canopy's. On lavapipe a GPU time is "
            "CPU time on a shared machine: compare ratios measured in one run, not absolute times across runs.\n";
     return out;
 }

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "config/experiment.hpp"
+#include "metrics/image_metrics.hpp"
 #include "render/frame_renderer.hpp"
 #include "run/environment.hpp"
 #include "run/statistics.hpp"
@@ -24,7 +25,8 @@ struct CaseResult {
     std::string technique;
     Resolution resolution;
     std::vector<std::pair<std::string, ParamValue>> params;
-    std::string params_summary;
+    std::string params_summary;        // every value
+    std::string params_changed;        // only values that differ from the defaults ("-" if none)
     std::vector<TimingSeries> passes;  // GPU time per pass
     TimingSeries gpu_frame;            // GPU time, first pass start to last pass end
     TimingSeries wall;                 // CPU wall time per frame, submit to completion
@@ -33,8 +35,24 @@ struct CaseResult {
     std::string shadow_sampler;
     std::string image_exr, image_png;  // relative to the run folder
     long long nonfinite_pixels = 0;
+    // Error against the ray-traced reference of the same scene and resolution (when enabled).
+    std::optional<ImageMetrics> image_error;
+    std::string error_map_png, flip_map_png;  // relative to the run folder
     bool ok = true;
     std::string error;                 // why the case failed, when !ok
+};
+
+// The reference a run compared its cases with, per scene and resolution.
+struct ReferenceRecord {
+    std::string scene;
+    Resolution resolution;
+    std::string key;          // cache key (content hash)
+    bool from_cache = false;
+    double seconds = 0;       // render time (when it was rendered, possibly in an earlier run)
+    uint64_t shadow_rays = 0;
+    int light_samples = 0, pixel_samples = 0;
+    double error_map_scale = 0;  // luminance error drawn at the top of the heat maps
+    std::string image_exr, image_png, visibility_exr;
 };
 
 struct RunRecord {
@@ -48,6 +66,8 @@ struct RunRecord {
     std::string started_at, finished_at;  // ISO 8601, UTC
     std::string status = "running";       // running | complete | interrupted | failed
     size_t planned_cases = 0;
+    bool reference_enabled = false;
+    std::vector<ReferenceRecord> references;
     std::vector<CaseResult> cases;
 };
 

@@ -1,16 +1,19 @@
 #include "run/experiment_runner.hpp"
 
 #include "config/experiment_config.hpp"
+#include "metrics/error_maps.hpp"
 #include "report/csv_report.hpp"
 #include "report/image_files.hpp"
 #include "report/json_report.hpp"
 #include "report/markdown_report.hpp"
 #include "run/interrupt.hpp"
 #include "run/progress.hpp"
+#include "run/reference_provider.hpp"
 
 #include <fmt/chrono.h>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -18,9 +21,7 @@ namespace canopy {
 
 namespace {
 
-std::string utc_now() {
-    return fmt::format("{:%Y-%m-%dT%H:%M:%SZ}", fmt::gmtime(std::time(nullptr)));
-}
+std::string utc_now() { return fmt::format("{:%Y-%m-%dT%H:%M:%SZ}", fmt::gmtime(std::time(nullptr))); }
 
 const TechniqueEntry* entry_for(const Experiment& experiment, const std::string& technique) {
     for (const auto& entry : experiment.techniques)
@@ -41,6 +42,48 @@ TimingSeries series(std::string name, std::vector<double> samples) {
     TimingSeries t{std::move(name), std::move(samples), {}};
     t.stats = summarize(t.samples_ms);
     return t;
+}
+
+// "kernel=5 pattern=poisson": the values that differ from the technique's defaults.
+std::string changed_params(const Technique& technique, const ParamSet& params) {
+    std::string out;
+    const auto specs = technique.params();
+    for (const auto& [name, value] : params.values()) {
+        auto spec = std::find_if(specs.begin(), specs.end(), [&](const ParamSpec& s) { return s.name == name; });
+        if (spec != specs.end() && to_string(spec->default_value) == to_string(value)) continue;
+        out += fmt::format("{}{}={}", out.empty() ? "" : " ", name, to_string(value));
+    }
+    return out.empty() ? "-" : out;
+}
+
+CaseResult case_header(const Case& c, const Scene& scene, const Technique& technique) {
+    CaseResult result;
+    result.id = c.id;
+    result.scene = scene.name;
+    result.technique = c.technique;
+    result.resolution = c.resolution;
+    result.params = c.params.values();
+    result.params_summary = c.params.summary();
+    result.params_changed = changed_params(technique, c.params);
+    return result;
+}
+
+// Heat maps of every case of one reference share one scale: half the reference's 99th
+// percentile luminance, so they can be compared side by side.
+double error_map_scale(const Image& reference) {
+    std::vector<float> luminance;
+    luminance.reserve(size_t(reference.width) * size_t(reference.height));
+    for (int y = 0; y < reference.height; ++y)
+        for (int x = 0; x < reference.width; ++x) luminance.push_back(reference.luminance(x, y));
+    if (luminance.empty()) return 1.0;
+    const size_t k = size_t(0.99 * double(luminance.size() - 1));
+    std::nth_element(luminance.begin(), luminance.begin() + std::ptrdiff_t(k), luminance.end());
+    const double scale = 0.5 * double(luminance[k]);
+    return scale > 0.0 ? scale : 1.0;
+}
+
+std::string reference_stem(const Scene& scene, const Resolution& r) {
+    return fmt::format("reference_{}_{}x{}", scene.name, r.width, r.height);
 }
 
 void write_reports(const std::filesystem::path& dir, const RunRecord& run) {
@@ -73,14 +116,7 @@ PreparedExperiment prepare_experiment(const Experiment& experiment, const Techni
 CaseResult measure_case(const Case& c, const Scene& scene, const std::vector<TriangleMesh>& meshes,
                         const Technique& technique, const GpuContext& gpu, int warmup_frames, int measured_frames,
                         Image* image_out) {
-    CaseResult result;
-    result.id = c.id;
-    result.scene = scene.name;
-    result.technique = c.technique;
-    result.resolution = c.resolution;
-    result.params = c.params.values();
-    result.params_summary = c.params.summary();
-
+    CaseResult result = case_header(c, scene, technique);
     FrameRenderer renderer(gpu, scene, meshes, uint32_t(c.resolution.width), uint32_t(c.resolution.height),
                            technique.plan(c.params));
     for (int i = 0; i < warmup_frames && !interrupt_requested(); ++i) renderer.render();
@@ -123,41 +159,87 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
     run.measured_frames = options.quick ? std::min(experiment.measured_frames, 3) : experiment.measured_frames;
     run.started_at = utc_now();
     run.planned_cases = prepared.cases.size();
+    run.reference_enabled = options.reference && experiment.reference_enabled;
 
-    std::filesystem::create_directories(options.out_dir / "images");
-    write_reports(options.out_dir, run);
+    const std::filesystem::path& out = options.out_dir;
+    std::filesystem::create_directories(out / "images");
+    write_reports(out, run);
 
+    ReferenceProvider references(options.reference_cache_dir, experiment.reference);
     Progress progress(prepared.cases.size());
     for (size_t i = 0; i < prepared.cases.size() && !interrupt_requested(); ++i) {
         const Case& c = prepared.cases[i];
-        const std::string label = fmt::format("{} {}x{} {} {}", experiment.scenes[c.scene_index].name,
-                                              c.resolution.width, c.resolution.height, c.technique, c.params.summary());
-        if (options.show_progress) progress.start_case(i, label);
+        const Scene& scene = experiment.scenes[c.scene_index];
+        const Technique& technique = *registry.find(c.technique);
+        const std::string label = fmt::format("{} {}x{} {} {}", scene.name, c.resolution.width, c.resolution.height,
+                                              c.technique, changed_params(technique, c.params));
         const auto start = std::chrono::steady_clock::now();
+
+        // The reference first, so a case's record is complete when it is written.
+        const ReferenceEntry* reference = nullptr;
+        if (run.reference_enabled) {
+            const std::string stem = reference_stem(scene, c.resolution);
+            if (options.show_progress) progress.start_case(i, "ray-tracing " + stem);
+            reference = &references.get(scene, prepared.meshes[c.scene_index], c.resolution.width, c.resolution.height,
+                                        [&](double fraction) {
+                                            if (options.show_progress)
+                                                progress.update_label(i, fmt::format("ray-tracing {} {:.0f}%", stem, 100.0 * fraction));
+                                        });
+            const bool recorded = std::any_of(run.references.begin(), run.references.end(),
+                                              [&](const ReferenceRecord& r) { return r.key == reference->key; });
+            if (!recorded) {
+                ReferenceRecord record;
+                record.scene = scene.name;
+                record.resolution = c.resolution;
+                record.key = reference->key;
+                record.from_cache = reference->from_cache;
+                record.seconds = reference->images.seconds;
+                record.shadow_rays = reference->images.shadow_rays;
+                record.light_samples = references.settings().light_samples;
+                record.pixel_samples = references.settings().pixel_samples;
+                record.error_map_scale = error_map_scale(reference->images.radiance);
+                record.image_exr = "images/" + stem + ".exr";
+                record.image_png = "images/" + stem + ".png";
+                record.visibility_exr = "images/" + stem + ".visibility.exr";
+                write_exr(out / record.image_exr, reference->images.radiance);
+                write_png_srgb(out / record.image_png, reference->images.radiance);
+                write_exr(out / record.visibility_exr, reference->images.visibility);
+                run.references.push_back(record);
+            }
+        }
+
+        if (options.show_progress) progress.start_case(i, label);
         CaseResult result;
         Image image;
         try {
-            result = measure_case(c, experiment.scenes[c.scene_index], prepared.meshes[c.scene_index],
-                                  *registry.find(c.technique), gpu, run.warmup_frames, run.measured_frames, &image);
+            result = measure_case(c, scene, prepared.meshes[c.scene_index], technique, gpu, run.warmup_frames,
+                                  run.measured_frames, &image);
         } catch (const GpuError& e) {
-            result.id = c.id;
-            result.scene = experiment.scenes[c.scene_index].name;
-            result.technique = c.technique;
-            result.resolution = c.resolution;
-            result.params = c.params.values();
-            result.params_summary = c.params.summary();
+            result = case_header(c, scene, technique);
             result.ok = false;
             result.error = e.what();
         }
         if (interrupt_requested()) break;  // this case did not finish: keep only the finished ones
+
         if (!image.pixels.empty()) {
             result.image_exr = "images/" + c.id + ".exr";
             result.image_png = "images/" + c.id + ".png";
-            write_exr(options.out_dir / result.image_exr, image);
-            write_png_srgb(options.out_dir / result.image_png, image);
+            write_exr(out / result.image_exr, image);
+            write_png_srgb(out / result.image_png, image);
+            if (reference) {
+                const Image& truth = reference->images.radiance;
+                std::vector<float> flip_map;
+                result.image_error = compute_metrics(image, truth, &reference->images.visibility, {}, &flip_map);
+                const auto record = std::find_if(run.references.begin(), run.references.end(),
+                                                 [&](const ReferenceRecord& r) { return r.key == reference->key; });
+                result.error_map_png = "images/" + c.id + ".error.png";
+                result.flip_map_png = "images/" + c.id + ".flip.png";
+                write_png_display(out / result.error_map_png, absolute_error_heatmap(image, truth, record->error_map_scale));
+                write_png_display(out / result.flip_map_png, flip_heatmap(flip_map, image.width, image.height));
+            }
         }
         run.cases.push_back(std::move(result));
-        write_reports(options.out_dir, run);
+        write_reports(out, run);
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (options.show_progress) progress.finish_case(i, label, seconds, run.cases.back().ok);
     }
@@ -166,7 +248,7 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
     run.finished_at = utc_now();
     const bool any_failed = std::any_of(run.cases.begin(), run.cases.end(), [](const CaseResult& c) { return !c.ok; });
     run.status = interrupt_requested() ? "interrupted" : any_failed ? "failed" : "complete";
-    write_reports(options.out_dir, run);
+    write_reports(out, run);
     return run;
 }
 

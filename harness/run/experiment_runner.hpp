@@ -13,6 +13,8 @@ struct RunOptions {
     std::filesystem::path out_dir;
     bool quick = false;          // 1 warm-up and 3 measured frames per case
     bool show_progress = true;
+    bool reference = true;                        // ray-trace references and compute errors (if the experiment enables it)
+    std::filesystem::path reference_cache_dir;    // empty: no cache
 };
 
 // An experiment checked against the device: every case's plan fits its scene and the device,

@@ -36,6 +36,10 @@ void Progress::start_case(size_t index, const std::string& label) {
     else fmt::print(stderr, "[{}/{}] {} ...\n", index + 1, total_, label);
 }
 
+void Progress::update_label(size_t index, const std::string& label) {
+    if (terminal_) draw_bar(index, label);
+}
+
 void Progress::finish_case(size_t index, const std::string& label, double seconds, bool ok) {
     if (terminal_) {
         if (!ok) fmt::print(stderr, "\r\033[K[{}/{}] {} FAILED\n", index + 1, total_, label);

@@ -11,6 +11,8 @@ class Progress {
 public:
     explicit Progress(size_t total_cases);
     void start_case(size_t index, const std::string& label);
+    // Redraws the bar with a new label (terminal only), e.g. for progress within a case.
+    void update_label(size_t index, const std::string& label);
     void finish_case(size_t index, const std::string& label, double seconds, bool ok);
     void done();
 

@@ -32,12 +32,33 @@ case $case in
     "$canopy" list | grep -q "kernel" || fail "list lacks the kernel parameter"
     "$canopy" devices | grep -q "0:" || fail "devices lists no device" ;;
   run)
-    "$canopy" run "$data/experiments/tiny.toml" --out "$work/out" --quick >"$work/stdout" 2>"$work/stderr" || fail "run failed: $(cat "$work/stderr")"
+    "$canopy" run "$data/experiments/tiny.toml" --out "$work/out" --quick --no-cache >"$work/stdout" 2>"$work/stderr" || fail "run failed: $(cat "$work/stderr")"
     cat "$work/stdout"
     for f in results.json results.csv results.md; do [ -s "$work/out/$f" ] || fail "missing $f"; done
-    [ "$(ls "$work/out/images" | grep -c '\.png$')" -eq 3 ] || fail "expected 3 PNGs"
-    [ "$(ls "$work/out/images" | grep -c '\.exr$')" -eq 3 ] || fail "expected 3 EXRs"
-    grep -q "shadow.hard" "$work/stdout" || fail "table lacks shadow.hard" ;;
+    cases=$(ls "$work/out/images" | grep -v -e '^reference_' -e '\.error\.png$' -e '\.flip\.png$')
+    [ "$(grep -c '\.png$' <<<"$cases")" -eq 3 ] || fail "expected 3 case PNGs"
+    [ "$(grep -c '\.exr$' <<<"$cases")" -eq 3 ] || fail "expected 3 case EXRs"
+    [ -s "$work/out/images/reference_tiny_96x64.png" ] || fail "missing the reference image"
+    grep -q "shadow.hard" "$work/stdout" || fail "table lacks shadow.hard"
+    grep -q "penumbra RMSE" "$work/stdout" || fail "table lacks the error columns"
+    [ "$(ls "$work/out/images" | grep -c '\.flip\.png$')" -eq 3 ] || fail "expected 3 FLIP maps"
+    "$canopy" run "$data/experiments/tiny.toml" --out "$work/plain" --quick --no-reference >"$work/stdout" 2>&1 || fail "run --no-reference failed"
+    ! grep -q "penumbra RMSE" "$work/stdout" || fail "--no-reference still shows error columns" ;;
+  reference)
+    args=(--width 64 --height 48 --light-samples 8 --pixel-samples 1 --reference-cache "$work/cache" --out "$work/ref")
+    "$canopy" reference "$data/scenes/tiny.toml" "${args[@]}" >"$work/first" || fail "reference failed"
+    "$canopy" reference "$data/scenes/tiny.toml" "${args[@]}" >"$work/second" || fail "second reference failed"
+    cat "$work/first" "$work/second"
+    ! grep -q "from cache" "$work/first" || fail "first reference claims to come from the cache"
+    grep -q "from cache" "$work/second" || fail "second reference was not taken from the cache"
+    for f in tiny_64x48.exr tiny_64x48.png tiny_64x48.variance.exr tiny_64x48.visibility.exr; do
+      [ -s "$work/ref/$f" ] || fail "missing $f"
+    done ;;
+  bench)
+    "$canopy" bench reference "$data/scenes/tiny.toml" --width 64 --height 48 --light-samples 4 --pixel-samples 1 >"$work/stdout" || fail "bench failed"
+    cat "$work/stdout"
+    grep -Eq "ratio reference / bare: [0-9.]+" "$work/stdout" || fail "bench prints no ratio"
+    grep -q "bare rtcOccluded1 loop" "$work/stdout" || fail "bench prints no bare-loop row" ;;
   interrupt)
     # Many repetitions so the run is still going when SIGINT arrives.
     sed 's/repetitions = 3/repetitions = 100000/' "$data/experiments/tiny.toml" >"$work/long.toml"

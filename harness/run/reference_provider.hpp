@@ -1,0 +1,40 @@
+// The ray-traced reference of each (scene, resolution) an experiment needs: loaded from the
+// content-keyed cache when an identical one was rendered before, otherwise rendered and stored.
+#pragma once
+
+#include "reference/reference_renderer.hpp"
+#include "scene/geometry.hpp"
+
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <string>
+
+namespace canopy {
+
+struct ReferenceEntry {
+    ReferenceImages images;
+    std::string key;
+    bool from_cache = false;
+};
+
+class ReferenceProvider {
+public:
+    // An empty cache_dir disables the cache (every reference is rendered).
+    ReferenceProvider(std::filesystem::path cache_dir, ReferenceSettings settings);
+
+    // `progress` gets the fraction done while a reference is rendered (not called on a cache hit).
+    const ReferenceEntry& get(const Scene& scene, const std::vector<TriangleMesh>& meshes, int width, int height,
+                              const std::function<void(double)>& progress = {});
+    const ReferenceSettings& settings() const { return settings_; }
+
+private:
+    std::filesystem::path cache_dir_;
+    ReferenceSettings settings_;
+    std::map<std::string, ReferenceEntry> entries_;  // by cache key
+};
+
+// Default cache folder: $CANOPY_CACHE_DIR, else results/cache/reference in the working directory.
+std::filesystem::path default_reference_cache_dir();
+
+}  // namespace canopy
