@@ -181,11 +181,15 @@ GpuContext::GpuContext(const std::string& selector) {
     VkPhysicalDeviceVulkan13Features enable13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
     enable13.dynamicRendering = VK_TRUE;
     enable13.synchronization2 = VK_TRUE;
+    enable13.maintenance4 = features13.maintenance4;  // glslang's Vulkan 1.3 compute shaders use LocalSizeId
     VkPhysicalDeviceFeatures2 enable{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
     enable.pNext = &enable13;
     enable.features.geometryShader = supported.features.geometryShader;
     enable.features.tessellationShader = supported.features.tessellationShader;
     enable.features.fillModeNonSolid = supported.features.fillModeNonSolid;
+    // Prefilter passes write any moment format through one unformatted image2D.
+    enable.features.shaderStorageImageWriteWithoutFormat = supported.features.shaderStorageImageWriteWithoutFormat;
+    storage_write_without_format_ = supported.features.shaderStorageImageWriteWithoutFormat;
 
     float priority = 1.0f;
     VkDeviceQueueCreateInfo queue_info{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};

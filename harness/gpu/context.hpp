@@ -41,6 +41,7 @@ public:
     const DeviceInfo& info() const { return info_; }
     double timestamp_period_ns() const { return timestamp_period_ns_; }
     uint32_t timestamp_valid_bits() const { return timestamp_valid_bits_; }
+    bool storage_write_without_format() const { return storage_write_without_format_; }
 
     uint32_t memory_type(uint32_t type_bits, VkMemoryPropertyFlags wanted) const;
     VkFormatFeatureFlags2 format_features(VkFormat format) const;  // optimal tiling
@@ -61,6 +62,7 @@ private:
     DeviceInfo info_;
     double timestamp_period_ns_ = 1.0;
     uint32_t timestamp_valid_bits_ = 0;
+    bool storage_write_without_format_ = false;
     VkPhysicalDeviceMemoryProperties memory_{};
 };
 

@@ -92,4 +92,17 @@ GraphicsPipeline::GraphicsPipeline(const GpuContext& gpu, const GraphicsPipeline
 
 GraphicsPipeline::~GraphicsPipeline() { vkDestroyPipeline(gpu_.device(), pipeline_, nullptr); }
 
+ComputePipeline::ComputePipeline(const GpuContext& gpu, std::span<const uint32_t> spirv, VkPipelineLayout layout)
+    : gpu_(gpu) {
+    VkShaderModule module = create_module(gpu.device(), spirv);
+    VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+    info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_COMPUTE_BIT, module, "main", nullptr};
+    info.layout = layout;
+    VkResult result = vkCreateComputePipelines(gpu.device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline_);
+    vkDestroyShaderModule(gpu.device(), module, nullptr);
+    vk_check(result, "vkCreateComputePipelines");
+}
+
+ComputePipeline::~ComputePipeline() { vkDestroyPipeline(gpu_.device(), pipeline_, nullptr); }
+
 }  // namespace canopy

@@ -33,4 +33,18 @@ private:
     VkPipeline pipeline_ = VK_NULL_HANDLE;
 };
 
+// Owns one compute VkPipeline.
+class ComputePipeline {
+public:
+    ComputePipeline(const GpuContext& gpu, std::span<const uint32_t> spirv, VkPipelineLayout layout);
+    ~ComputePipeline();
+    ComputePipeline(const ComputePipeline&) = delete;
+    ComputePipeline& operator=(const ComputePipeline&) = delete;
+    VkPipeline handle() const { return pipeline_; }
+
+private:
+    const GpuContext& gpu_;
+    VkPipeline pipeline_ = VK_NULL_HANDLE;
+};
+
 }  // namespace canopy

@@ -13,14 +13,16 @@ namespace canopy {
 
 namespace {
 
-enum PassSlot : size_t { kShadowPass = 0, kLitPass = 1 };
-
 FrameUniforms make_uniforms(const Scene& scene, uint32_t width, uint32_t height, const FramePlan& plan,
                             const std::optional<LightView>& light_view) {
     FrameUniforms u{};
     const Camera& camera = scene.camera;
-    u.view_proj = projection_matrix(camera, float(width) / float(height)) * view_matrix(camera);
+    u.view = view_matrix(camera);
+    u.view_proj = projection_matrix(camera, float(width) / float(height)) * u.view;
+    u.inverse_view_proj = glm::inverse(u.view_proj);
     u.camera_position = glm::vec4(camera.position, 1.0f);
+    const float focal_pixels = 0.5f * float(height) / std::tan(0.5f * glm::radians(camera.fov_y_degrees));
+    u.viewport = glm::vec4(float(width), float(height), focal_pixels, 0.0f);
     u.ambient = glm::vec4(scene.ambient, 0.0f);
 
     const Light& light = scene.shadow_light() ? *scene.shadow_light() : scene.lights.front();
@@ -30,13 +32,15 @@ FrameUniforms make_uniforms(const Scene& scene, uint32_t width, uint32_t height,
     const float second = light.type == LightType::sphere ? light.sphere_radius : light.rect_size.y;
     u.light_size = glm::vec4(light.size(), light.rect_size.x, second, 0.0f);
 
+    const uint32_t map_resolution = plan.shadow_map ? plan.shadow_map->resolution
+                                  : plan.moment_map ? plan.moment_map->resolution : 0;
     if (light_view) {
         u.light_view = light_view->view;
         u.light_proj = light_view->projection;
         const float range = light_view->far_plane - light_view->near_plane;
         u.shadow_depth_range = glm::vec4(light_view->near_plane, light_view->far_plane, 1.0f / range,
                                          light_view->perspective ? 1.0f : 0.0f);
-        const float resolution = float(plan.shadow_map->resolution);
+        const float resolution = float(map_resolution);
         u.shadow_texel = glm::vec4(resolution, 1.0f / resolution, light_view->texel_world, 0.0f);
     }
     for (size_t i = 0; i < 16; ++i) u.technique_params[i / 4][int(i % 4)] = plan.shader_params.values[i];
@@ -80,6 +84,30 @@ std::optional<std::string> unsupported_reason(const GpuContext& gpu, const Scene
             return fmt::format("device '{}' has no depth-compare sampling for {} (needed by hardware PCF)",
                                gpu.info().name, name);
     }
+    if (plan.moment_map) {
+        const Light* light = scene.shadow_light();
+        if (!light) return fmt::format("scene '{}' has no shadow-casting light (casts_shadows = false)", scene.name);
+        const char* name = to_string(plan.moment_map->format);
+        const VkFormatFeatureFlags2 features = gpu.format_features(vk_format(plan.moment_map->format));
+        if (!(features & VK_FORMAT_FEATURE_2_COLOR_ATTACHMENT_BIT))
+            return fmt::format("device '{}' cannot render to moment format {}", gpu.info().name, name);
+        if (!(features & VK_FORMAT_FEATURE_2_SAMPLED_IMAGE_FILTER_LINEAR_BIT))
+            return fmt::format("device '{}' cannot filter moment format {} linearly", gpu.info().name, name);
+        if (!plan.moment_map->prefilter.empty()) {
+            if (!(features & VK_FORMAT_FEATURE_2_STORAGE_IMAGE_BIT))
+                return fmt::format("device '{}' cannot write moment format {} from compute shaders", gpu.info().name, name);
+            if (!gpu.storage_write_without_format())
+                return fmt::format("device '{}' lacks shaderStorageImageWriteWithoutFormat (needed by prefilters)",
+                                   gpu.info().name);
+        }
+        if (plan.needs_area_light && !light->is_area())
+            return fmt::format("scene '{}': this technique needs an area light (rect or sphere) with a size", scene.name);
+    }
+    if (plan.screen_shadow && !plan.shadow_map) return std::string("a screen-shadow pass needs a depth shadow map");
+    const bool compute = (plan.shadow_map && !plan.shadow_map->coarse_filters.empty()) ||
+                         (plan.screen_shadow && !plan.screen_shadow->filters.empty());
+    if (compute && !gpu.storage_write_without_format())
+        return fmt::format("device '{}' lacks shaderStorageImageWriteWithoutFormat (needed by filter passes)", gpu.info().name);
     const VkFormatFeatureFlags2 color = gpu.format_features(LitPass::kColorFormat);
     if (!(color & VK_FORMAT_FEATURE_2_COLOR_ATTACHMENT_BIT))
         return fmt::format("device '{}' cannot render to RGBA32F", gpu.info().name);
@@ -91,8 +119,9 @@ FrameRenderer::FrameRenderer(const GpuContext& gpu, const Scene& scene, const st
     : gpu_(gpu), plan_(plan), background_(scene.background) {
     if (auto reason = unsupported_reason(gpu, scene, plan)) throw GpuError(*reason);
     scene_ = std::make_unique<GpuScene>(gpu, ledger_, scene, meshes);
-    if (plan.shadow_map)
-        light_view_ = compute_light_view(*scene.shadow_light(), scene_bounds(scene, meshes), plan.shadow_map->resolution);
+    if (plan.shadow_map || plan.moment_map)
+        light_view_ = compute_light_view(*scene.shadow_light(), scene_bounds(scene, meshes),
+                                         plan.shadow_map ? plan.shadow_map->resolution : plan.moment_map->resolution);
 
     uniforms_ = Buffer(gpu, ledger_, "frame", sizeof(FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
     FrameUniforms u = make_uniforms(scene, width, height, plan, light_view_);
@@ -103,12 +132,34 @@ FrameRenderer::FrameRenderer(const GpuContext& gpu, const Scene& scene, const st
     if (plan.shadow_map) {
         shadow_pass_ = std::make_unique<ShadowMapPass>(gpu, ledger_, *plan.shadow_map, pipeline_layout_);
         names.push_back("shadow_map");
+        if (!plan.shadow_map->coarse_filters.empty()) {
+            const uint32_t size = plan.shadow_map->resolution;
+            coarse_map_ = std::make_unique<FilterChain>(gpu, ledger_, "technique", shadow_pass_->depth().view(),
+                                                        VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, nullptr, size, size,
+                                                        VK_FORMAT_R32_SFLOAT, plan.shadow_map->coarse_filters);
+            for (size_t i = 0; i < coarse_map_->size(); ++i) names.push_back(coarse_map_->name(i));
+        }
+    }
+    if (plan.moment_map) {
+        moment_pass_ = std::make_unique<MomentMapPass>(gpu, ledger_, *plan.moment_map, pipeline_layout_);
+        names.push_back("moment_map");
+        for (size_t i = 0; i < moment_pass_->filter_count(); ++i) names.push_back(moment_pass_->filter_name(i));
+    }
+    if (plan.screen_shadow) {
+        screen_pass_ = std::make_unique<ScreenShadowPass>(gpu, ledger_, width, height, *plan.screen_shadow,
+                                                          pipeline_layout_, uniforms_.handle(),
+                                                          shadow_pass_->depth().view());
+        names.push_back("screen_shadow");
+        for (size_t i = 0; i < screen_pass_->filter_count(); ++i) names.push_back(screen_pass_->filter_name(i));
     }
     lit_pass_ = std::make_unique<LitPass>(gpu, ledger_, width, height, plan.forward_fragment_spirv, pipeline_layout_);
     names.push_back("lit");
     timer_ = std::make_unique<PassTimer>(gpu, names);
 
-    // Bind the shadow map (or nothing) now that it exists.
+    // Bind the maps the plan asked for, now that they exist.
+    if (moment_pass_) bind_image(3, moment_sampler_, moment_pass_->result(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    if (coarse_map_) bind_image(4, nearest_sampler_, coarse_map_->result(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    if (screen_pass_) bind_image(5, nearest_sampler_, screen_pass_->result(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
     if (shadow_pass_) {
         std::array<VkDescriptorImageInfo, 2> images{{
             {nearest_sampler_, shadow_pass_->depth().view(), VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL},
@@ -146,19 +197,40 @@ FrameRenderer::~FrameRenderer() {
     vkDestroyCommandPool(device, command_pool_, nullptr);
     vkDestroySampler(device, nearest_sampler_, nullptr);
     vkDestroySampler(device, compare_sampler_, nullptr);
+    vkDestroySampler(device, moment_sampler_, nullptr);
     vkDestroyDescriptorPool(device, descriptor_pool_, nullptr);
     vkDestroyPipelineLayout(device, pipeline_layout_, nullptr);
     vkDestroyDescriptorSetLayout(device, set_layout_, nullptr);
 }
 
+void FrameRenderer::bind_image(uint32_t binding, VkSampler sampler, VkImageView view, VkImageLayout layout) {
+    VkDescriptorImageInfo image{sampler, view, layout};
+    VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    write.dstSet = descriptor_set_;
+    write.dstBinding = binding;
+    write.descriptorCount = 1;
+    write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    write.pImageInfo = &image;
+    vkUpdateDescriptorSets(gpu_.device(), 1, &write, 0, nullptr);
+}
+
 void FrameRenderer::create_descriptors() {
     VkDevice device = gpu_.device();
     const VkShaderStageFlags stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
-    std::array<VkDescriptorSetLayoutBinding, 3> bindings{{
-        {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, stages, nullptr},
-        {1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
-        {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
-    }};
+    // Only the bindings this plan uses: some drivers (lavapipe 22.3) read every descriptor of a
+    // bound set, so a layout must not hold bindings that are never written.
+    const VkShaderStageFlags fragment = VK_SHADER_STAGE_FRAGMENT_BIT;
+    std::vector<VkDescriptorSetLayoutBinding> bindings{{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, stages, nullptr}};
+    auto add_sampler = [&](uint32_t binding) {
+        bindings.push_back({binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, fragment, nullptr});
+    };
+    if (plan_.shadow_map) {
+        add_sampler(1);  // depth map, NEAREST
+        add_sampler(2);  // depth map, LINEAR compare
+        if (!plan_.shadow_map->coarse_filters.empty()) add_sampler(4);  // coarse map
+    }
+    if (plan_.moment_map) add_sampler(3);     // moment map, LINEAR
+    if (plan_.screen_shadow) add_sampler(5);  // screen shadow, NEAREST
     VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
     set_info.bindingCount = uint32_t(bindings.size());
     set_info.pBindings = bindings.data();
@@ -173,10 +245,10 @@ void FrameRenderer::create_descriptors() {
     VK_CHECK(vkCreatePipelineLayout(device, &layout_info, nullptr, &pipeline_layout_));
 
     std::array<VkDescriptorPoolSize, 2> sizes{{{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
-                                               {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 2}}};
+                                               {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, uint32_t(bindings.size() - 1)}}};
     VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     pool_info.maxSets = 1;
-    pool_info.poolSizeCount = uint32_t(sizes.size());
+    pool_info.poolSizeCount = bindings.size() > 1 ? 2u : 1u;  // no zero-sized pool entries
     pool_info.pPoolSizes = sizes.data();
     VK_CHECK(vkCreateDescriptorPool(device, &pool_info, nullptr, &descriptor_pool_));
     VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
@@ -198,6 +270,12 @@ void FrameRenderer::create_descriptors() {
         nearest_sampler_ = create_sampler(device, false);
         compare_sampler_ = create_sampler(device, true);
     }
+    if (plan_.moment_map) {
+        VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+        info.magFilter = info.minFilter = VK_FILTER_LINEAR;
+        info.addressModeU = info.addressModeV = info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+        VK_CHECK(vkCreateSampler(device, &info, nullptr, &moment_sampler_));
+    }
 }
 
 void FrameRenderer::record() {
@@ -210,6 +288,33 @@ void FrameRenderer::record() {
         shadow_pass_->record(commands_, *scene_, pipeline_layout_, descriptor_set_);
         timer_->end(commands_, slot);
         ++slot;
+        for (size_t i = 0; coarse_map_ && i < coarse_map_->size(); ++i, ++slot) {
+            timer_->begin(commands_, slot);
+            coarse_map_->record(commands_, i);
+            timer_->end(commands_, slot);
+        }
+    }
+    if (moment_pass_) {
+        timer_->begin(commands_, slot);
+        moment_pass_->record_render(commands_, *scene_, pipeline_layout_, descriptor_set_);
+        timer_->end(commands_, slot);
+        ++slot;
+        for (size_t i = 0; i < moment_pass_->filter_count(); ++i, ++slot) {
+            timer_->begin(commands_, slot);
+            moment_pass_->record_filter(commands_, i);
+            timer_->end(commands_, slot);
+        }
+    }
+    if (screen_pass_) {
+        timer_->begin(commands_, slot);
+        screen_pass_->record_render(commands_, *scene_, pipeline_layout_, descriptor_set_);
+        timer_->end(commands_, slot);
+        ++slot;
+        for (size_t i = 0; i < screen_pass_->filter_count(); ++i, ++slot) {
+            timer_->begin(commands_, slot);
+            screen_pass_->record_filter(commands_, i);
+            timer_->end(commands_, slot);
+        }
     }
     timer_->begin(commands_, slot);
     lit_pass_->record(commands_, *scene_, pipeline_layout_, descriptor_set_, background_);
@@ -256,6 +361,7 @@ MemoryUse FrameRenderer::memory() const {
 }
 
 std::string FrameRenderer::shadow_sampler() const {
+    if (plan_.moment_map) return std::string("linear-") + to_string(plan_.moment_map->format);
     if (!plan_.shadow_map) return "";
     return plan_.shadow_map->compare_sampler ? "compare-linear" : "nearest";
 }

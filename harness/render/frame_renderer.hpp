@@ -8,6 +8,8 @@
 #include "render/gpu_scene.hpp"
 #include "render/light_view.hpp"
 #include "render/lit_pass.hpp"
+#include "render/moment_map_pass.hpp"
+#include "render/screen_shadow_pass.hpp"
 #include "render/shadow_map_pass.hpp"
 
 #include <memory>
@@ -45,12 +47,14 @@ public:
     const std::vector<std::string>& pass_names() const { return timer_->pass_names(); }
     MemoryUse memory() const;
     size_t triangle_count() const { return scene_->triangle_count(); }
-    // "compare-linear" when hardware 2x2 PCF sampling is bound, "nearest" otherwise, "" without a map.
+    // "compare-linear" when hardware 2x2 PCF sampling is bound, "nearest" for a plain depth map,
+    // "linear-<format>" for a moment map, "" without any map.
     std::string shadow_sampler() const;
     const std::optional<LightView>& light_view() const { return light_view_; }
 
 private:
     void create_descriptors();
+    void bind_image(uint32_t binding, VkSampler sampler, VkImageView view, VkImageLayout layout);
     void record();
 
     const GpuContext& gpu_;
@@ -65,8 +69,12 @@ private:
     VkDescriptorSet descriptor_set_ = VK_NULL_HANDLE;
     VkSampler nearest_sampler_ = VK_NULL_HANDLE;
     VkSampler compare_sampler_ = VK_NULL_HANDLE;
+    VkSampler moment_sampler_ = VK_NULL_HANDLE;
     Buffer uniforms_;
     std::unique_ptr<ShadowMapPass> shadow_pass_;
+    std::unique_ptr<MomentMapPass> moment_pass_;
+    std::unique_ptr<FilterChain> coarse_map_;
+    std::unique_ptr<ScreenShadowPass> screen_pass_;
     std::unique_ptr<LitPass> lit_pass_;
     std::unique_ptr<PassTimer> timer_;
     VkCommandPool command_pool_ = VK_NULL_HANDLE;

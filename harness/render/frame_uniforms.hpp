@@ -7,9 +7,12 @@ namespace canopy {
 
 struct FrameUniforms {
     glm::mat4 view_proj;
+    glm::mat4 view;
+    glm::mat4 inverse_view_proj;
     glm::mat4 light_view;
     glm::mat4 light_proj;
     glm::vec4 camera_position;
+    glm::vec4 viewport;            // width, height, vertical focal length in pixels
     glm::vec4 light_position;      // w = light type
     glm::vec4 light_axis;          // w = cos of spot half-angle
     glm::vec4 light_intensity;
@@ -20,7 +23,7 @@ struct FrameUniforms {
     glm::vec4 technique_params[4];
     glm::vec4 sample_offsets[64];
 };
-static_assert(sizeof(FrameUniforms) == 3 * 64 + 8 * 16 + 4 * 16 + 64 * 16, "must match std140 layout");
+static_assert(sizeof(FrameUniforms) == 5 * 64 + 9 * 16 + 4 * 16 + 64 * 16, "must match std140 layout");
 
 struct DrawConstants {
     glm::mat4 model;

@@ -1,11 +1,15 @@
 // The lit pass shared by every shadow technique. A technique's fragment shader includes this
 // file and defines only `float shadow_visibility(ShadowQuery q)`; shading is identical for all.
 #include "frame_uniforms.glsl"
+#include "draw_constants.glsl"
 #include "shading.h"
 #include "shadow_common.h"
 
 layout(set = 0, binding = 1) uniform sampler2D shadow_depth;          // NEAREST, no compare
 layout(set = 0, binding = 2) uniform sampler2DShadow shadow_compare;  // LINEAR depth compare (hardware 2x2 PCF)
+layout(set = 0, binding = 3) uniform sampler2D moment_map;            // LINEAR, prefiltered statistics (MomentMapNeeds)
+layout(set = 0, binding = 4) uniform sampler2D coarse_map;            // NEAREST, ShadowMapNeeds::coarse_filters result
+layout(set = 0, binding = 5) uniform sampler2D screen_shadow;         // NEAREST, ScreenShadowNeeds result
 
 layout(location = 0) in vec3 world_position;
 layout(location = 1) in vec3 world_normal;
@@ -29,6 +33,11 @@ float technique_param(int i) { return frame.technique_params[i / 4][i % 4]; }
 vec2 sample_offset(int i) { vec4 v = frame.sample_offsets[i / 2]; return (i % 2 == 0) ? v.xy : v.zw; }
 float shadow_resolution() { return frame.shadow_texel.x; }
 float shadow_texel_uv() { return frame.shadow_texel.y; }
+// The area light's width for penumbra estimates: mean side of a rect, diameter of a sphere.
+float light_width() {
+    int type = int(frame.light_position.w);
+    return type == LIGHT_SPHERE ? 2.0 * frame.light_size.z : (type == LIGHT_RECT ? 0.5 * (frame.light_size.y + frame.light_size.z) : 0.0);
+}
 
 void main() {
     vec3 n = normalize(world_normal);

@@ -1,10 +1,16 @@
-// The per-frame uniform block and per-draw push constants every pass sees.
-// Must match canopy::FrameUniforms and canopy::DrawConstants (render/frame_uniforms.hpp).
-layout(set = 0, binding = 0, std140) uniform FrameBlock {
+// The per-frame uniform block every pass sees (binding 0 in scene passes; compute filters
+// define FRAME_BINDING to where they bind it). Must match canopy::FrameUniforms.
+#ifndef FRAME_BINDING
+#define FRAME_BINDING 0
+#endif
+layout(set = 0, binding = FRAME_BINDING, std140) uniform FrameBlock {
     mat4 view_proj;            // world -> camera clip
+    mat4 view;                 // world -> camera view space (looking down -z)
+    mat4 inverse_view_proj;    // camera clip -> world
     mat4 light_view;           // world -> light view space (looking down -z)
     mat4 light_proj;           // light view -> light clip
     vec4 camera_position;      // xyz
+    vec4 viewport;             // x = width, y = height (pixels), z = vertical focal length in pixels
     vec4 light_position;       // xyz; w = light type (LIGHT_* in shading.h)
     vec4 light_axis;           // xyz = direction the light travels / faces; w = cos of spot half-angle
     vec4 light_intensity;      // rgb = colour * intensity (W/sr, or W/m^2 for directional)
@@ -15,9 +21,3 @@ layout(set = 0, binding = 0, std140) uniform FrameBlock {
     vec4 technique_params[4];  // technique-defined (ShaderParams::values)
     vec4 sample_offsets[64];   // technique-defined vec2 table, two per vec4 (ShaderParams::offsets)
 } frame;
-
-layout(push_constant) uniform DrawBlock {
-    mat4 model;
-    vec4 normal_matrix[3];     // columns of the inverse-transpose of mat3(model)
-    vec4 albedo;               // rgb
-} draw;

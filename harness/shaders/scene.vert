@@ -2,6 +2,7 @@
 #extension GL_GOOGLE_include_directive : require
 // Camera-space transform of scene geometry for the lit pass.
 #include "frame_uniforms.glsl"
+#include "draw_constants.glsl"
 
 layout(location = 0) in vec3 in_position;
 layout(location = 1) in vec3 in_normal;

@@ -2,6 +2,7 @@
 #extension GL_GOOGLE_include_directive : require
 // Shadow-map pass: geometry seen from the shadow light.
 #include "frame_uniforms.glsl"
+#include "draw_constants.glsl"
 
 layout(location = 0) in vec3 in_position;
 layout(location = 1) in vec3 in_normal;

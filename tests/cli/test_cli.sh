@@ -26,11 +26,16 @@ case $case in
     [ $rc -eq 2 ] || fail "exit code $rc, expected 2"
     grep -q "nope.toml" "$work/stderr" || fail "message does not name the file" ;;
   help)
-    "$canopy" --help | grep -q "run" || fail "--help lists no run command"
-    "$canopy" run --help | grep -q -- "--quick" || fail "run --help lists no --quick"
-    "$canopy" list | grep -q "shadow.pcf" || fail "list lacks shadow.pcf"
-    "$canopy" list | grep -q "kernel" || fail "list lacks the kernel parameter"
-    "$canopy" devices | grep -q "0:" || fail "devices lists no device" ;;
+    # Outputs go to files first: grep -q closing a pipe early would fail the pipeline.
+    "$canopy" --help >"$work/help" && grep -q "run" "$work/help" || fail "--help lists no run command"
+    "$canopy" run --help >"$work/help" && grep -q -- "--quick" "$work/help" || fail "run --help lists no --quick"
+    "$canopy" list >"$work/list" || fail "list failed"
+    for technique in shadow.hard shadow.pcf shadow.pcss shadow.ssss shadow.vsm shadow.esm shadow.gauss-cdf \
+                     shadow.power-cdf shadow.evsm shadow.msm; do
+      grep -q "^$technique\$" "$work/list" || fail "list lacks $technique"
+    done
+    grep -q "kernel" "$work/list" || fail "list lacks the kernel parameter"
+    "$canopy" devices >"$work/devices" && grep -q "0:" "$work/devices" || fail "devices lists no device" ;;
   run)
     "$canopy" run "$data/experiments/tiny.toml" --out "$work/out" --quick --no-cache >"$work/stdout" 2>"$work/stderr" || fail "run failed: $(cat "$work/stderr")"
     cat "$work/stdout"
