@@ -54,29 +54,62 @@ struct Variant {
     std::map<std::string, ParamValue> params;
 };
 
+// Every registered technique with its defaults, plus the settings most likely to break.
 std::vector<Variant> variants() {
-    return {
-        {"shadow.hard", {}},
+    std::vector<Variant> all;
+    for (const Technique* t : TechniqueRegistry::instance().all()) all.push_back({t->name(), {}});
+    const std::vector<Variant> extra = {
         {"shadow.hard", {{"depth_format", std::string("d16")}}},
-        {"shadow.pcf", {}},
         {"shadow.pcf", {{"kernel", 5LL}, {"pattern", std::string("poisson")}}},
         {"shadow.pcf", {{"kernel", 3LL}, {"hardware_2x2", true}}},
         {"shadow.pcf", {{"kernel", 7LL}, {"receiver_plane", false}, {"depth_format", std::string("d16")}}},
+        {"shadow.pcss", {{"blocker_search", 3LL}, {"kernel", 11LL}}},
+        {"shadow.ssss", {{"kernel", 5LL}, {"lazy", false}}},
+        {"shadow.vsm", {{"precision", std::string("fp16")}, {"bleeding_reduction", 0.3}}},
+        {"shadow.esm", {{"log_space", true}}},
+        {"shadow.esm", {{"precision", std::string("fp16")}, {"exponent", 10.0}}},
+        {"shadow.gauss-cdf", {{"exact_erf", true}, {"filter", 1LL}}},
+        {"shadow.power-cdf", {{"precision", std::string("fp16")}}},
+        {"shadow.evsm", {{"components", std::string("2")}, {"precision", std::string("fp16")}}},
+        {"shadow.msm", {{"precision", std::string("fp16")}, {"moment_bias", 6e-5}}},
     };
+    all.insert(all.end(), extra.begin(), extra.end());
+    return all;
+}
+
+// The tiny scene under a small rect light straight above, so every technique applies.
+Scene tiny_scene_with_rect_light() {
+    Scene scene = tiny_scene();
+    Light& light = scene.lights.front();
+    light.type = LightType::rect;
+    light.position = glm::vec3(0.0f, 4.0f, 0.0f);
+    light.direction = glm::vec3(0.0f, -1.0f, 0.0f);
+    light.rect_size = glm::vec2(0.2f);
+    light.intensity = 30.0f;
+    return scene;
+}
+
+std::string describe(const Variant& v) {
+    std::string out = v.technique;
+    for (const auto& [name, value] : v.params) out += " " + name + "=" + to_string(value);
+    return out;
 }
 
 }  // namespace
 
 TEST_CASE("under the occluder is dark and the open floor is lit exactly as Lambert says") {
-    const Scene scene = tiny_scene();
+    const Scene scene = tiny_scene_with_rect_light();
+    const Light& light = scene.lights.front();
     const glm::vec3 under_occluder(0.0f, 0.0f, 0.0f), open_floor(-1.8f, 0.0f, 1.5f);
-    // Directional light straight down: E = intensity on the floor.
-    const float albedo = 0.8f, ambient = 0.05f, irradiance = 2.0f;
+    // Raster techniques light with the rect light's centre: the shading model's point_irradiance.
+    const float albedo = 0.8f, ambient = 0.05f;
+    const float irradiance = shader::point_irradiance(shader::LIGHT_RECT, open_floor, glm::vec3(0, 1, 0), light.position,
+                                                      light.direction, glm::vec3(light.intensity), 1.0f).x;
     const float lit_expected = albedo * (irradiance / shader::PI + ambient);
     const float umbra_expected = albedo * ambient;
     for (const Variant& v : variants()) {
-        CAPTURE(v.technique);
-        CAPTURE(v.params.size());
+        const std::string name = describe(v);
+        CAPTURE(name);
         const Image image = render(scene, v.technique, v.params);
         check_all_finite(image);
         const float lit = luminance_at(image, scene, open_floor);
@@ -99,7 +132,7 @@ TEST_CASE("every light type casts the occluder's shadow") {
         light.rect_size = glm::vec2(0.2f);
         light.sphere_radius = 0.1f;
         CAPTURE(int(type));
-        for (const char* technique : {"shadow.hard", "shadow.pcf"}) {
+        for (const char* technique : {"shadow.hard", "shadow.pcf", "shadow.vsm", "shadow.msm"}) {
             CAPTURE(technique);
             const Image image = render(scene, technique);
             check_all_finite(image);
@@ -118,9 +151,10 @@ TEST_CASE("every light type casts the occluder's shadow") {
 }
 
 TEST_CASE("the same configuration renders identical images twice") {
-    const Scene scene = tiny_scene();
+    const Scene scene = tiny_scene_with_rect_light();
     for (const Variant& v : variants()) {
-        CAPTURE(v.technique);
+        const std::string name = describe(v);
+        CAPTURE(name);
         const Image a = render(scene, v.technique, v.params);
         const Image b = render(scene, v.technique, v.params);
         REQUIRE(a.pixels.size() == b.pixels.size());

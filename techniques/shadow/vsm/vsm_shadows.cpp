@@ -1,0 +1,38 @@
+// shadow.vsm: variance shadow maps.
+#include "core/registry.hpp"
+#include "shaders/two_moments_frag.h"
+#include "shaders/vsm_frag.h"
+#include "../common/prefilter_params.hpp"
+
+namespace canopy {
+namespace {
+
+class VarianceShadows final : public Technique {
+public:
+    std::string name() const override { return "shadow.vsm"; }
+    std::string summary() const override { return "variance shadow maps: Chebyshev bound on prefiltered depth moments"; }
+    std::string paper() const override { return "Donnelly & Lauritzen 2006; Gumbau 2011 eq 2.1-2.2, Table 7.1 'Chebyshev'"; }
+
+    std::vector<ParamSpec> params() const override {
+        auto specs = prefilter_params();
+        specs.push_back(ParamSpec::real("min_variance", 1e-5, 0.0, 0.01,
+                                        "variance floor (normalised depth squared) against numerical acne"));
+        specs.push_back(ParamSpec::real("bleeding_reduction", 0.0, 0.0, 0.95,
+                                        "light-bleeding reduction: visibility below this is cut to 0, the rest rescaled"));
+        return specs;
+    }
+
+    FramePlan plan(const ParamSet& params) const override {
+        FramePlan plan;
+        plan.moment_map = moment_map_needs(params, 2, two_moments_frag, {1.0f, 1.0f, 0.0f, 1.0f});
+        plan.forward_fragment_spirv = vsm_frag;
+        plan.shader_params.values[0] = float(params.real("min_variance"));
+        plan.shader_params.values[1] = float(params.real("bleeding_reduction"));
+        return plan;
+    }
+};
+
+RegisterTechnique<VarianceShadows> registered;
+
+}  // namespace
+}  // namespace canopy
