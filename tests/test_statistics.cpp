@@ -39,3 +39,28 @@ TEST_CASE("a single sample and no samples") {
     CHECK(none.count == 0);
     CHECK(none.median == 0.0);
 }
+
+#include "run/kernel_scaling.hpp"
+
+TEST_CASE("power-law fit recovers the exponent despite a constant offset") {
+    const std::vector<double> widths{3, 7, 11, 15, 21, 31};
+    for (double exponent : {1.0, 2.0, 1.5}) {
+        std::vector<double> times;
+        for (double w : widths) times.push_back(4.0 + 0.25 * std::pow(w, exponent));
+        const PowerFit fit = fit_power_law(widths, times);
+        CAPTURE(exponent);
+        CHECK(fit.exponent == doctest::Approx(exponent).epsilon(0.01));
+        CHECK(fit.offset == doctest::Approx(4.0).epsilon(0.05));
+        CHECK(fit.r_squared > 0.9999);
+    }
+}
+
+TEST_CASE("power-law fit of noisy linear data stays near 1") {
+    const std::vector<double> widths{3, 7, 11, 15, 21, 31};
+    const std::vector<double> noise{0.02, -0.03, 0.01, 0.03, -0.02, 0.01};
+    std::vector<double> times;
+    for (size_t i = 0; i < widths.size(); ++i) times.push_back(2.0 + 0.1 * widths[i] * (1.0 + noise[i]));
+    const PowerFit fit = fit_power_law(widths, times);
+    CHECK(fit.exponent > 0.8);
+    CHECK(fit.exponent < 1.25);
+}

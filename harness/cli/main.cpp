@@ -7,8 +7,11 @@
 #include "core/registry.hpp"
 #include "gpu/context.hpp"
 #include "report/markdown_report.hpp"
+#include "report/paper_report.hpp"
 #include "run/experiment_runner.hpp"
 #include "run/interrupt.hpp"
+#include "run/kernel_scaling.hpp"
+#include "report/atomic_file.hpp"
 
 #include <CLI/CLI.hpp>
 #include <fmt/chrono.h>
@@ -101,8 +104,20 @@ int bench_reference(const fs::path& scene_file, const ReferenceOptions& o) {
     return kExitOk;
 }
 
+int bench_scaling(const ScalingOptions& options, const std::string& device, const std::string& out) {
+    GpuContext gpu(device);
+    const auto series = run_kernel_scaling(TechniqueRegistry::instance(), gpu, options);
+    const std::string report = kernel_scaling_report(series, collect_environment(gpu, ""), options);
+    fmt::print("{}", report);
+    if (!out.empty()) {
+        write_text_atomically(out, report);
+        fmt::print("\nwritten to {}\n", fs::absolute(out).string());
+    }
+    return kExitOk;
+}
+
 int run(const fs::path& config, const std::string& out, bool quick, const std::string& device, bool progress,
-        bool with_reference, const ReferenceOptions& reference_options) {
+        bool with_reference, const ReferenceOptions& reference_options, ImageOutput images) {
     const TechniqueRegistry& registry = TechniqueRegistry::instance();
     // Everything is checked (config, scenes, meshes, device support) before anything is written.
     const Experiment experiment = load_experiment(config, registry);
@@ -114,6 +129,7 @@ int run(const fs::path& config, const std::string& out, bool quick, const std::s
     options.quick = quick;
     options.show_progress = progress;
     options.reference = with_reference;
+    options.images = images;
     options.reference_cache_dir = cache_dir(reference_options);
     fmt::print(stderr, "canopy: {} cases on {} ({}); writing to {}\n", prepared.cases.size(), gpu.info().name,
                gpu.info().driver_info, options.out_dir.string());
@@ -122,7 +138,13 @@ int run(const fs::path& config, const std::string& out, bool quick, const std::s
 
     fmt::print("{}\n", markdown_table(record));
     fmt::print("results: {}\n", fs::absolute(options.out_dir).string());
-    fmt::print("  results.json, results.csv, results.md; images in images/ (EXR linear, PNG sRGB)\n");
+    fmt::print("  results.json, results.csv, results.md{}; images in images/ (EXR linear, PNG sRGB)\n",
+               experiment.paper ? ", paper.md" : "");
+    if (experiment.paper) {
+        fmt::print("\n{} ({}): claims\n", experiment.paper->id, experiment.paper->source);
+        for (const ClaimVerdict& v : judge_claims(*experiment.paper, record))
+            fmt::print("  {:<13} {}\n", !v.decided ? "not measured" : v.holds ? "holds" : "does not hold", v.text);
+    }
     if (record.status == "interrupted") {
         fmt::print(stderr, "canopy: interrupted after {} of {} cases; the finished ones are saved\n", record.cases.size(),
                    record.planned_cases);
@@ -147,6 +169,7 @@ int main(int argc, char** argv) {
 
     std::string config_path, out_dir, device, scene_path;
     bool quick = false, no_progress = false, no_reference = false;
+    std::string images = "all";
     ReferenceOptions reference_options;
     auto add_reference_options = [&](CLI::App* cmd, bool with_size) {
         if (with_size) {
@@ -168,6 +191,9 @@ int main(int argc, char** argv) {
     run_cmd->add_option("--device", device, "Vulkan device: index or part of its name (default: lavapipe)");
     run_cmd->add_flag("--no-progress", no_progress, "no progress bar or lines on stderr");
     run_cmd->add_flag("--no-reference", no_reference, "skip the ray-traced reference and the error columns");
+    run_cmd->add_option("--images", images, "which images to write: all (EXR, PNG, error maps), png, none")
+        ->check(CLI::IsMember({"all", "png", "none"}))
+        ->capture_default_str();
     add_reference_options(run_cmd, false);
     run_cmd->footer("Writes results.json (every sample, statistics, parameters, environment, errors), results.csv,\n"
                     "results.md, and per case an EXR (linear float), a PNG (sRGB), an absolute-error heat map and a\n"
@@ -186,6 +212,16 @@ int main(int argc, char** argv) {
     scene_path = std::string(CANOPY_SOURCE_DIR) + "/configs/scenes/spheres.toml";
     bench_reference_cmd->add_option("scene", scene_path, "scene TOML")->capture_default_str();
     add_reference_options(bench_reference_cmd, true);
+    ScalingOptions scaling;
+    scaling.scene_file = std::string(CANOPY_SOURCE_DIR) + "/configs/scenes/spheres.toml";
+    CLI::App* bench_scaling_cmd = bench_cmd->add_subcommand(
+        "scaling", "Time vs kernel width per shadow technique, fitted exponent (separable ~1, K x K ~2).");
+    bench_scaling_cmd->add_option("scene", scaling.scene_file, "scene TOML")->capture_default_str();
+    bench_scaling_cmd->add_option("--width", scaling.width, "image width")->capture_default_str();
+    bench_scaling_cmd->add_option("--height", scaling.height, "image height")->capture_default_str();
+    bench_scaling_cmd->add_option("--measured", scaling.measured, "measured frames per point")->capture_default_str();
+    bench_scaling_cmd->add_option("--out", out_dir, "also write the Markdown report to this file");
+    bench_scaling_cmd->add_option("--device", device, "Vulkan device: index or part of its name (default: lavapipe)");
 
     CLI::App* list_cmd = app.add_subcommand("list", "List every technique with its parameters (type, range, default).");
     CLI::App* devices_cmd = app.add_subcommand("devices", "List the Vulkan devices canopy can run on.");
@@ -200,9 +236,12 @@ int main(int argc, char** argv) {
     try {
         if (*list_cmd) return list_techniques();
         if (*devices_cmd) return list_devices();
-        if (*run_cmd) return run(config_path, out_dir, quick, device, !no_progress, !no_reference, reference_options);
+        if (*run_cmd)
+            return run(config_path, out_dir, quick, device, !no_progress, !no_reference, reference_options,
+                       images == "none" ? ImageOutput::none : images == "png" ? ImageOutput::png : ImageOutput::all);
         if (*reference_cmd) return reference(scene_path, out_dir, reference_options);
         if (*bench_reference_cmd) return bench_reference(scene_path, reference_options);
+        if (*bench_scaling_cmd) return bench_scaling(scaling, device, out_dir);
     } catch (const ConfigError& e) {
         fmt::print(stderr, "{}\n", e.formatted());
         return kExitBadInput;

@@ -1,11 +1,13 @@
 // An experiment: scenes x techniques x parameter values x resolutions, with timing settings.
 #pragma once
 
+#include "config/paper_comparison.hpp"
 #include "core/param.hpp"
 #include "reference/reference_settings.hpp"
 #include "scene/scene.hpp"
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,6 +40,8 @@ struct Experiment {
     // The ray-traced reference every case's image is compared with ([reference] table).
     bool reference_enabled = true;
     ReferenceSettings reference{64, 4, 1, 0};  // 64 light samples x 4 pixel samples = 256 shadow rays per pixel
+    // The paper table this experiment reproduces ([paper]), if any.
+    std::optional<PaperComparison> paper;
     // Hash of the experiment file and every scene file it uses (hex), for the results record.
     std::string config_hash;
 };

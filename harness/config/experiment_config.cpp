@@ -1,6 +1,7 @@
 #include "config/experiment_config.hpp"
 
 #include "config/scene_config.hpp"
+#include "config/paper_config.hpp"
 #include "config/toml_reader.hpp"
 
 #include <fmt/format.h>
@@ -79,17 +80,6 @@ std::vector<Resolution> read_resolutions(TomlReader& reader, std::vector<Resolut
         resolutions.push_back({int(width), int(height)});
     }
     return resolutions;
-}
-
-ParamValue to_param_value(const toml::node& node) {
-    if (const auto* integer = node.as_integer()) return integer->get();
-    if (const auto* real = node.as_floating_point()) return real->get();
-    if (const auto* boolean = node.as_boolean()) return boolean->get();
-    return node.as_string()->get();
-}
-
-bool is_param_scalar(const toml::node& node) {
-    return node.is_integer() || node.is_floating_point() || node.is_boolean() || node.is_string();
 }
 
 // Reads [technique.params]: each value a scalar or an array of scalars (a sweep). Every value is
@@ -191,6 +181,7 @@ Experiment load_experiment(const std::filesystem::path& file, const TechniqueReg
     std::optional<TomlReader> section = top.get_table("experiment", "[experiment]");
     std::vector<TomlReader> technique_sections = top.get_tables("technique", "[[technique]]");
     std::optional<TomlReader> reference_section = top.get_table("reference", "[reference]");
+    std::optional<TomlReader> paper_section = top.get_table("paper", "[paper]");
     top.finish();
     if (!section)
         throw ConfigError(file, 0, "missing the [experiment] section",
@@ -215,6 +206,7 @@ Experiment load_experiment(const std::filesystem::path& file, const TechniqueReg
     experiment.warmup_frames = int(warmup);
     experiment.measured_frames = int(repetitions);
     if (reference_section) read_reference(*reference_section, experiment);
+    if (paper_section) experiment.paper = read_paper(*paper_section, registry);
 
     std::vector<std::filesystem::path> hashed_files;
     experiment.scenes = read_scenes(*section, hashed_files);

@@ -303,4 +303,15 @@ void TomlReader::finish() const {
     throw ConfigError(file_, key_line, what, hint);
 }
 
+bool is_param_scalar(const toml::node& node) {
+    return node.is_integer() || node.is_floating_point() || node.is_boolean() || node.is_string();
+}
+
+ParamValue to_param_value(const toml::node& node) {
+    if (const auto* integer = node.as_integer()) return integer->get();
+    if (const auto* real = node.as_floating_point()) return real->get();
+    if (const auto* boolean = node.as_boolean()) return boolean->get();
+    return node.as_string()->get();
+}
+
 }  // namespace canopy

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "core/error.hpp"
+#include "core/param.hpp"
 #include "scene/scene.hpp"
 
 #include <toml++/toml.h>
@@ -34,6 +35,10 @@ std::string describe_node(const toml::node& node);
 
 // Whether a vector getter also accepts one number, meaning that number in every component.
 enum class Broadcast { allowed, forbidden };
+
+// A TOML scalar (integer, float, bool, string) as a technique parameter value.
+bool is_param_scalar(const toml::node& node);
+ParamValue to_param_value(const toml::node& node);  // requires is_param_scalar(node)
 
 class TomlReader {
 public:

@@ -6,6 +6,7 @@
 #include "report/image_files.hpp"
 #include "report/json_report.hpp"
 #include "report/markdown_report.hpp"
+#include "report/paper_report.hpp"
 #include "run/interrupt.hpp"
 #include "run/progress.hpp"
 #include "run/reference_provider.hpp"
@@ -86,10 +87,11 @@ std::string reference_stem(const Scene& scene, const Resolution& r) {
     return fmt::format("reference_{}_{}x{}", scene.name, r.width, r.height);
 }
 
-void write_reports(const std::filesystem::path& dir, const RunRecord& run) {
+void write_reports(const std::filesystem::path& dir, const RunRecord& run, const Experiment& experiment) {
     write_json_report(dir / "results.json", run);
     write_csv_report(dir / "results.csv", run);
     write_markdown_report(dir / "results.md", run);
+    if (experiment.paper) write_paper_report(dir / "paper.md", *experiment.paper, run);
 }
 
 }  // namespace
@@ -163,7 +165,7 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
 
     const std::filesystem::path& out = options.out_dir;
     std::filesystem::create_directories(out / "images");
-    write_reports(out, run);
+    write_reports(out, run, experiment);
 
     ReferenceProvider references(options.reference_cache_dir, experiment.reference);
     Progress progress(prepared.cases.size());
@@ -198,12 +200,16 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
                 record.light_samples = references.settings().light_samples;
                 record.pixel_samples = references.settings().pixel_samples;
                 record.error_map_scale = error_map_scale(reference->images.radiance);
-                record.image_exr = "images/" + stem + ".exr";
-                record.image_png = "images/" + stem + ".png";
-                record.visibility_exr = "images/" + stem + ".visibility.exr";
-                write_exr(out / record.image_exr, reference->images.radiance);
-                write_png_srgb(out / record.image_png, reference->images.radiance);
-                write_exr(out / record.visibility_exr, reference->images.visibility);
+                if (options.images != ImageOutput::none) {
+                    record.image_png = "images/" + stem + ".png";
+                    write_png_srgb(out / record.image_png, reference->images.radiance);
+                }
+                if (options.images == ImageOutput::all) {
+                    record.image_exr = "images/" + stem + ".exr";
+                    record.visibility_exr = "images/" + stem + ".visibility.exr";
+                    write_exr(out / record.image_exr, reference->images.radiance);
+                    write_exr(out / record.visibility_exr, reference->images.visibility);
+                }
                 run.references.push_back(record);
             }
         }
@@ -222,24 +228,32 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
         if (interrupt_requested()) break;  // this case did not finish: keep only the finished ones
 
         if (!image.pixels.empty()) {
-            result.image_exr = "images/" + c.id + ".exr";
-            result.image_png = "images/" + c.id + ".png";
-            write_exr(out / result.image_exr, image);
-            write_png_srgb(out / result.image_png, image);
+            const bool pngs = options.images != ImageOutput::none;
+            if (options.images == ImageOutput::all) {
+                result.image_exr = "images/" + c.id + ".exr";
+                write_exr(out / result.image_exr, image);
+            }
+            if (pngs) {
+                result.image_png = "images/" + c.id + ".png";
+                write_png_srgb(out / result.image_png, image);
+            }
             if (reference) {
                 const Image& truth = reference->images.radiance;
                 std::vector<float> flip_map;
                 result.image_error = compute_metrics(image, truth, &reference->images.visibility, {}, &flip_map);
-                const auto record = std::find_if(run.references.begin(), run.references.end(),
-                                                 [&](const ReferenceRecord& r) { return r.key == reference->key; });
-                result.error_map_png = "images/" + c.id + ".error.png";
-                result.flip_map_png = "images/" + c.id + ".flip.png";
-                write_png_display(out / result.error_map_png, absolute_error_heatmap(image, truth, record->error_map_scale));
-                write_png_display(out / result.flip_map_png, flip_heatmap(flip_map, image.width, image.height));
+                if (pngs) {
+                    const auto record = std::find_if(run.references.begin(), run.references.end(),
+                                                     [&](const ReferenceRecord& r) { return r.key == reference->key; });
+                    result.error_map_png = "images/" + c.id + ".error.png";
+                    result.flip_map_png = "images/" + c.id + ".flip.png";
+                    write_png_display(out / result.error_map_png,
+                                      absolute_error_heatmap(image, truth, record->error_map_scale));
+                    write_png_display(out / result.flip_map_png, flip_heatmap(flip_map, image.width, image.height));
+                }
             }
         }
         run.cases.push_back(std::move(result));
-        write_reports(out, run);
+        write_reports(out, run, experiment);
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (options.show_progress) progress.finish_case(i, label, seconds, run.cases.back().ok);
     }
@@ -248,7 +262,7 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
     run.finished_at = utc_now();
     const bool any_failed = std::any_of(run.cases.begin(), run.cases.end(), [](const CaseResult& c) { return !c.ok; });
     run.status = interrupt_requested() ? "interrupted" : any_failed ? "failed" : "complete";
-    write_reports(out, run);
+    write_reports(out, run, experiment);
     return run;
 }
 

@@ -9,10 +9,13 @@
 
 namespace canopy {
 
+enum class ImageOutput { all, png, none };  // EXR + PNG + error maps, PNGs only, nothing
+
 struct RunOptions {
     std::filesystem::path out_dir;
     bool quick = false;          // 1 warm-up and 3 measured frames per case
     bool show_progress = true;
+    ImageOutput images = ImageOutput::all;
     bool reference = true;                        // ray-trace references and compute errors (if the experiment enables it)
     std::filesystem::path reference_cache_dir;    // empty: no cache
 };

@@ -1,0 +1,51 @@
+// What an experiment reproduces from a paper: the paper's table (rows x columns, its numbers),
+// the row that normalises times, and claims to check — so a run can print the paper's numbers
+// and canopy's side by side with a verdict per claim (report/paper_report.hpp).
+#pragma once
+
+#include "core/param.hpp"
+#include "scene/scene.hpp"
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace canopy {
+
+// A case belongs to a row when its technique and every listed parameter match; to a column when
+// its `column_key` value equals the column's label ("screen" = "WxH", "scene" = scene name,
+// otherwise a parameter name).
+struct PaperRow {
+    std::string label;                         // "Chebyshev"
+    std::string technique;                     // "shadow.vsm"
+    std::map<std::string, ParamValue> params;  // subset that must match
+    std::vector<double> values;                // the paper's numbers, one per column (NaN: none)
+    SourceLocation where;
+};
+
+// "left relation right" on a metric, for every column where both rows have cases.
+struct PaperClaim {
+    std::string text;        // the paper's claim in words
+    std::string left, right; // row labels
+    std::string metric = "time";  // "time" (GPU median ms) or an error metric: rmse, psnr, ssim, flip, bleeding, over_darkening, penumbra_rmse
+    std::string relation = "less";  // less | greater | about
+    double tolerance = 0.15; // about: |left/right - 1| <= tolerance
+    std::string column;      // only this column ("" = every column)
+    SourceLocation where;
+};
+
+struct PaperComparison {
+    std::string id;           // "G-T7.1"
+    std::string title;
+    std::string source;       // "Gumbau 2011, Table 7.1, L1928-1935"
+    std::string unit = "fps"; // the paper's numbers: fps (time = 1000/fps) or ms
+    std::string column_key = "screen";
+    std::vector<std::string> columns;
+    std::string baseline;     // row label normalising each column
+    std::vector<PaperRow> rows;
+    std::vector<PaperClaim> claims;
+    std::string notes;        // printed under the table
+};
+
+}  // namespace canopy

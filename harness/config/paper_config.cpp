@@ -1,0 +1,118 @@
+#include "config/paper_config.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace canopy {
+
+namespace {
+
+const std::vector<std::string> kMetrics = {"time", "rmse", "psnr", "ssim", "flip", "bleeding", "over_darkening",
+                                           "penumbra_rmse"};
+const std::vector<std::string> kRelations = {"less", "greater", "about"};
+
+std::string one_of(TomlReader& reader, std::string_view key, const std::string& fallback,
+                   const std::vector<std::string>& allowed) {
+    const std::string value = reader.get_string(key, fallback);
+    if (std::find(allowed.begin(), allowed.end(), value) == allowed.end()) {
+        std::string list;
+        for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
+        const std::string near = closest_match(value, allowed);
+        throw reader.error(key, fmt::format("'{}' is not a valid {}", value, reader.describe_key(key)),
+                           (near.empty() ? "" : fmt::format("did you mean '{}'? ", near)) + "use one of: " + list);
+    }
+    return value;
+}
+
+PaperRow read_row(TomlReader& r, const TechniqueRegistry& registry, size_t columns) {
+    PaperRow row;
+    row.where = r.where();
+    row.label = r.require_string("label", "label = \"Chebyshev\"");
+    row.technique = r.require_string("technique", "technique = \"shadow.vsm\"");
+    if (!registry.find(row.technique)) {
+        const std::string near = closest_match(row.technique, registry.names());
+        throw r.error("technique", fmt::format("unknown technique '{}'", row.technique),
+                      (near.empty() ? "" : fmt::format("did you mean '{}'? ", near)) + "run `canopy list`");
+    }
+    if (auto params = r.get_table("params", "params of paper row '" + row.label + "'")) {
+        for (auto&& [key, value] : params->table()) {
+            if (!is_param_scalar(value))
+                throw params->error_at(value, fmt::format("parameter '{}' must be one value", key.str()), "e.g. precision = \"fp16\"");
+            row.params[std::string(key.str())] = to_param_value(value);
+            params->node(key.str());
+        }
+        params->finish();
+    }
+    if (const toml::node* values = r.node("values")) {
+        const toml::array* array = values->as_array();
+        if (!array) throw r.error_at(*values, "'values' must be a list of numbers", "values = [481, 342, 142]");
+        for (const toml::node& v : *array) {
+            if (v.is_integer()) row.values.push_back(double(v.as_integer()->get()));
+            else if (v.is_floating_point()) row.values.push_back(v.as_floating_point()->get());
+            else throw r.error_at(v, "'values' must hold numbers (nan for a missing one)", "values = [481, 342, nan]");
+        }
+    }
+    if (!row.values.empty() && row.values.size() != columns)
+        throw r.error("values", fmt::format("paper row '{}' has {} values for {} columns", row.label, row.values.size(), columns),
+                      "give one number per column, nan where the paper has none");
+    r.finish();
+    return row;
+}
+
+}  // namespace
+
+PaperComparison read_paper(TomlReader& section, const TechniqueRegistry& registry) {
+    PaperComparison paper;
+    paper.id = section.require_string("id", "id = \"G-T7.1\"");
+    paper.title = section.get_string("title", paper.id);
+    paper.source = section.get_string("source", "");
+    paper.unit = one_of(section, "unit", "fps", {"fps", "ms"});
+    paper.column_key = section.get_string("column_key", "screen");
+    paper.columns = section.get_string_array("columns");
+    if (paper.columns.empty())
+        throw section.error("columns", "[paper] needs its column labels", "columns = [\"512\", \"1024\", \"2048\"]");
+    paper.baseline = section.get_string("baseline", "");
+    paper.notes = section.get_string("notes", "");
+    for (TomlReader& r : section.get_tables("row", "[[paper.row]]")) paper.rows.push_back(read_row(r, registry, paper.columns.size()));
+    if (paper.rows.empty()) throw section.error("row", "[paper] has no [[paper.row]] entries", "add one per row of the paper's table");
+
+    auto has_row = [&](const std::string& label) {
+        return std::any_of(paper.rows.begin(), paper.rows.end(), [&](const PaperRow& r) { return r.label == label; });
+    };
+    std::vector<std::string> labels;
+    for (const auto& r : paper.rows) labels.push_back(r.label);
+    auto check_row = [&](TomlReader& r, std::string_view key, const std::string& label) {
+        if (!has_row(label)) {
+            const std::string near = closest_match(label, labels);
+            throw r.error(key, fmt::format("no paper row is labelled '{}'", label),
+                          near.empty() ? "use a row label" : fmt::format("did you mean '{}'?", near));
+        }
+    };
+    if (!paper.baseline.empty()) check_row(section, "baseline", paper.baseline);
+
+    for (TomlReader& r : section.get_tables("claim", "[[paper.claim]]")) {
+        PaperClaim claim;
+        claim.where = r.where();
+        claim.text = r.require_string("text", "text = \"Gaussian CDF costs the same as VSM\"");
+        claim.left = r.require_string("left", "left = \"Gaussian CDF\"");
+        claim.right = r.require_string("right", "right = \"Chebyshev\"");
+        check_row(r, "left", claim.left);
+        check_row(r, "right", claim.right);
+        claim.metric = one_of(r, "metric", "time", kMetrics);
+        claim.relation = one_of(r, "relation", "less", kRelations);
+        claim.tolerance = r.get_float("tolerance", claim.tolerance);
+        if (claim.tolerance < 0) throw r.error("tolerance", "'tolerance' must not be negative", "tolerance = 0.15");
+        claim.column = r.get_string("column", "");
+        if (!claim.column.empty() && std::find(paper.columns.begin(), paper.columns.end(), claim.column) == paper.columns.end())
+            throw r.error("column", fmt::format("'{}' is not one of the paper's columns", claim.column), "use a label from columns");
+        r.finish();
+        paper.claims.push_back(std::move(claim));
+    }
+    section.finish();
+    return paper;
+}
+
+}  // namespace canopy

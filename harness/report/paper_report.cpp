@@ -1,0 +1,216 @@
+#include "report/paper_report.hpp"
+
+#include "report/atomic_file.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <limits>
+
+namespace canopy {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+std::string column_value(const PaperComparison& paper, const CaseResult& c) {
+    if (paper.column_key == "screen") return fmt::format("{}x{}", c.resolution.width, c.resolution.height);
+    if (paper.column_key == "scene") return c.scene;
+    for (const auto& [name, value] : c.params)
+        if (name == paper.column_key) return to_string(value);
+    return "";
+}
+
+bool in_row(const PaperRow& row, const CaseResult& c) {
+    if (c.technique != row.technique) return false;
+    for (const auto& [name, wanted] : row.params) {
+        bool matched = false;
+        for (const auto& [have_name, have] : c.params)
+            if (have_name == name) matched = to_string(have) == to_string(wanted);
+        if (!matched) return false;
+    }
+    return true;
+}
+
+const CaseResult* find_case(const PaperComparison& paper, const RunRecord& run, const PaperRow& row, size_t column) {
+    for (const CaseResult& c : run.cases)
+        if (c.ok && in_row(row, c) && column_value(paper, c) == paper.columns[column]) return &c;
+    return nullptr;
+}
+
+const PaperRow* row_named(const PaperComparison& paper, const std::string& label) {
+    for (const PaperRow& r : paper.rows)
+        if (r.label == label) return &r;
+    return nullptr;
+}
+
+double paper_time(const PaperComparison& paper, const PaperRow& row, size_t column) {
+    if (row.values.empty()) return kNaN;
+    const double v = row.values[column];
+    return paper.unit == "fps" ? 1000.0 / v : v;
+}
+
+double metric_of(const CaseResult& c, const std::string& metric) {
+    if (metric == "time") return c.gpu_frame.stats.median;
+    if (!c.image_error) return kNaN;
+    const ImageMetrics& m = *c.image_error;
+    if (metric == "rmse") return m.rmse;
+    if (metric == "psnr") return m.psnr;
+    if (metric == "ssim") return m.ssim;
+    if (metric == "flip") return m.flip_mean;
+    if (metric == "bleeding") return m.light_bleeding;
+    if (metric == "over_darkening") return m.over_darkening;
+    if (metric == "penumbra_rmse") return m.penumbra_rmse;
+    return kNaN;
+}
+
+std::string number(double v, const char* spec = "{:.3g}") {
+    if (std::isnan(v)) return "-";
+    if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+    return fmt::format(fmt::runtime(spec), v);
+}
+
+std::string table(const std::vector<std::string>& header, const std::vector<std::vector<std::string>>& rows) {
+    std::string out = "|";
+    for (const auto& h : header) out += " " + h + " |";
+    out += "\n|";
+    for (size_t i = 0; i < header.size(); ++i) out += i == 0 ? "---|" : "---:|";
+    out += "\n";
+    for (const auto& row : rows) {
+        out += "|";
+        for (const auto& cell : row) out += " " + cell + " |";
+        out += "\n";
+    }
+    return out;
+}
+
+}  // namespace
+
+std::vector<ClaimVerdict> judge_claims(const PaperComparison& paper, const RunRecord& run) {
+    std::vector<ClaimVerdict> verdicts;
+    for (const PaperClaim& claim : paper.claims) {
+        ClaimVerdict v;
+        v.text = claim.text;
+        const PaperRow* left = row_named(paper, claim.left);
+        const PaperRow* right = row_named(paper, claim.right);
+        std::string numbers;
+        bool all_hold = true, any = false;
+        for (size_t col = 0; col < paper.columns.size(); ++col) {
+            if (!claim.column.empty() && paper.columns[col] != claim.column) continue;
+            const CaseResult* l = find_case(paper, run, *left, col);
+            const CaseResult* r = find_case(paper, run, *right, col);
+            if (!l || !r) continue;
+            const double a = metric_of(*l, claim.metric), b = metric_of(*r, claim.metric);
+            if (std::isnan(a) || std::isnan(b)) continue;
+            any = true;
+            bool holds = false;
+            if (claim.relation == "less") holds = a < b;
+            else if (claim.relation == "greater") holds = a > b;
+            else holds = b != 0.0 && std::abs(a / b - 1.0) <= claim.tolerance;
+            all_hold = all_hold && holds;
+            numbers += fmt::format("{}{}: {} vs {}{}", numbers.empty() ? "" : "; ", paper.columns[col], number(a, "{:.4g}"),
+                                   number(b, "{:.4g}"),
+                                   claim.relation == "about" && b != 0.0 ? fmt::format(" (ratio {:.2f})", a / b) : "");
+        }
+        v.decided = any;
+        v.holds = any && all_hold;
+        const std::string relation = claim.relation == "about" ? fmt::format("within {:.0f} % of", 100.0 * claim.tolerance)
+                                     : claim.relation == "less" ? "below" : "above";
+        v.because = any ? fmt::format("{} of {} is {} {}'s: {}", claim.metric, claim.left, relation, claim.right, numbers)
+                        : "no measured case for one of the rows";
+        verdicts.push_back(v);
+    }
+    return verdicts;
+}
+
+std::string paper_report(const PaperComparison& paper, const RunRecord& run) {
+    std::string out = fmt::format("# {} — {}\n\n", paper.id, paper.title);
+    if (!paper.source.empty()) out += fmt::format("Source: {}.\n\n", paper.source);
+    const Environment& e = run.environment;
+    out += fmt::format("canopy {} on {} ({}), nproc {}, LP_NUM_THREADS {}, commit {}{}; experiment `{}` (config hash {}); "
+                       "{} warm-up + {} measured frames per case{}.\n\n",
+                       e.canopy_version, e.device.name, e.device.driver_info, e.nproc, e.lp_num_threads, e.git_commit,
+                       e.git_dirty ? " (with uncommitted changes)" : "", run.config_file, e.config_hash,
+                       run.warmup_frames, run.measured_frames, run.quick ? " (--quick)" : "");
+
+    const PaperRow* base = paper.baseline.empty() ? nullptr : row_named(paper, paper.baseline);
+    std::vector<std::string> header{"row"};
+    for (const auto& c : paper.columns) header.push_back(c);
+
+    // Time relative to the baseline row: paper -> canopy.
+    if (base) {
+        std::vector<std::vector<std::string>> rows;
+        for (const PaperRow& row : paper.rows) {
+            std::vector<std::string> cells{row.label};
+            for (size_t col = 0; col < paper.columns.size(); ++col) {
+                const double paper_ratio = paper_time(paper, row, col) / paper_time(paper, *base, col);
+                const CaseResult* mine = find_case(paper, run, row, col);
+                const CaseResult* mine_base = find_case(paper, run, *base, col);
+                const double canopy_ratio = mine && mine_base ? mine->gpu_frame.stats.median / mine_base->gpu_frame.stats.median : kNaN;
+                cells.push_back(fmt::format("{} → **{}**", number(paper_ratio, "{:.2f}"), number(canopy_ratio, "{:.2f}")));
+            }
+            rows.push_back(cells);
+        }
+        out += fmt::format("## Frame time relative to {} (paper → **canopy**)\n\n", paper.baseline);
+        out += table(header, rows);
+        out += fmt::format("\nPaper: time = {}; canopy: median GPU time of all passes (Vulkan timestamps). Ratios "
+                           "compare, absolute times do not: the paper ran on a 2008-2010 GPU, canopy on {}.\n\n",
+                           paper.unit == "fps" ? "1000 / fps" : "ms", e.device.name);
+    }
+
+    // Raw numbers.
+    std::vector<std::vector<std::string>> raw;
+    for (const PaperRow& row : paper.rows) {
+        std::vector<std::string> cells{row.label};
+        for (size_t col = 0; col < paper.columns.size(); ++col) {
+            const CaseResult* mine = find_case(paper, run, row, col);
+            const std::string paper_value = row.values.empty() ? "-" : number(row.values[col], "{:.4g}") + " " + paper.unit;
+            cells.push_back(fmt::format("{} / {}", paper_value,
+                                        mine ? fmt::format("{:.2f} ± {:.2f} ms", mine->gpu_frame.stats.median,
+                                                           mine->gpu_frame.stats.mad)
+                                             : std::string("-")));
+        }
+        raw.push_back(cells);
+    }
+    out += "## Raw numbers (paper / canopy median ± MAD)\n\n" + table(header, raw) + "\n";
+
+    // Error against the ray-traced reference.
+    const bool errors = !run.references.empty();
+    if (errors) {
+        for (const auto& [metric, title] : std::vector<std::pair<std::string, std::string>>{
+                 {"psnr", "PSNR (dB, higher is better)"},
+                 {"bleeding", "light bleeding (mean excess luminance in full umbra, lower is better)"},
+                 {"penumbra_rmse", "penumbra RMSE (luminance, lower is better)"},
+                 {"flip", "FLIP (mean, lower is better)"}}) {
+            std::vector<std::vector<std::string>> rows;
+            for (const PaperRow& row : paper.rows) {
+                std::vector<std::string> cells{row.label};
+                for (size_t col = 0; col < paper.columns.size(); ++col) {
+                    const CaseResult* mine = find_case(paper, run, row, col);
+                    cells.push_back(mine ? number(metric_of(*mine, metric), "{:.4g}") : "-");
+                }
+                rows.push_back(cells);
+            }
+            out += "## canopy: " + title + "\n\n" + table(header, rows) + "\n";
+        }
+        out += "The papers define no error metric: these are canopy's, against an Embree reference with the same "
+               "shading model and the area light integrated.\n\n";
+    }
+
+    const auto verdicts = judge_claims(paper, run);
+    if (!verdicts.empty()) {
+        out += "## Claims\n\n";
+        for (const ClaimVerdict& v : verdicts)
+            out += fmt::format("- **{}** — {} ({})\n", !v.decided ? "not measured" : v.holds ? "holds" : "does not hold",
+                               v.text, v.because);
+        out += "\n";
+    }
+    if (!paper.notes.empty()) out += paper.notes + "\n";
+    return out;
+}
+
+void write_paper_report(const std::filesystem::path& path, const PaperComparison& paper, const RunRecord& run) {
+    write_text_atomically(path, paper_report(paper, run));
+}
+
+}  // namespace canopy

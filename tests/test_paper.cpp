@@ -1,0 +1,166 @@
+// The [paper] table of an experiment: parsing with file:line errors, and claim verdicts.
+#include "config/experiment_config.hpp"
+#include "report/paper_report.hpp"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+using namespace canopy;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path write_experiment(const std::string& name, const std::string& paper_section) {
+    const fs::path dir = fs::temp_directory_path() / "canopy-test-paper";
+    fs::create_directories(dir);
+    const fs::path file = dir / name;
+    std::ofstream(file) << "[experiment]\nscenes = [\"" << CANOPY_TEST_DATA << "/scenes/tiny.toml\"]\n"
+                        << "[[technique]]\nname = \"shadow.hard\"\n[[technique]]\nname = \"shadow.pcf\"\n"
+                        << "[technique.params]\nkernel = [3, 5]\n"
+                        << paper_section;
+    return file;
+}
+
+const std::string kPaper = R"(
+[paper]
+id = "T1"
+unit = "fps"
+column_key = "screen"
+columns = ["96x64"]
+baseline = "hard"
+[[paper.row]]
+label = "hard"
+technique = "shadow.hard"
+values = [400]
+[[paper.row]]
+label = "PCF 3"
+technique = "shadow.pcf"
+params = { kernel = 3 }
+values = [200]
+[[paper.row]]
+label = "PCF 5"
+technique = "shadow.pcf"
+params = { kernel = 5 }
+values = [100]
+[[paper.claim]]
+text = "PCF 5 costs more than PCF 3"
+left = "PCF 5"
+right = "PCF 3"
+relation = "greater"
+[[paper.claim]]
+text = "PCF 3 costs about as much as hard shadows"
+left = "PCF 3"
+right = "hard"
+relation = "about"
+tolerance = 0.1
+[[paper.claim]]
+text = "PCF 5 is closer to the truth in the penumbra than hard shadows"
+left = "PCF 5"
+right = "hard"
+metric = "penumbra_rmse"
+relation = "less"
+)";
+
+CaseResult fake_case(const std::string& technique, long long kernel, double gpu_ms, double penumbra_rmse) {
+    CaseResult c;
+    c.technique = technique;
+    c.scene = "tiny";
+    c.resolution = {96, 64};
+    c.params = {{"resolution", 1024LL}};
+    if (technique == "shadow.pcf") c.params.push_back({"kernel", kernel});
+    c.gpu_frame.stats.median = gpu_ms;
+    c.gpu_frame.stats.count = 3;
+    ImageMetrics m{};
+    m.penumbra_rmse = penumbra_rmse;
+    c.image_error = m;
+    return c;
+}
+
+}  // namespace
+
+TEST_CASE("a [paper] table is parsed with its rows and claims") {
+    const Experiment e = load_experiment(write_experiment("ok.toml", kPaper), TechniqueRegistry::instance());
+    REQUIRE(e.paper.has_value());
+    CHECK(e.paper->id == "T1");
+    REQUIRE(e.paper->rows.size() == 3);
+    CHECK(e.paper->rows[1].params.at("kernel") == ParamValue(3LL));
+    CHECK(e.paper->rows[2].values == std::vector<double>{100});
+    REQUIRE(e.paper->claims.size() == 3);
+    CHECK(e.paper->claims[2].metric == "penumbra_rmse");
+}
+
+TEST_CASE("claims are judged per column from canopy's numbers") {
+    const Experiment e = load_experiment(write_experiment("judge.toml", kPaper), TechniqueRegistry::instance());
+    RunRecord run;
+    run.cases = {fake_case("shadow.hard", 0, 10.0, 0.06), fake_case("shadow.pcf", 3, 10.5, 0.04),
+                 fake_case("shadow.pcf", 5, 20.0, 0.03)};
+    auto verdicts = judge_claims(*e.paper, run);
+    REQUIRE(verdicts.size() == 3);
+    CHECK(verdicts[0].decided);
+    CHECK(verdicts[0].holds);   // 20 > 10.5
+    CHECK(verdicts[1].holds);   // 10.5 / 10 within 10 %
+    CHECK(verdicts[2].holds);   // 0.03 < 0.06
+    run.cases[1].gpu_frame.stats.median = 12.0;  // now 20 % above hard
+    verdicts = judge_claims(*e.paper, run);
+    CHECK_FALSE(verdicts[1].holds);
+    run.cases.pop_back();  // no PCF 5 case: undecided, never "holds"
+    verdicts = judge_claims(*e.paper, run);
+    CHECK_FALSE(verdicts[0].decided);
+    CHECK_FALSE(verdicts[0].holds);
+
+    const std::string report = paper_report(*e.paper, run);
+    CHECK(report.find("# T1") != std::string::npos);
+    CHECK(report.find("2.00 → **1.20**") != std::string::npos);  // paper 400 vs 200 fps: twice the time
+}
+
+TEST_CASE("paper table errors name file:line and the fix") {
+    auto error_of = [](const std::string& name, const std::string& section) {
+        try {
+            load_experiment(write_experiment(name, section), TechniqueRegistry::instance());
+        } catch (const ConfigError& e) {
+            return e.formatted();
+        }
+        return std::string("no error");
+    };
+    const std::string wrong_label = error_of("label.toml", R"(
+[paper]
+id = "T"
+columns = ["96x64"]
+baseline = "hrad"
+[[paper.row]]
+label = "hard"
+technique = "shadow.hard"
+)");
+    CHECK(wrong_label.find("label.toml:") != std::string::npos);
+    CHECK(wrong_label.find("did you mean 'hard'") != std::string::npos);
+
+    const std::string wrong_count = error_of("count.toml", R"(
+[paper]
+id = "T"
+columns = ["a", "b"]
+[[paper.row]]
+label = "hard"
+technique = "shadow.hard"
+values = [1, 2, 3]
+)");
+    CHECK(wrong_count.find("3 values for 2 columns") != std::string::npos);
+
+    const std::string wrong_relation = error_of("relation.toml", R"(
+[paper]
+id = "T"
+columns = ["a"]
+[[paper.row]]
+label = "hard"
+technique = "shadow.hard"
+[[paper.claim]]
+text = "x"
+left = "hard"
+right = "hard"
+relation = "smaller"
+)");
+    CHECK(wrong_relation.find("relation.toml:20") != std::string::npos);
+    CHECK(wrong_relation.find("less") != std::string::npos);
+}
