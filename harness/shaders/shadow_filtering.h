@@ -81,7 +81,7 @@ CANOPY_FN float reduce_light_bleeding(float p, float amount) {
 // ESM (Annen et al. 2008; Salvi 2008): visibility = E[exp(c z)] * exp(-c z_r), clamped to 1.
 // Both forms evaluate exp(min(ln E[exp(c z)] - c z_r, 0)), so the clamp to 1 happens before the
 // exponential (no overflow) and the result is exactly non-increasing in z_r for c >= 0.
-// The exponent is also floored at -87 (exp(-87) = 1.6e-38, the smallest normal float).
+// The exponent is also floored at -87 (exp(-87) = 1.6e-38, just above the smallest normal float).
 // Linear storage overflows when c z > ln(FLT_MAX) = 88.72 (fp32) or ln(65504) = 11.09 (fp16):
 // an infinite stored value is read as FLT_MAX (ln = 88.72), which keeps the result finite and
 // monotone but not meaningful -- keep c below those bounds, or use log storage.
@@ -316,7 +316,7 @@ CANOPY_FN float sf_bounded_div(float n, float d, float limit) {
 // definite, so B' is for every valid b. (Blending is linear and the map from [-1, 1] moments to
 // [0, 1] moments is affine, so this is exactly their bias.) Measured on two-depth mixtures it is
 // also the best conditioned of the targets tried -- the reconstruction is non-increasing in z_r
-// to within 2e-6 with fp32 or unorm16 moments, against 1e-4..3e-3 for the uniform distribution's
+// to within 2.5e-6 with fp32 or unorm16 moments, against 1e-4..3e-3 for the uniform distribution's
 // moments (1/2, 1/3, 1/4, 1/5) and 6e-4..2e-3 for (0.5, 0.5, 0.5, 0.5).
 // alpha: ~3e-5 for fp32 moments, ~6e-5 for 16-bit unorm (the paper's values). Half floats
 // (rgba16f) keep only 11 bits over [0.5, 1] and reconstruct poorly: use rgba16 unorm for MSM.
