@@ -72,6 +72,7 @@ std::vector<Variant> variants() {
         {"shadow.power-cdf", {{"precision", std::string("fp16")}}},
         {"shadow.evsm", {{"components", std::string("2")}, {"precision", std::string("fp16")}}},
         {"shadow.msm", {{"precision", std::string("fp16")}, {"moment_bias", 6e-5}}},
+        {"shadow.msm", {{"precision", std::string("unorm16")}, {"moment_bias", 6e-5}}},
     };
     all.insert(all.end(), extra.begin(), extra.end());
     return all;

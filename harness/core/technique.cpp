@@ -12,6 +12,7 @@ const char* to_string(MomentFormat format) {
         case MomentFormat::rg32f: return "rg32f";
         case MomentFormat::rgba16f: return "rgba16f";
         case MomentFormat::rgba32f: return "rgba32f";
+        case MomentFormat::rgba16unorm: return "rgba16unorm";
     }
     return "?";
 }
@@ -24,6 +25,7 @@ uint32_t bytes_per_texel(MomentFormat format) {
         case MomentFormat::rg32f: return 8;
         case MomentFormat::rgba16f: return 8;
         case MomentFormat::rgba32f: return 16;
+        case MomentFormat::rgba16unorm: return 8;
     }
     return 0;
 }

@@ -17,8 +17,9 @@ namespace canopy {
 enum class DepthFormat { d16, d32f };
 const char* to_string(DepthFormat format);
 
-// Storage of a moment map's texels: one, two or four channels of 16 or 32-bit float.
-enum class MomentFormat { r16f, r32f, rg16f, rg32f, rgba16f, rgba32f };
+// Storage of a moment map's texels: one, two or four channels of 16 or 32-bit float, or four
+// 16-bit unsigned normalised channels (moment shadow maps' quantised moments).
+enum class MomentFormat { r16f, r32f, rg16f, rg32f, rgba16f, rgba32f, rgba16unorm };
 const char* to_string(MomentFormat format);
 uint32_t bytes_per_texel(MomentFormat format);
 

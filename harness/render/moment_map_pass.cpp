@@ -13,6 +13,7 @@ VkFormat vk_format(MomentFormat format) {
         case MomentFormat::rg32f: return VK_FORMAT_R32G32_SFLOAT;
         case MomentFormat::rgba16f: return VK_FORMAT_R16G16B16A16_SFLOAT;
         case MomentFormat::rgba32f: return VK_FORMAT_R32G32B32A32_SFLOAT;
+        case MomentFormat::rgba16unorm: return VK_FORMAT_R16G16B16A16_UNORM;
     }
     return VK_FORMAT_UNDEFINED;
 }

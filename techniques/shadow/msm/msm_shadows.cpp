@@ -16,8 +16,14 @@ public:
 
     std::vector<ParamSpec> params() const override {
         auto specs = prefilter_params();
+        // Peters & Klein store the quantised moments in 16-bit unorm; rgba16f is offered too.
+        for (ParamSpec& spec : specs)
+            if (spec.name == "precision") {
+                spec.choices = {"fp32", "fp16", "unorm16"};
+                spec.doc = "moment storage: 32-bit float, 16-bit float, or 16-bit unorm (the paper's)";
+            }
         specs.push_back(ParamSpec::real("moment_bias", 3e-5, 0.0, 0.01,
-                                        "blend towards the moments of a uniform distribution (3e-5 for fp32, 6e-5 suits fp16)"));
+                                        "blend towards well-conditioned target moments (3e-5 for fp32, 6e-5 suits 16 bits)"));
         return specs;
     }
 
@@ -26,6 +32,7 @@ public:
         FramePlan plan;
         plan.moment_map = moment_map_needs(params, 4, msm_depth_frag,
                                            {far_moments.x, far_moments.y, far_moments.z, far_moments.w});
+        if (params.choice("precision") == "unorm16") plan.moment_map->format = MomentFormat::rgba16unorm;
         plan.forward_fragment_spirv = msm_frag;
         plan.shader_params.values[0] = float(params.real("moment_bias"));
         return plan;
