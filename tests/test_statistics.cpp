@@ -64,3 +64,13 @@ TEST_CASE("power-law fit of noisy linear data stays near 1") {
     CHECK(fit.exponent > 0.8);
     CHECK(fit.exponent < 1.25);
 }
+
+TEST_CASE("power-law fit keeps the offset non-negative on concave data") {
+    // Sub-linear growth through the origin: an unconstrained fit would invent a negative offset.
+    const std::vector<double> widths{5, 9, 13, 17, 23, 31};
+    std::vector<double> times;
+    for (double w : widths) times.push_back(20.0 * std::pow(w, 0.7));
+    const PowerFit fit = fit_power_law(widths, times);
+    CHECK(fit.offset >= 0.0);
+    CHECK(fit.exponent == doctest::Approx(0.7).epsilon(0.02));
+}

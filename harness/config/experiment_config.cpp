@@ -8,6 +8,7 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <optional>
 #include <set>
 
 namespace canopy {
@@ -28,6 +29,26 @@ constexpr long long kMaxFrames = 1000000;
 const char* const kExperimentExample =
     "[experiment]\n    scenes = [\"../scenes/spheres.toml\"]\n\n    [[technique]]\n    name = \"shadow.pcf\"";
 
+// A scene variant's overrides: its name, and the width of its shadow light (a rect's side, a
+// sphere's diameter: the width penumbra estimates use), e.g. to sweep the light size (Fig 6.9).
+void apply_scene_variant(TomlReader& variant, Scene& scene) {
+    scene.name = variant.get_string("name", scene.name);
+    if (variant.has("light_size")) {
+        const double size = variant.get_float("light_size", 0.0);
+        if (size <= 0.0)
+            throw variant.error("light_size", fmt::format("'light_size' must be positive, got {}", size), "light_size = 0.5");
+        Light* light = nullptr;
+        for (Light& l : scene.lights)
+            if (l.casts_shadows && !light) light = &l;
+        if (!light || !light->is_area())
+            throw variant.error("light_size", fmt::format("scene '{}' has no area light to resize", scene.name),
+                                "light_size applies to a shadow-casting rect or sphere light");
+        if (light->type == LightType::rect) light->rect_size = glm::vec2(float(size));
+        else light->sphere_radius = float(0.5 * size);
+    }
+    variant.finish();
+}
+
 std::vector<Scene> read_scenes(TomlReader& reader, std::vector<std::filesystem::path>& scene_files) {
     const toml::node* node = reader.node("scenes");
     const std::string example = "scenes = [\"../scenes/spheres.toml\"]";
@@ -43,19 +64,33 @@ std::vector<Scene> read_scenes(TomlReader& reader, std::vector<std::filesystem::
 
     const std::filesystem::path folder = reader.file().parent_path();
     std::vector<Scene> scenes;
+    size_t index = 0;
     for (const toml::node& element : *array) {
-        const auto* name = element.as_string();
+        ++index;
+        // A file name, or a variant: { file = "...", name = "...", light_size = 0.5 }.
+        const toml::node* file_node = &element;
+        std::optional<TomlReader> variant;
+        if (const toml::table* table = element.as_table()) {
+            variant.emplace(*table, reader.file(), fmt::format("scenes entry #{}", index));
+            file_node = variant->node("file");
+            if (!file_node)
+                throw variant->error("file", "a scene variant needs 'file'",
+                                     "write it as: { file = \"../scenes/at-at.toml\", name = \"at-at-small\", light_size = 0.4 }");
+        }
+        const auto* name = file_node->as_string();
         if (!name)
-            throw reader.error_at(element, fmt::format("'scenes' must hold file names (strings), got {}",
-                                                       describe_node(element)),
+            throw reader.error_at(*file_node, fmt::format("'scenes' must hold file names (strings) or variant tables, got {}",
+                                                          describe_node(*file_node)),
                                   fmt::format("write it as: {}", example));
         const std::filesystem::path scene_file = (folder / name->get()).lexically_normal();
         std::error_code ignored;
         if (!std::filesystem::is_regular_file(scene_file, ignored))
-            throw reader.error_at(element, fmt::format("scene file '{}' not found (looked for {})", name->get(),
-                                                       scene_file.string()),
+            throw reader.error_at(*file_node, fmt::format("scene file '{}' not found (looked for {})", name->get(),
+                                                          scene_file.string()),
                                   "scene paths are relative to the experiment file's folder");
-        scenes.push_back(load_scene(scene_file));  // its errors carry the scene file's own file:line
+        Scene scene = load_scene(scene_file);  // its errors carry the scene file's own file:line
+        if (variant) apply_scene_variant(*variant, scene);
+        scenes.push_back(std::move(scene));
         scene_files.push_back(scene_file);
     }
     return scenes;

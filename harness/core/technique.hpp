@@ -32,6 +32,7 @@ struct FilterPass {
     int radius = 1;                            // texels on each side of the centre
     bool horizontal = true;
     std::array<float, 4> params{};             // filter-specific
+    int downsample = 1;                        // output is 1/downsample of the input in both axes
 };
 
 // A depth-only shadow map rendered from the scene's shadow light. It stores linear depth

@@ -1,5 +1,8 @@
 #include "render/filter_chain.hpp"
 
+#include "gpu/rendering.hpp"
+
+#include <algorithm>
 #include <array>
 
 namespace canopy {
@@ -9,10 +12,9 @@ namespace {
 struct FilterPushConstants {
     int32_t direction[2];
     int32_t radius;
-    int32_t size;  // width; kept for compatibility with square maps
-    int32_t extent[2];
-    int32_t pass_index;
-    int32_t pad;
+    int32_t downsample;
+    int32_t extent[2];      // output
+    int32_t src_extent[2];  // input
     float params[4];
 };
 
@@ -21,18 +23,28 @@ struct FilterPushConstants {
 FilterChain::FilterChain(const GpuContext& gpu, MemoryLedger& ledger, const std::string& category, VkImageView source,
                          VkImageLayout source_layout, Texture* writable_source, uint32_t width, uint32_t height,
                          VkFormat format, std::vector<FilterPass> passes, const FilterExtras& extras)
-    : gpu_(gpu), passes_(std::move(passes)), width_(width), height_(height), writable_source_(writable_source) {
+    : gpu_(gpu), passes_(std::move(passes)), writable_source_(writable_source) {
     if (passes_.empty()) return;
+    extents_.push_back({width, height});
+    for (const FilterPass& pass : passes_) {
+        const uint32_t f = uint32_t(std::max(pass.downsample, 1));
+        per_pass_images_ = per_pass_images_ || f > 1;
+        extents_.push_back({std::max(extents_.back().width / f, 1u), std::max(extents_.back().height / f, 1u)});
+    }
     const VkImageUsageFlags usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT;
-    images_[0] = Texture(gpu, ledger, category, width, height, format, usage, VK_IMAGE_ASPECT_COLOR_BIT);
-    if (passes_.size() > 1 && !writable_source)
-        images_[1] = Texture(gpu, ledger, category, width, height, format, usage, VK_IMAGE_ASPECT_COLOR_BIT);
+    if (per_pass_images_) {
+        writable_source_ = nullptr;
+        for (size_t i = 0; i < passes_.size(); ++i)
+            images_.emplace_back(gpu, ledger, category, extents_[i + 1].width, extents_[i + 1].height, format, usage,
+                                 VK_IMAGE_ASPECT_COLOR_BIT);
+    } else {
+        images_.emplace_back(gpu, ledger, category, width, height, format, usage, VK_IMAGE_ASPECT_COLOR_BIT);
+        if (passes_.size() > 1 && !writable_source)
+            images_.emplace_back(gpu, ledger, category, width, height, format, usage, VK_IMAGE_ASPECT_COLOR_BIT);
+    }
 
     VkDevice device = gpu.device();
-    VkSamplerCreateInfo sampler{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-    sampler.magFilter = sampler.minFilter = VK_FILTER_NEAREST;
-    sampler.addressModeU = sampler.addressModeV = sampler.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    VK_CHECK(vkCreateSampler(device, &sampler, nullptr, &nearest_));
+    nearest_ = create_sampler(device, VK_FILTER_NEAREST);
 
     const VkShaderStageFlags stage = VK_SHADER_STAGE_COMPUTE_BIT;
     // Only the bindings this chain is given (see FrameRenderer::create_descriptors for why).
@@ -106,6 +118,7 @@ FilterChain::~FilterChain() {
 }
 
 const Texture& FilterChain::output(size_t index) const {
+    if (per_pass_images_) return images_[index];
     if (index % 2 == 0) return images_[0];
     return writable_source_ ? *writable_source_ : images_[1];
 }
@@ -116,11 +129,12 @@ void FilterChain::record(VkCommandBuffer commands, size_t index) const {
     transition(commands, destination, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[index]->handle());
     vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, 1, &sets_[index], 0, nullptr);
-    FilterPushConstants push{{pass.horizontal ? 1 : 0, pass.horizontal ? 0 : 1}, pass.radius, int32_t(width_),
-                             {int32_t(width_), int32_t(height_)}, int32_t(index), 0,
+    const VkExtent2D in = extents_[index], out = extents_[index + 1];
+    FilterPushConstants push{{pass.horizontal ? 1 : 0, pass.horizontal ? 0 : 1}, pass.radius, std::max(pass.downsample, 1),
+                             {int32_t(out.width), int32_t(out.height)}, {int32_t(in.width), int32_t(in.height)},
                              {pass.params[0], pass.params[1], pass.params[2], pass.params[3]}};
     vkCmdPushConstants(commands, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), &push);
-    vkCmdDispatch(commands, (width_ + 7) / 8, (height_ + 7) / 8, 1);
+    vkCmdDispatch(commands, (out.width + 7) / 8, (out.height + 7) / 8, 1);
     transition(commands, destination, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
 }
 

@@ -1,6 +1,7 @@
-// A chain of separable compute passes (FilterPass) over a 2D image: pass 0 reads the source,
-// each later pass reads the previous output; outputs ping-pong between two images. Used for
-// moment-map prefilters, the coarse (min-filtered) shadow map and screen-space blurs.
+// A chain of compute passes (FilterPass) over a 2D image: pass 0 reads the source, each later
+// pass reads the previous output. Same-size outputs ping-pong between two images; a chain with
+// a downsampling pass gets one image per pass instead. Used for moment-map prefilters, the
+// coarse (downsampled, min-filtered) shadow map and screen-space blurs.
 #pragma once
 
 #include "core/technique.hpp"
@@ -41,9 +42,10 @@ private:
 
     const GpuContext& gpu_;
     std::vector<FilterPass> passes_;
-    uint32_t width_, height_;
+    std::vector<VkExtent2D> extents_;  // input extent of pass i is extents_[i], output extents_[i + 1]
     Texture* writable_source_;
-    Texture images_[2];
+    std::vector<Texture> images_;      // two (ping-pong) or one per pass (downsampling chains)
+    bool per_pass_images_ = false;
     VkSampler nearest_ = VK_NULL_HANDLE;
     VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;

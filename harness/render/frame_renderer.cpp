@@ -1,5 +1,6 @@
 #include "render/frame_renderer.hpp"
 
+#include "gpu/rendering.hpp"
 #include "scene/camera.hpp"
 
 #include <fmt/format.h>
@@ -49,19 +50,6 @@ FrameUniforms make_uniforms(const Scene& scene, uint32_t width, uint32_t height,
         u.sample_offsets[i / 2][int(2 * (i % 2) + 1)] = plan.shader_params.offsets[i][1];
     }
     return u;
-}
-
-VkSampler create_sampler(VkDevice device, bool compare) {
-    VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-    info.magFilter = info.minFilter = compare ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
-    info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
-    info.addressModeU = info.addressModeV = info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    info.compareEnable = compare ? VK_TRUE : VK_FALSE;
-    info.compareOp = VK_COMPARE_OP_LESS_OR_EQUAL;  // reference <= stored depth: lit
-    info.maxLod = 0.0f;
-    VkSampler sampler;
-    VK_CHECK(vkCreateSampler(device, &info, nullptr, &sampler));
-    return sampler;
 }
 
 }  // namespace
@@ -267,15 +255,10 @@ void FrameRenderer::create_descriptors() {
     vkUpdateDescriptorSets(device, 1, &write, 0, nullptr);
 
     if (plan_.shadow_map) {
-        nearest_sampler_ = create_sampler(device, false);
-        compare_sampler_ = create_sampler(device, true);
+        nearest_sampler_ = create_sampler(device, VK_FILTER_NEAREST);
+        compare_sampler_ = create_sampler(device, VK_FILTER_LINEAR, true);  // hardware 2x2 PCF
     }
-    if (plan_.moment_map) {
-        VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-        info.magFilter = info.minFilter = VK_FILTER_LINEAR;
-        info.addressModeU = info.addressModeV = info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-        VK_CHECK(vkCreateSampler(device, &info, nullptr, &moment_sampler_));
-    }
+    if (plan_.moment_map) moment_sampler_ = create_sampler(device, VK_FILTER_LINEAR);
 }
 
 void FrameRenderer::record() {

@@ -1,5 +1,7 @@
 #include "render/moment_map_pass.hpp"
 
+#include "gpu/rendering.hpp"
+
 #include "shaders/shadow_depth_vert.h"
 
 
@@ -48,29 +50,9 @@ void MomentMapPass::record_render(VkCommandBuffer commands, const GpuScene& scen
     const Texture& target = target_;
     transition(commands, target, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
     transition(commands, depth_, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
-    VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    color.imageView = target.view();
-    color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-    color.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-    color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    for (int c = 0; c < 4; ++c) color.clearValue.color.float32[c] = needs_.clear_value[size_t(c)];
-    VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    depth.imageView = depth_.view();
-    depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
-    depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-    depth.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-    depth.clearValue.depthStencil = {1.0f, 0};
-    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
-    rendering.renderArea = {{0, 0}, {target.width(), target.height()}};
-    rendering.layerCount = 1;
-    rendering.colorAttachmentCount = 1;
-    rendering.pColorAttachments = &color;
-    rendering.pDepthAttachment = &depth;
-    vkCmdBeginRendering(commands, &rendering);
-    VkViewport viewport{0.0f, 0.0f, float(target.width()), float(target.height()), 0.0f, 1.0f};
-    VkRect2D scissor{{0, 0}, {target.width(), target.height()}};
-    vkCmdSetViewport(commands, 0, 1, &viewport);
-    vkCmdSetScissor(commands, 0, 1, &scissor);
+    ColorTarget color{target.view(), {}};
+    for (int c = 0; c < 4; ++c) color.clear.float32[c] = needs_.clear_value[size_t(c)];
+    begin_rendering(commands, target.width(), target.height(), {&color, 1}, DepthTarget{depth_.view(), false});
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, render_pipeline_->handle());
     vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, scene_layout, 0, 1, &frame, 0, nullptr);
     scene.draw(commands, scene_layout, true);

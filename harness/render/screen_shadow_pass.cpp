@@ -1,5 +1,7 @@
 #include "render/screen_shadow_pass.hpp"
 
+#include "gpu/rendering.hpp"
+
 #include "shaders/scene_vert.h"
 
 #include <array>
@@ -35,35 +37,10 @@ void ScreenShadowPass::record_render(VkCommandBuffer commands, const GpuScene& s
     transition(commands, data_, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
     transition(commands, normals_, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
     transition(commands, depth_, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
-    std::array<VkRenderingAttachmentInfo, 2> colors{};
-    const std::array<const Texture*, 2> targets{&data_, &normals_};
-    for (size_t i = 0; i < 2; ++i) {
-        colors[i] = {VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-        colors[i].imageView = targets[i]->view();
-        colors[i].imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-        colors[i].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-        colors[i].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    }
     // Background: fully lit, no blur, infinitely far (so filters never mix it with surfaces).
-    colors[0].clearValue.color = {{1.0f, 0.0f, 0.0f, 1e30f}};
-    colors[1].clearValue.color = {{0.0f, 0.0f, 0.0f, 0.0f}};
-    VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    depth.imageView = depth_.view();
-    depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
-    depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-    depth.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-    depth.clearValue.depthStencil = {1.0f, 0};
-    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
-    rendering.renderArea = {{0, 0}, {data_.width(), data_.height()}};
-    rendering.layerCount = 1;
-    rendering.colorAttachmentCount = 2;
-    rendering.pColorAttachments = colors.data();
-    rendering.pDepthAttachment = &depth;
-    vkCmdBeginRendering(commands, &rendering);
-    VkViewport viewport{0.0f, 0.0f, float(data_.width()), float(data_.height()), 0.0f, 1.0f};
-    VkRect2D scissor{{0, 0}, {data_.width(), data_.height()}};
-    vkCmdSetViewport(commands, 0, 1, &viewport);
-    vkCmdSetScissor(commands, 0, 1, &scissor);
+    const std::array<ColorTarget, 2> colors{{{data_.view(), {{1.0f, 0.0f, 0.0f, 1e30f}}},
+                                             {normals_.view(), {{0.0f, 0.0f, 0.0f, 0.0f}}}}};
+    begin_rendering(commands, data_.width(), data_.height(), colors, DepthTarget{depth_.view(), false});
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_->handle());
     vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, scene_layout, 0, 1, &frame, 0, nullptr);
     scene.draw(commands, scene_layout, false);

@@ -1,5 +1,7 @@
 #include "render/shadow_map_pass.hpp"
 
+#include "gpu/rendering.hpp"
+
 #include "shaders/shadow_depth_frag.h"
 #include "shaders/shadow_depth_vert.h"
 
@@ -24,21 +26,7 @@ ShadowMapPass::ShadowMapPass(const GpuContext& gpu, MemoryLedger& ledger, const 
 void ShadowMapPass::record(VkCommandBuffer commands, const GpuScene& scene, VkPipelineLayout layout,
                            VkDescriptorSet frame) const {
     transition(commands, depth_, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
-    VkRenderingAttachmentInfo depth_attachment{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    depth_attachment.imageView = depth_.view();
-    depth_attachment.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
-    depth_attachment.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-    depth_attachment.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    depth_attachment.clearValue.depthStencil = {1.0f, 0};
-    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
-    rendering.renderArea = {{0, 0}, {depth_.width(), depth_.height()}};
-    rendering.layerCount = 1;
-    rendering.pDepthAttachment = &depth_attachment;
-    vkCmdBeginRendering(commands, &rendering);
-    VkViewport viewport{0.0f, 0.0f, float(depth_.width()), float(depth_.height()), 0.0f, 1.0f};
-    VkRect2D scissor{{0, 0}, {depth_.width(), depth_.height()}};
-    vkCmdSetViewport(commands, 0, 1, &viewport);
-    vkCmdSetScissor(commands, 0, 1, &scissor);
+    begin_rendering(commands, depth_.width(), depth_.height(), {}, DepthTarget{depth_.view(), true});
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_->handle());
     vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 1, &frame, 0, nullptr);
     scene.draw(commands, layout, true);

@@ -193,6 +193,25 @@ std::string paper_report(const PaperComparison& paper, const RunRecord& run) {
             }
             out += "## canopy: " + title + "\n\n" + table(header, rows) + "\n";
         }
+        // The reference's own classes of pixels per column: how much umbra and penumbra there is.
+        std::vector<std::vector<std::string>> classes;
+        for (const char* kind : {"umbra", "penumbra", "lit"}) {
+            std::vector<std::string> cells{kind};
+            for (size_t col = 0; col < paper.columns.size(); ++col) {
+                const CaseResult* any = nullptr;
+                for (const PaperRow& row : paper.rows)
+                    if (!any) any = find_case(paper, run, row, col);
+                if (!any || !any->image_error) {
+                    cells.push_back("-");
+                    continue;
+                }
+                const ImageMetrics& m = *any->image_error;
+                const std::string k = kind;
+                cells.push_back(std::to_string(k == "umbra" ? m.umbra_pixels : k == "penumbra" ? m.penumbra_pixels : m.lit_pixels));
+            }
+            classes.push_back(cells);
+        }
+        out += "## Reference: pixels in full umbra, penumbra (0 < V < 1) and fully lit\n\n" + table(header, classes) + "\n";
         out += "The papers define no error metric: these are canopy's, against an Embree reference with the same "
                "shading model and the area light integrated.\n\n";
     }

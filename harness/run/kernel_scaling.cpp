@@ -57,8 +57,12 @@ PowerFit fit_power_law(const std::vector<double>& widths, const std::vector<doub
         }
         const double det = double(n) * sxx - sx * sx;
         if (std::abs(det) < 1e-300) continue;
-        const double b = (double(n) * sxy - sx * sy) / det;
-        const double a = (sy - b * sx) / double(n);
+        double b = (double(n) * sxy - sx * sy) / det;
+        double a = (sy - b * sx) / double(n);
+        if (a < 0) {  // a fixed cost cannot be negative: fit through the origin instead
+            a = 0;
+            b = sxy / sxx;
+        }
         if (b <= 0) continue;  // time must grow with the kernel
         double sse = 0;
         for (size_t i = 0; i < n; ++i) {
@@ -118,7 +122,7 @@ std::string kernel_scaling_report(const std::vector<ScalingSeries>& series, cons
                                   const ScalingOptions& options) {
     std::string out = "# Kernel-size scaling\n\n";
     out += fmt::format("Time of the passes a kernel affects against its width, fitted as t = a + b·width^p "
-                       "(least squares over p in [0.2, 3.5], a and b linear). Separable filters should give p ≈ 1, "
+                       "(least squares over p in [0.2, 3.5], a ≥ 0 and b linear). Separable filters should give p ≈ 1, "
                        "K×K kernels (PCF, PCSS) p ≈ 2. Scene `{}` at {}x{}, {} warm-up + {} measured frames per "
                        "point; canopy {} on {} ({}), nproc {}, LP_NUM_THREADS {}, commit {}{}.\n\n",
                        options.scene_file, options.width, options.height, options.warmup, options.measured,

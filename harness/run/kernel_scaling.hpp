@@ -17,7 +17,8 @@ struct PowerFit {
     double r_squared = 0;
 };
 
-// Least squares over exponents in [0.2, 3.5] (step 0.005), linear in offset and scale for each.
+// Least squares over exponents in [0.2, 3.5] (step 0.005), linear in offset and scale for each,
+// with the offset constrained to be non-negative (a fixed per-pass cost).
 PowerFit fit_power_law(const std::vector<double>& widths, const std::vector<double>& times);
 
 struct ScalingSeries {

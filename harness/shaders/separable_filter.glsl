@@ -8,17 +8,24 @@ layout(set = 0, binding = 0) uniform sampler2D src;          // NEAREST
 layout(set = 0, binding = 1) writeonly uniform image2D dst;  // no format qualifier: any float format
 
 layout(push_constant) uniform FilterBlock {
-    ivec2 direction;  // (1, 0) horizontal or (0, 1) vertical
-    int radius;       // texels on each side
-    int size;         // image width
-    ivec2 extent;     // image width, height
-    int pass_index;   // position in the chain
-    int pad;
-    vec4 params;      // FilterPass::params
+    ivec2 direction;   // (1, 0) horizontal or (0, 1) vertical
+    int radius;        // texels on each side
+    int downsample;    // input texels per output texel in each axis (1: same size)
+    ivec2 extent;      // output width, height
+    ivec2 src_extent;  // input width, height
+    vec4 params;       // FilterPass::params
 } filter_pass;
 
+// The input texel `offset` steps along the pass's direction from output texel `xy` (for
+// same-size passes), clamped to the input.
 vec4 fetch(ivec2 xy, int offset) {
-    ivec2 p = clamp(xy + offset * filter_pass.direction, ivec2(0), filter_pass.extent - 1);
+    ivec2 p = clamp(xy + offset * filter_pass.direction, ivec2(0), filter_pass.src_extent - 1);
+    return texelFetch(src, p, 0);
+}
+
+// Input texel (dx, dy) of the block that output texel `xy` covers when downsampling.
+vec4 fetch_block(ivec2 xy, int dx, int dy) {
+    ivec2 p = clamp(xy * filter_pass.downsample + ivec2(dx, dy), ivec2(0), filter_pass.src_extent - 1);
     return texelFetch(src, p, 0);
 }
 

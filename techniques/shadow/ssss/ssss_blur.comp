@@ -11,6 +11,7 @@
 #include "frame_uniforms.glsl"
 #include "shading.h"
 #include "shadow_common.h"
+#include "light_space.glsl"
 #include "ssss_common.glsl"
 
 layout(set = 0, binding = 3) uniform sampler2D shadow_depth;  // the depth shadow map
@@ -49,7 +50,7 @@ vec4 filter_texel(ivec2 xy) {
             if (abs(facing) < 1e-4) continue;
             float t = dot(n, centre_point - camera) / facing;
             if (t <= 0.0) continue;
-            value = hard_shadow_test(shadow_depth, light_lookup(camera + ray * t, n));
+            value = hard_shadow_test(shadow_depth, light_space_point(camera + ray * t, n));
         }
         float w = exp(-0.5 * offset * offset / (sigma * sigma));
         sum += w * value;

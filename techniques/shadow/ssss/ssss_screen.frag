@@ -9,6 +9,7 @@
 #include "shading.h"
 #include "shadow_common.h"
 #include "shadow_filtering.h"
+#include "light_space.glsl"
 #include "ssss_common.glsl"
 
 // A Gaussian-blurred step goes from 10 % to 90 % over 2.563 sigma: make that the penumbra width.
@@ -16,17 +17,17 @@ const float PENUMBRA_WIDTH_IN_SIGMAS = 2.563;
 
 vec4 screen_shadow_data(vec3 p, vec3 n) {
     float d_observer = length(p - frame.camera_position.xyz);
-    if (dot(n, to_light_from(p)) <= 0.0) return vec4(0.0, 0.0, 0.0, d_observer);  // faces away: unlit
-    LightLookup l = light_lookup(p, n);
+    if (dot(n, direction_to_light(p)) <= 0.0) return vec4(0.0, 0.0, 0.0, d_observer);  // faces away: unlit
+    LightSpacePoint l = light_space_point(p, n);
     float hard = hard_shadow_test(shadow_depth, l);
-    if (!inside_shadow_map(l.uv) || l.receiver_depth > 1.0) return vec4(hard, 0.0, 0.0, d_observer);
+    if (!on_shadow_map(l)) return vec4(hard, 0.0, 0.0, d_observer);
 
     float coarse = stored_depth_at(coarse_map, l.uv);  // nearest blocker around, dilated
-    if (coarse >= l.receiver_depth - l.bias) return vec4(hard, 0.0, 0.0, d_observer);  // no blocker: no penumbra
+    if (coarse >= l.receiver_depth - receiver_bias(l)) return vec4(hard, 0.0, 0.0, d_observer);  // no blocker: no penumbra
 
     float near_plane = frame.shadow_depth_range.x;
     float d_blocker = near_plane + coarse * (frame.shadow_depth_range.y - near_plane);
-    float width = ssss_screen_penumbra_width(l.view_depth, d_blocker, area_light_width(), d_observer);  // eq 6.2
+    float width = ssss_screen_penumbra_width(l.view_depth, d_blocker, light_width(), d_observer);  // eq 6.2
     float sigma = width * frame.viewport.z / PENUMBRA_WIDTH_IN_SIGMAS;  // pixels
     // Anisotropy: a disk on the tangent plane projects to an ellipse whose screen x and y
     // extents shrink by sqrt(1 - n_x^2) and sqrt(1 - n_y^2) (n in view space).
