@@ -99,17 +99,26 @@ TEST_CASE("claims are judged per column from canopy's numbers") {
                  fake_case("shadow.pcf", 5, 20.0, 0.03)};
     auto verdicts = judge_claims(*e.paper, run);
     REQUIRE(verdicts.size() == 3);
-    CHECK(verdicts[0].decided);
-    CHECK(verdicts[0].holds);   // 20 > 10.5
-    CHECK(verdicts[1].holds);   // 10.5 / 10 within 10 %
-    CHECK(verdicts[2].holds);   // 0.03 < 0.06
-    run.cases[1].gpu_frame.stats.median = 12.0;  // now 20 % above hard
+    CHECK(verdicts[0].outcome == "holds");  // 20 > 10.5
+    CHECK(verdicts[1].outcome == "holds");  // 10.5 / 10 within 10 %
+    CHECK(verdicts[2].outcome == "holds");  // 0.03 < 0.06
+    run.cases[1].gpu_frame.stats.median = 12.0;  // now 20 % above hard, no noise
     verdicts = judge_claims(*e.paper, run);
-    CHECK_FALSE(verdicts[1].holds);
-    run.cases.pop_back();  // no PCF 5 case: undecided, never "holds"
+    CHECK(verdicts[1].outcome == "does not hold");
+    // The same 20 % (2 ms, 1 ms past the 10 % tolerance) with a spread of 0.6 ms each: the noise
+    // band (2.4 ms) covers the excess -> within noise.
+    run.cases[0].gpu_frame.stats.mad = run.cases[1].gpu_frame.stats.mad = 0.6;
     verdicts = judge_claims(*e.paper, run);
-    CHECK_FALSE(verdicts[0].decided);
-    CHECK_FALSE(verdicts[0].holds);
+    CHECK(verdicts[1].outcome == "within noise");
+    // PCF 5 (20 ms) vs PCF 3 (12 ms) with spreads of 0.6 and 3.5 ms: the 8 ms gap is inside 8.2.
+    run.cases[2].gpu_frame.stats.mad = 3.5;
+    verdicts = judge_claims(*e.paper, run);
+    CHECK(verdicts[0].outcome == "within noise");
+    CHECK_FALSE(verdicts[0].holds());
+    run.cases.pop_back();  // no PCF 5 case: not measured, never "holds"
+    verdicts = judge_claims(*e.paper, run);
+    CHECK(verdicts[0].outcome == "not measured");
+    CHECK_FALSE(verdicts[0].decided());
 
     const std::string report = paper_report(*e.paper, run);
     CHECK(report.find("# T1") != std::string::npos);

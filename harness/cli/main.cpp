@@ -143,7 +143,7 @@ int run(const fs::path& config, const std::string& out, bool quick, const std::s
     if (experiment.paper) {
         fmt::print("\n{} ({}): claims\n", experiment.paper->id, experiment.paper->source);
         for (const ClaimVerdict& v : judge_claims(*experiment.paper, record))
-            fmt::print("  {:<13} {}\n", !v.decided ? "not measured" : v.holds ? "holds" : "does not hold", v.text);
+            fmt::print("  {:<13} {}\n", v.outcome, v.text);
     }
     if (record.status == "interrupted") {
         fmt::print(stderr, "canopy: interrupted after {} of {} cases; the finished ones are saved\n", record.cases.size(),

@@ -94,7 +94,7 @@ std::vector<ClaimVerdict> judge_claims(const PaperComparison& paper, const RunRe
         const PaperRow* left = row_named(paper, claim.left);
         const PaperRow* right = row_named(paper, claim.right);
         std::string numbers;
-        bool all_hold = true, any = false;
+        int measured = 0, holding = 0, failing = 0;
         for (size_t col = 0; col < paper.columns.size(); ++col) {
             if (!claim.column.empty() && paper.columns[col] != claim.column) continue;
             const CaseResult* l = find_case(paper, run, *left, col);
@@ -102,22 +102,36 @@ std::vector<ClaimVerdict> judge_claims(const PaperComparison& paper, const RunRe
             if (!l || !r) continue;
             const double a = metric_of(*l, claim.metric), b = metric_of(*r, claim.metric);
             if (std::isnan(a) || std::isnan(b)) continue;
-            any = true;
-            bool holds = false;
-            if (claim.relation == "less") holds = a < b;
-            else if (claim.relation == "greater") holds = a > b;
-            else holds = b != 0.0 && std::abs(a / b - 1.0) <= claim.tolerance;
-            all_hold = all_hold && holds;
-            numbers += fmt::format("{}{}: {} vs {}{}", numbers.empty() ? "" : "; ", paper.columns[col], number(a, "{:.4g}"),
+            ++measured;
+            // Renders are deterministic; timings are not: their noise band is 2 x (MAD + MAD).
+            const double noise = claim.metric == "time" ? 2.0 * (l->gpu_frame.stats.mad + r->gpu_frame.stats.mad) : 0.0;
+            bool holds = false, fails = false;
+            if (claim.relation == "less") {
+                holds = b - a > noise;
+                fails = a - b > noise || (noise == 0.0 && a >= b);
+            } else if (claim.relation == "greater") {
+                holds = a - b > noise;
+                fails = b - a > noise || (noise == 0.0 && a <= b);
+            } else {
+                const double allowed = claim.tolerance * std::abs(b);
+                holds = std::abs(a - b) <= allowed;
+                fails = std::abs(a - b) > allowed + noise;
+            }
+            holding += holds ? 1 : 0;
+            failing += fails ? 1 : 0;
+            numbers += fmt::format("{}{}: {} vs {}{}{}", numbers.empty() ? "" : "; ", paper.columns[col], number(a, "{:.4g}"),
                                    number(b, "{:.4g}"),
-                                   claim.relation == "about" && b != 0.0 ? fmt::format(" (ratio {:.2f})", a / b) : "");
+                                   claim.relation == "about" && b != 0.0 ? fmt::format(" (ratio {:.2f})", a / b) : "",
+                                   noise > 0.0 ? fmt::format(", noise ±{:.3g}", noise) : "");
         }
-        v.decided = any;
-        v.holds = any && all_hold;
+        if (measured == 0) v.outcome = "not measured";
+        else if (failing > 0) v.outcome = "does not hold";
+        else if (holding == measured) v.outcome = "holds";
+        else v.outcome = "within noise";
         const std::string relation = claim.relation == "about" ? fmt::format("within {:.0f} % of", 100.0 * claim.tolerance)
                                      : claim.relation == "less" ? "below" : "above";
-        v.because = any ? fmt::format("{} of {} is {} {}'s: {}", claim.metric, claim.left, relation, claim.right, numbers)
-                        : "no measured case for one of the rows";
+        v.because = measured ? fmt::format("{} of {} is {} {}'s: {}", claim.metric, claim.left, relation, claim.right, numbers)
+                             : "no measured case for one of the rows";
         verdicts.push_back(v);
     }
     return verdicts;
@@ -219,10 +233,9 @@ std::string paper_report(const PaperComparison& paper, const RunRecord& run) {
     const auto verdicts = judge_claims(paper, run);
     if (!verdicts.empty()) {
         out += "## Claims\n\n";
-        for (const ClaimVerdict& v : verdicts)
-            out += fmt::format("- **{}** — {} ({})\n", !v.decided ? "not measured" : v.holds ? "holds" : "does not hold",
-                               v.text, v.because);
-        out += "\n";
+        for (const ClaimVerdict& v : verdicts) out += fmt::format("- **{}** — {} ({})\n", v.outcome, v.text, v.because);
+        out += "\nA timing claim holds or fails only by more than its noise band, 2 × (MAD + MAD) of the two medians; "
+               "inside it the verdict is \"within noise\". Error claims compare deterministic renders.\n\n";
     }
     if (!paper.notes.empty()) out += paper.notes + "\n";
     return out;

@@ -12,11 +12,14 @@
 
 namespace canopy {
 
+// A claim's outcome on canopy's numbers. Timing claims account for noise: a difference smaller
+// than twice the summed MADs of the two medians decides nothing ("within noise").
 struct ClaimVerdict {
     std::string text;
-    bool decided = false;  // false when a row has no measured case
-    bool holds = false;
-    std::string because;   // the numbers behind the verdict
+    std::string outcome = "not measured";  // holds | does not hold | within noise | not measured
+    bool decided() const { return outcome == "holds" || outcome == "does not hold"; }
+    bool holds() const { return outcome == "holds"; }
+    std::string because;                   // the numbers behind the verdict
 };
 
 std::vector<ClaimVerdict> judge_claims(const PaperComparison& paper, const RunRecord& run);
