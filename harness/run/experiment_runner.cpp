@@ -181,7 +181,11 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
         const ReferenceEntry* reference = nullptr;
         if (run.reference_enabled) {
             const std::string stem = reference_stem(scene, c.resolution);
-            if (options.show_progress) progress.start_case(i, "ray-tracing " + stem);
+            const bool first_use = std::none_of(run.references.begin(), run.references.end(), [&](const ReferenceRecord& r) {
+                return r.scene == scene.name && r.resolution.width == c.resolution.width &&
+                       r.resolution.height == c.resolution.height;
+            });
+            if (options.show_progress && first_use) progress.start_case(i, "ray-tracing " + stem);
             reference = &references.get(scene, prepared.meshes[c.scene_index], c.resolution.width, c.resolution.height,
                                         [&](double fraction) {
                                             if (options.show_progress)
