@@ -74,6 +74,13 @@ TEST_CASE("depth test and grid offsets") {
     CHECK(grid_offset(0, 1) == glm::vec2(0.0f, 0.0f));
 }
 
+TEST_CASE("nearest texel under uv, clamped at the edges") {
+    CHECK(nearest_texel(glm::vec2(0.0f, 0.0f), glm::ivec2(4, 4)) == glm::ivec2(0, 0));
+    CHECK(nearest_texel(glm::vec2(0.26f, 0.74f), glm::ivec2(4, 4)) == glm::ivec2(1, 2));
+    CHECK(nearest_texel(glm::vec2(1.0f, 1.0f), glm::ivec2(4, 4)) == glm::ivec2(3, 3));    // u = 1 is the last texel
+    CHECK(nearest_texel(glm::vec2(-0.5f, 2.0f), glm::ivec2(8, 2)) == glm::ivec2(0, 1));   // off the map: clamped
+}
+
 TEST_CASE("shadow-map coordinates from light clip space") {
     CHECK(shadow_uv(glm::vec4(0.0f, 0.0f, 0.5f, 1.0f)) == glm::vec2(0.5f, 0.5f));
     CHECK(shadow_uv(glm::vec4(-2.0f, 2.0f, 0.5f, 2.0f)) == glm::vec2(0.0f, 1.0f));

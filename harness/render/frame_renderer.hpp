@@ -50,7 +50,6 @@ public:
     // "compare-linear" when hardware 2x2 PCF sampling is bound, "nearest" for a plain depth map,
     // "linear-<format>" for a moment map, "" without any map.
     std::string shadow_sampler() const;
-    const std::optional<LightView>& light_view() const { return light_view_; }
 
 private:
     void create_descriptors();

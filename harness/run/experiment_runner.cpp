@@ -1,6 +1,7 @@
 #include "run/experiment_runner.hpp"
 
 #include "config/experiment_config.hpp"
+#include "metrics/comparable_pair.hpp"
 #include "metrics/error_maps.hpp"
 #include "report/csv_report.hpp"
 #include "report/image_files.hpp"
@@ -28,15 +29,6 @@ const TechniqueEntry* entry_for(const Experiment& experiment, const std::string&
     for (const auto& entry : experiment.techniques)
         if (entry.name == technique) return &entry;
     return nullptr;
-}
-
-long long count_nonfinite(const Image& image) {
-    long long count = 0;
-    for (size_t i = 0; i < image.pixels.size(); i += 4)
-        if (!std::isfinite(image.pixels[i]) || !std::isfinite(image.pixels[i + 1]) || !std::isfinite(image.pixels[i + 2]) ||
-            !std::isfinite(image.pixels[i + 3]))
-            ++count;
-    return count;
 }
 
 TimingSeries series(std::string name, std::vector<double> samples) {
@@ -139,7 +131,7 @@ CaseResult measure_case(const Case& c, const Scene& scene, const std::vector<Tri
     result.shadow_sampler = renderer.shadow_sampler();
 
     Image image = renderer.read_color();
-    result.nonfinite_pixels = count_nonfinite(image);
+    result.nonfinite_pixels = count_nonfinite_pixels(image);
     if (result.nonfinite_pixels > 0) {
         result.ok = false;
         result.error = fmt::format("{} pixels are NaN or Inf", result.nonfinite_pixels);

@@ -63,6 +63,11 @@ CANOPY_FN float normalised_light_depth(float view_depth, float near_plane, float
     return (view_depth - near_plane) * inv_range;
 }
 
+// The texel of a size.x x size.y map under uv (NEAREST), clamped to the map.
+CANOPY_FN ivec2 nearest_texel(vec2 uv, ivec2 size) {
+    return clamp(ivec2(floor(uv * vec2(size))), ivec2(0), size - ivec2(1));
+}
+
 // True when uv falls on the shadow map (receivers outside it are treated as lit).
 CANOPY_FN bool inside_shadow_map(vec2 uv) {
     return uv.x >= 0.0f && uv.x <= 1.0f && uv.y >= 0.0f && uv.y <= 1.0f;

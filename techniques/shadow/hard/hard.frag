@@ -6,7 +6,5 @@
 
 float shadow_visibility(ShadowQuery q) {
     float bias = slope_scaled_bias(technique_param(0), technique_param(1), q.depth_per_texel);
-    int resolution = int(shadow_resolution());
-    ivec2 texel = clamp(ivec2(floor(q.uv * float(resolution))), ivec2(0), ivec2(resolution - 1));
-    return depth_test(q.receiver_depth - bias, texelFetch(shadow_depth, texel, 0).r);
+    return depth_test(q.receiver_depth - bias, texelFetch(shadow_depth, nearest_texel(q.uv, textureSize(shadow_depth, 0)), 0).r);
 }

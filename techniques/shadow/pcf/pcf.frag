@@ -31,8 +31,7 @@ float shadow_visibility(ShadowQuery q) {
         if (hardware) {
             lit += texture(shadow_compare, vec3(uv, tap_reference));
         } else {
-            ivec2 t = clamp(ivec2(floor(uv * float(resolution))), ivec2(0), ivec2(resolution - 1));
-            lit += depth_test(tap_reference, texelFetch(shadow_depth, t, 0).r);
+            lit += depth_test(tap_reference, texelFetch(shadow_depth, nearest_texel(uv, ivec2(resolution)), 0).r);
         }
     }
     return lit / float(count);

@@ -10,9 +10,7 @@
 #include "shadow_filtering.h"
 
 float stored_depth(vec2 uv) {
-    int resolution = int(shadow_resolution());
-    ivec2 t = clamp(ivec2(floor(uv * float(resolution))), ivec2(0), ivec2(resolution - 1));
-    return texelFetch(shadow_depth, t, 0).r;
+    return texelFetch(shadow_depth, nearest_texel(uv, textureSize(shadow_depth, 0)), 0).r;
 }
 
 // Grid tap i of a k x k grid spanning [-radius, radius] texels in u and v.

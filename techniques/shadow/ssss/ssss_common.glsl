@@ -9,9 +9,7 @@ float receiver_bias(LightSpacePoint p) {
 
 // The texel of `map` (the shadow map or the smaller coarse map) under uv.
 float stored_depth_at(sampler2D map, vec2 uv) {
-    ivec2 size = textureSize(map, 0);
-    ivec2 t = clamp(ivec2(floor(uv * vec2(size))), ivec2(0), size - 1);
-    return texelFetch(map, t, 0).r;
+    return texelFetch(map, nearest_texel(uv, textureSize(map, 0)), 0).r;
 }
 
 // 1 lit, 0 in shadow; points off the map or beyond its far plane are lit.
