@@ -1,0 +1,27 @@
+#include "support/test_gpu.hpp"
+
+#include "core/registry.hpp"
+#include "render/frame_renderer.hpp"
+#include "scene/geometry.hpp"
+
+#include <cstdlib>
+#include <stdexcept>
+
+namespace canopy::test {
+
+GpuContext& gpu() {
+    static GpuContext context(std::getenv("CANOPY_TEST_DEVICE") ? std::getenv("CANOPY_TEST_DEVICE") : "");
+    return context;
+}
+
+Image render_technique(const Scene& scene, const std::string& technique,
+                       const std::map<std::string, ParamValue>& params, int width, int height) {
+    const Technique* t = TechniqueRegistry::instance().find(technique);
+    if (!t) throw std::invalid_argument("no technique " + technique);
+    const ParamSet resolved = ParamSet::resolve(t->params(), params, {}, SourceLocation{}, technique);
+    FrameRenderer renderer(gpu(), scene, build_scene_meshes(scene), uint32_t(width), uint32_t(height), t->plan(resolved));
+    renderer.render();
+    return renderer.read_color();
+}
+
+}  // namespace canopy::test
