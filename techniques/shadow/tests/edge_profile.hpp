@@ -164,7 +164,7 @@ inline EdgeScene make_edge_scene(const EdgeSetup& setup) {
     e.image_width = setup.across_z ? setup.image_breadth : setup.image_length;
     e.image_height = setup.across_z ? setup.image_length : setup.image_breadth;
     const double window = setup.window_texels * e.texel_floor;
-    e.camera_height = 0.5 * top;
+    e.camera_height = 0.8 * top;  // high, so the observer distance varies little across the strip
     const double tan_half = 0.5 * window / (e.camera_height * (setup.across_z ? 1.0 : double(e.image_width) / e.image_height));
     s.camera.position = e.edge * across + glm::vec3(0.0f, float(e.camera_height), 0.0f);
     s.camera.target = e.edge * across;
