@@ -45,8 +45,7 @@ inline double pcf_grid_model(const EdgeScene& e, const ProfileSample& s, int k, 
 
 // shadow.pcf with pattern = poisson: k*k Poisson-disk taps of radius k/2 texels.
 inline double pcf_poisson_model(const EdgeScene& e, const ProfileSample& s, int k) {
-    static std::vector<std::array<float, 2>> disk;
-    if (int(disk.size()) != k * k) disk = poisson_disk(k * k);
+    const std::vector<std::array<float, 2>> disk = poisson_disk(k * k);  // pcf_shadows.cpp's set
     double lit = 0.0;
     for (const auto& o : disk) lit += nearest_lit(e, s.t + o[size_t(e.map_axis)] * 0.5 * k * e.map_direction);
     return lit / double(disk.size());
