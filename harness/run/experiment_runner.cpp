@@ -1,6 +1,7 @@
 #include "run/experiment_runner.hpp"
 
 #include "config/experiment_config.hpp"
+#include "metrics/colour_bar.hpp"
 #include "metrics/comparable_pair.hpp"
 #include "metrics/error_maps.hpp"
 #include "report/csv_report.hpp"
@@ -242,9 +243,13 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
                                                      [&](const ReferenceRecord& r) { return r.key == reference->key; });
                     result.error_map_png = "images/" + c.id + ".error.png";
                     result.flip_map_png = "images/" + c.id + ".flip.png";
+                    // Each with its scale drawn beside it.
                     write_png_display(out / result.error_map_png,
-                                      absolute_error_heatmap(image, truth, record->error_map_scale));
-                    write_png_display(out / result.flip_map_png, flip_heatmap(flip_map, image.width, image.height));
+                                      with_colour_bar(absolute_error_heatmap(image, truth, record->error_map_scale),
+                                                      viridis_colormap(), record->error_map_scale));
+                    write_png_display(out / result.flip_map_png,
+                                      with_colour_bar(flip_heatmap(flip_map, image.width, image.height),
+                                                      magma_colormap(), 1.0));
                 }
             }
         }
