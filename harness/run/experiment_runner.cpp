@@ -11,6 +11,7 @@
 #include "report/paper_report.hpp"
 #include "run/interrupt.hpp"
 #include "run/progress.hpp"
+#include "run/recorded_path.hpp"
 #include "run/reference_provider.hpp"
 
 #include <fmt/chrono.h>
@@ -147,7 +148,7 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
     RunRecord run;
     run.experiment = experiment.name;
     run.description = experiment.description;
-    run.config_file = experiment.file.string();
+    run.config_file = recorded_path(experiment.file);
     run.environment = collect_environment(gpu, experiment.config_hash);
     run.quick = options.quick;
     run.warmup_frames = options.quick ? std::min(experiment.warmup_frames, 1) : experiment.warmup_frames;
