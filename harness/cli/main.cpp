@@ -12,11 +12,14 @@
 #include "run/interrupt.hpp"
 #include "run/kernel_scaling.hpp"
 #include "report/atomic_file.hpp"
+#include "core/plan_requirements.hpp"
+#include "run/environment.hpp"
 
 #include <CLI/CLI.hpp>
 #include <fmt/chrono.h>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
@@ -35,10 +38,25 @@ constexpr int kExitBadInput = 2;
 constexpr int kExitInterrupted = 130;
 
 int list_techniques() {
+    // One column width for every technique, so long names do not push the columns apart.
+    size_t name_width = 0, type_width = 0, default_width = 0;
+    for (const Technique* t : TechniqueRegistry::instance().all())
+        for (const ParamSpec& p : t->params()) {
+            name_width = std::max(name_width, p.name.size());
+            type_width = std::max(type_width, p.type_and_range().size());
+            default_width = std::max(default_width, to_string(p.default_value).size());
+        }
     for (const Technique* t : TechniqueRegistry::instance().all()) {
-        fmt::print("{}\n  {}\n  from: {}\n  parameters:\n", t->name(), t->summary(), t->paper());
-        for (const ParamSpec& p : t->params())
-            fmt::print("    {:<14} {:<28} default {:<8} {}\n", p.name, p.type_and_range(), to_string(p.default_value), p.doc);
+        fmt::print("{}\n  {}\n  from: {}\n", t->name(), t->summary(), t->paper());
+        const std::vector<ParamSpec> specs = t->params();
+        const ParamSet defaults = ParamSet::resolve(specs, {}, {}, {}, t->name());
+        std::string requires_text;
+        for (const std::string& need : plan_requirements(t->plan(defaults)))
+            requires_text += (requires_text.empty() ? "" : "; ") + need;
+        fmt::print("  requires: {}\n  parameters:\n", requires_text.empty() ? "nothing beyond the scene" : requires_text);
+        for (const ParamSpec& p : specs)
+            fmt::print("    {:<{}}  {:<{}}  default {:<{}}  {}\n", p.name, name_width, p.type_and_range(), type_width,
+                       to_string(p.default_value), default_width, p.doc);
         fmt::print("\n");
     }
     return kExitOk;
@@ -164,6 +182,9 @@ int main(int argc, char** argv) {
     CLI::App app{"canopy: benchmark real-time rendering techniques for nature scenes against a ray-traced reference.\n"
                  "Measures how long each technique takes and how far its image is from the truth."};
     app.require_subcommand(1);
+    app.set_version_flag("--version", [] {
+        return fmt::format("canopy {} ({} build, commit {})", CANOPY_VERSION, canopy_build_type(), source_commit());
+    });
     app.footer("Exit codes: 0 success, 1 a case failed (e.g. NaN pixels), 2 bad input (the message names file:line),\n"
                "130 interrupted (finished cases are kept). Set CANOPY_VALIDATION=1 for Vulkan validation layers.");
 
