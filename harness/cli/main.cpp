@@ -12,6 +12,7 @@
 #include "run/interrupt.hpp"
 #include "run/kernel_scaling.hpp"
 #include "report/atomic_file.hpp"
+#include "report/console_table.hpp"
 #include "core/plan_requirements.hpp"
 #include "run/environment.hpp"
 
@@ -154,14 +155,14 @@ int run(const fs::path& config, const std::string& out, bool quick, const std::s
     install_interrupt_handler();
     const RunRecord record = run_experiment(prepared, registry, gpu, options);
 
-    fmt::print("{}\n", markdown_table(record));
+    fmt::print("{}\n", console_table(record));
     fmt::print("results: {}\n", fs::absolute(options.out_dir).string());
-    fmt::print("  results.json, results.csv, results.md{}; images in images/ (EXR linear, PNG sRGB)\n",
+    fmt::print("  results.json, results.csv, results.md (every column){}; images in images/ (EXR linear, PNG sRGB)\n",
                experiment.paper ? ", paper.md" : "");
     if (experiment.paper) {
         fmt::print("\n{} ({}): claims\n", experiment.paper->id, experiment.paper->source);
         for (const ClaimVerdict& v : judge_claims(*experiment.paper, record))
-            fmt::print("  {:<13} {}\n", v.outcome, v.text);
+            fmt::print("  {:<15} {}\n", v.outcome, v.text);
     }
     if (record.status == "interrupted") {
         fmt::print(stderr, "canopy: interrupted after {} of {} cases; the finished ones are saved\n", record.cases.size(),

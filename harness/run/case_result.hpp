@@ -26,7 +26,7 @@ struct CaseResult {
     Resolution resolution;
     std::vector<std::pair<std::string, ParamValue>> params;
     std::string params_summary;        // every value
-    std::string params_changed;        // only values that differ from the defaults ("-" if none)
+    std::string params_shown;          // swept parameters and values that differ from the defaults ("-" if none)
     std::vector<TimingSeries> passes;  // GPU time per pass
     TimingSeries gpu_frame;            // GPU time, first pass start to last pass end
     TimingSeries wall;                 // CPU wall time per frame, submit to completion

@@ -9,6 +9,7 @@
 #include "report/json_report.hpp"
 #include "report/markdown_report.hpp"
 #include "report/paper_report.hpp"
+#include "run/case_labels.hpp"
 #include "run/interrupt.hpp"
 #include "run/progress.hpp"
 #include "run/recorded_path.hpp"
@@ -39,19 +40,7 @@ TimingSeries series(std::string name, std::vector<double> samples) {
     return t;
 }
 
-// "kernel=5 pattern=poisson": the values that differ from the technique's defaults.
-std::string changed_params(const Technique& technique, const ParamSet& params) {
-    std::string out;
-    const auto specs = technique.params();
-    for (const auto& [name, value] : params.values()) {
-        auto spec = std::find_if(specs.begin(), specs.end(), [&](const ParamSpec& s) { return s.name == name; });
-        if (spec != specs.end() && to_string(spec->default_value) == to_string(value)) continue;
-        out += fmt::format("{}{}={}", out.empty() ? "" : " ", name, to_string(value));
-    }
-    return out.empty() ? "-" : out;
-}
-
-CaseResult case_header(const Case& c, const Scene& scene, const Technique& technique) {
+CaseResult case_header(const Case& c, const Scene& scene) {
     CaseResult result;
     result.id = c.id;
     result.scene = scene.name;
@@ -59,7 +48,6 @@ CaseResult case_header(const Case& c, const Scene& scene, const Technique& techn
     result.resolution = c.resolution;
     result.params = c.params.values();
     result.params_summary = c.params.summary();
-    result.params_changed = changed_params(technique, c.params);
     return result;
 }
 
@@ -112,7 +100,7 @@ PreparedExperiment prepare_experiment(const Experiment& experiment, const Techni
 CaseResult measure_case(const Case& c, const Scene& scene, const std::vector<TriangleMesh>& meshes,
                         const Technique& technique, const GpuContext& gpu, int warmup_frames, int measured_frames,
                         Image* image_out) {
-    CaseResult result = case_header(c, scene, technique);
+    CaseResult result = case_header(c, scene);
     FrameRenderer renderer(gpu, scene, meshes, uint32_t(c.resolution.width), uint32_t(c.resolution.height),
                            technique.plan(c.params));
     for (int i = 0; i < warmup_frames && !interrupt_requested(); ++i) renderer.render();
@@ -162,13 +150,14 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
     write_reports(out, run, experiment);
 
     ReferenceProvider references(options.reference_cache_dir, experiment.reference);
+    const CaseLabels labels(prepared.cases, registry);
     Progress progress(prepared.cases.size());
     for (size_t i = 0; i < prepared.cases.size() && !interrupt_requested(); ++i) {
         const Case& c = prepared.cases[i];
         const Scene& scene = experiment.scenes[c.scene_index];
         const Technique& technique = *registry.find(c.technique);
         const std::string label = fmt::format("{} {}x{} {} {}", scene.name, c.resolution.width, c.resolution.height,
-                                              c.technique, changed_params(technique, c.params));
+                                              c.technique, labels.parameters(c));
         const auto start = std::chrono::steady_clock::now();
 
         // The reference first, so a case's record is complete when it is written.
@@ -219,11 +208,12 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
             result = measure_case(c, scene, prepared.meshes[c.scene_index], technique, gpu, run.warmup_frames,
                                   run.measured_frames, &image);
         } catch (const GpuError& e) {
-            result = case_header(c, scene, technique);
+            result = case_header(c, scene);
             result.ok = false;
             result.error = e.what();
         }
         if (interrupt_requested()) break;  // this case did not finish: keep only the finished ones
+        result.params_shown = labels.parameters(c);
 
         if (!image.pixels.empty()) {
             const bool pngs = options.images != ImageOutput::none;
