@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <set>
 
 namespace canopy {
 
@@ -151,7 +152,11 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
 
     ReferenceProvider references(options.reference_cache_dir, experiment.reference);
     const CaseLabels labels(prepared.cases, registry);
-    Progress progress(prepared.cases.size());
+    // References the cases need, for the ETA.
+    std::set<std::string> references_needed;
+    for (const Case& c : prepared.cases)
+        references_needed.insert(fmt::format("{}@{}x{}", c.scene_index, c.resolution.width, c.resolution.height));
+    Progress progress(prepared.cases.size(), run.reference_enabled ? references_needed.size() : 0);
     for (size_t i = 0; i < prepared.cases.size() && !interrupt_requested(); ++i) {
         const Case& c = prepared.cases[i];
         const Scene& scene = experiment.scenes[c.scene_index];
@@ -164,16 +169,24 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
         const ReferenceEntry* reference = nullptr;
         if (run.reference_enabled) {
             const std::string stem = reference_stem(scene, c.resolution);
-            const bool first_use = std::none_of(run.references.begin(), run.references.end(), [&](const ReferenceRecord& r) {
-                return r.scene == scene.name && r.resolution.width == c.resolution.width &&
-                       r.resolution.height == c.resolution.height;
-            });
-            if (options.show_progress && first_use) progress.start_case(i, "ray-tracing " + stem);
-            reference = &references.get(scene, prepared.meshes[c.scene_index], c.resolution.width, c.resolution.height,
-                                        [&](double fraction) {
-                                            if (options.show_progress)
-                                                progress.update_label(i, fmt::format("ray-tracing {} {:.0f}%", stem, 100.0 * fraction));
-                                        });
+            const std::string name = fmt::format("{} {}x{}", scene.name, c.resolution.width, c.resolution.height);
+            bool obtained_now = false;
+            bool source_from_cache = false;
+            const auto reference_start = std::chrono::steady_clock::now();
+            reference = &references.get(
+                scene, prepared.meshes[c.scene_index], c.resolution.width, c.resolution.height,
+                [&](double fraction) {
+                    if (options.show_progress) progress.reference_progress(i, name, fraction);
+                },
+                [&](bool from_cache) {
+                    obtained_now = true;
+                    source_from_cache = from_cache;
+                    if (options.show_progress) progress.reference_started(i, name, from_cache);
+                });
+            if (obtained_now && options.show_progress)
+                progress.reference_finished(
+                    i, name, std::chrono::duration<double>(std::chrono::steady_clock::now() - reference_start).count(),
+                    source_from_cache);
             const bool recorded = std::any_of(run.references.begin(), run.references.end(),
                                               [&](const ReferenceRecord& r) { return r.key == reference->key; });
             if (!recorded) {
