@@ -73,9 +73,13 @@ std::string markdown_report(const RunRecord& run) {
     out += fmt::format("- CPU: {}, nproc {}, LP_NUM_THREADS {}\n", e.cpu_model, e.nproc, e.lp_num_threads);
     out += fmt::format("- canopy {} ({} build), commit {}{}, config hash {}\n", e.canopy_version, e.build_type,
                        e.git_commit, e.git_dirty ? " (with uncommitted changes)" : "", e.config_hash);
-    out += fmt::format("- {} warm-up and {} measured frames per case{}; started {}, finished {}; status: {}\n\n",
-                       run.warmup_frames, run.measured_frames, run.quick ? " (--quick)" : "", run.started_at,
+    std::string resumed;
+    for (const std::string& at : run.resumed_at) resumed += (resumed.empty() ? ", resumed " : " and ") + at;
+    out += fmt::format("- {} warm-up and {} measured frames per case{}; started {}{}, finished {}; status: {}\n",
+                       run.warmup_frames, run.measured_frames, run.quick ? " (--quick)" : "", run.started_at, resumed,
                        run.finished_at.empty() ? "-" : run.finished_at, run.status);
+    if (!run.error.empty()) out += fmt::format("- the run stopped: {}\n", run.error);
+    out += "\n";
     out += markdown_table(run);
     if (!run.references.empty()) {
         out += "\nReferences (Embree, same shading model, area lights integrated):\n\n";
