@@ -121,7 +121,12 @@ case $case in
     ls "$work/half/images" | grep -q "kernel-3.png" || fail "the half-written case left no images (test premise)"
     touch -d '2000-01-01' "$work/half/images/"*kernel-3*
     touch "$work/half/images/.tiny_96x64_shadow.tmp999.png"  # as a write cut short would leave
+    # A recorded case that lost a file is run again too.
+    rm "$work/half/images/"*shadow.hard*.error.png
+    lost=$(json "$work/half/results.json" "j['cases'][0]['timing']['gpu_frame']['samples_ms']")
     run_tiny "$work/half" || fail "resume failed: $(cat "$work/stderr")"
+    [ "$(json "$work/half/results.json" "j['cases'][0]['timing']['gpu_frame']['samples_ms']")" != "$lost" ] \
+      || fail "a case whose error map was gone was kept"
     [ -n "$(find "$work/half/images" -name '*kernel-3.png' -newermt '2001-01-01')" ] || fail "the half-written case was not redone"
     same_results "$work/whole" "$work/half"
     no_temporary_files "$work/half" ;;
@@ -208,6 +213,8 @@ case $case in
     cat "$work/version"
     grep -Eq "^canopy [0-9]+\.[0-9]+\.[0-9]+ \((Release|Debug|RelWithDebInfo|MinSizeRel|)[ ]?build, commit ([0-9a-f]{40}|unknown)\)$" \
       "$work/version" || fail "--version prints no version"
+    "$canopy" run --help >"$work/help" || fail "run --help failed"
+    grep -q -- "--resume" "$work/help" && grep -q -- "--force" "$work/help" || fail "run --help lacks --resume or --force"
     "$canopy" list >"$work/list" || fail "list failed"
     for technique in shadow.pcss shadow.ssss; do
       grep -A3 "^$technique\$" "$work/list" | grep -q "requires: an area light (rect or sphere)" \
