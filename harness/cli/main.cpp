@@ -168,6 +168,7 @@ int run(const RunCommand& command, const ReferenceOptions& reference_options) {
     options.reference_cache_dir = cache_dir(reference_options);
     const RunIdentity identity = make_run_identity(experiment, options, collect_environment(gpu, experiment.config_hash));
     const OutputFolderPlan folder = plan_output_folder(options.out_dir, identity, command.force, command.resume);
+    const OutputFolderLock lock(options.out_dir);  // one canopy process per folder
     if (folder.replace) {
         const size_t removed = remove_run_outputs(options.out_dir);
         fmt::print(stderr, "canopy: --force: replacing {} ({} files of the earlier run removed)\n",

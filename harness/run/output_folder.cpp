@@ -7,6 +7,11 @@
 #include <fmt/format.h>
 
 #include <array>
+#include <cerrno>
+#include <cstring>
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
 #include <vector>
 
 namespace canopy {
@@ -35,6 +40,25 @@ std::string bulleted(const std::vector<std::string>& lines) {
 }
 
 }  // namespace
+
+OutputFolderLock::OutputFolderLock(const fs::path& dir) {
+    fs::create_directories(dir);
+    fd_ = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (fd_ < 0) throw ConfigError(dir, 0, fmt::format("cannot open the output folder: {}", std::strerror(errno)));
+    if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+        const int code = errno;
+        ::close(fd_);
+        fd_ = -1;
+        if (code == EWOULDBLOCK)
+            throw ConfigError(dir, 0, "another canopy run is writing to this folder",
+                              "wait for it to finish (then run again to resume), or choose another --out");
+        throw ConfigError(dir, 0, fmt::format("cannot lock the output folder: {}", std::strerror(code)));
+    }
+}
+
+OutputFolderLock::~OutputFolderLock() {
+    if (fd_ >= 0) ::close(fd_);  // releases the lock
+}
 
 bool is_committed_results_folder(const fs::path& dir) {
     const fs::path full = fs::weakly_canonical(fs::absolute(dir));

@@ -26,6 +26,20 @@ struct OutputFolderPlan {
 OutputFolderPlan plan_output_folder(const std::filesystem::path& dir, const RunIdentity& identity, bool force,
                                     bool resume);
 
+// While it lives, no other canopy process can hold the same folder (flock on the folder itself:
+// no lock file is left behind, and the lock goes with the process, also when it is killed).
+// Creates the folder. Throws ConfigError (exit code 2) when another run holds it.
+class OutputFolderLock {
+public:
+    explicit OutputFolderLock(const std::filesystem::path& dir);
+    ~OutputFolderLock();
+    OutputFolderLock(const OutputFolderLock&) = delete;
+    OutputFolderLock& operator=(const OutputFolderLock&) = delete;
+
+private:
+    int fd_ = -1;
+};
+
 // Whether `dir` is, or is under, a results/paper or results/baselines folder.
 bool is_committed_results_folder(const std::filesystem::path& dir);
 

@@ -156,6 +156,19 @@ case $case in
     [ "$(json "$work/long/results.json" "j['status']")" == interrupted ] || fail "not recorded as interrupted"
     no_temporary_files "$work/long" ;;
 
+  concurrent_run)
+    # Two canopy processes never write into one folder: the second is refused while the first runs.
+    sed 's/repetitions = 3/repetitions = 100000/' "$work/other.toml" >"$work/long.toml"
+    args=(run "$work/long.toml" --out "$work/a" --no-progress --reference-cache "$work/cache")
+    "$canopy" "${args[@]}" >/dev/null 2>"$work/first" &
+    pid=$!
+    for _ in $(seq 100); do [ -s "$work/a/results.json" ] && break; sleep 0.1; done
+    "$canopy" "${args[@]}" >"$work/stdout" 2>"$work/stderr"; rc=$?
+    kill -INT $pid
+    wait $pid
+    expect_refused $rc "another canopy run is writing to this folder"
+    [ "$(json "$work/a/results.json" "j['status']")" == interrupted ] || fail "the first run's record was disturbed" ;;
+
   disk_full)
     run_tiny "$work/whole" || fail "uninterrupted run failed"
     # Writes: 3 reports, 3 reference images, 4 images of case 1, 3 reports; the 14th (case 2's EXR) fails.
