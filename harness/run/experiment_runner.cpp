@@ -145,6 +145,10 @@ struct KeptResults {
     std::vector<ReferenceRecord> references;
 };
 
+bool same_reference(const ReferenceRecord& r, const std::string& scene, const Resolution& resolution) {
+    return r.scene == scene && r.resolution.width == resolution.width && r.resolution.height == resolution.height;
+}
+
 bool files_exist(const std::filesystem::path& dir, std::initializer_list<const std::string*> files) {
     return std::all_of(files.begin(), files.end(),
                        [&](const std::string* f) { return f->empty() || std::filesystem::is_regular_file(dir / *f); });
@@ -157,18 +161,12 @@ KeptResults kept_results(const RunRecord* previous, const std::filesystem::path&
         if (files_exist(out, {&r.image_exr, &r.image_png, &r.visibility_exr})) kept.references.push_back(r);
     for (const CaseResult& c : previous->cases) {
         const bool reference_kept =
-            !c.image_error || std::any_of(kept.references.begin(), kept.references.end(), [&](const ReferenceRecord& r) {
-                return r.scene == c.scene && r.resolution.width == c.resolution.width &&
-                       r.resolution.height == c.resolution.height;
-            });
+            !c.image_error || std::any_of(kept.references.begin(), kept.references.end(),
+                                          [&](const ReferenceRecord& r) { return same_reference(r, c.scene, c.resolution); });
         if (c.ok && reference_kept && files_exist(out, {&c.image_exr, &c.image_png, &c.error_map_png, &c.flip_map_png}))
             kept.cases.emplace(c.id, c);
     }
     return kept;
-}
-
-bool same_reference(const ReferenceRecord& r, const Scene& scene, const Resolution& resolution) {
-    return r.scene == scene.name && r.resolution.width == resolution.width && r.resolution.height == resolution.height;
 }
 
 }  // namespace
@@ -266,7 +264,7 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
                         i, name, std::chrono::duration<double>(std::chrono::steady_clock::now() - reference_start).count(),
                         source_from_cache);
                 const bool recorded = std::any_of(run.references.begin(), run.references.end(),
-                                                  [&](const ReferenceRecord& r) { return same_reference(r, scene, c.resolution); });
+                                                  [&](const ReferenceRecord& r) { return same_reference(r, scene.name, c.resolution); });
                 if (!recorded) {
                     ReferenceRecord record;
                     record.scene = scene.name;
@@ -323,7 +321,7 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
                     result.image_error = compute_metrics(image, truth, &reference->images.visibility, {}, &flip_map);
                     if (pngs) {
                         const auto record = std::find_if(run.references.begin(), run.references.end(),
-                                                         [&](const ReferenceRecord& r) { return same_reference(r, scene, c.resolution); });
+                                                         [&](const ReferenceRecord& r) { return same_reference(r, scene.name, c.resolution); });
                         result.error_map_png = "images/" + c.id + ".error.png";
                         result.flip_map_png = "images/" + c.id + ".flip.png";
                         // Each with its scale drawn beside it.
