@@ -268,7 +268,7 @@ int main(int argc, char** argv) {
                     "Output folder: a new or empty one starts a run; one holding a run of the same experiment, config\n"
                     "(content hash), options (--quick, --images, --no-reference), device and build continues it, keeping\n"
                     "its finished cases; anything else, and results/paper/ or results/baselines/, is refused (exit 2)\n"
-                    "unless --force.");
+                    "unless --force. One canopy process at a time writes into a folder.");
 
     CLI::App* reference_cmd = app.add_subcommand("reference", "Ray-trace the ground-truth image of a scene with Embree.");
     reference_cmd->add_option("scene", scene_path, "scene TOML, e.g. configs/scenes/spheres.toml")->required();
