@@ -72,7 +72,7 @@ CaseResult fake_case(const std::string& technique, long long kernel, double gpu_
     c.params = {{"resolution", 1024LL}};
     if (technique == "shadow.pcf") c.params.push_back({"kernel", kernel});
     c.gpu_frame.stats.median = gpu_ms;
-    c.gpu_frame.stats.count = 3;
+    c.gpu_frame.stats.count = 20;
     ImageMetrics m{};
     m.penumbra_rmse = penumbra_rmse;
     c.image_error = m;
@@ -123,6 +123,30 @@ TEST_CASE("claims are judged per column from canopy's numbers") {
     const std::string report = paper_report(*e.paper, run);
     CHECK(report.find("# T1") != std::string::npos);
     CHECK(report.find("2.00 → **1.20**") != std::string::npos);  // paper 400 vs 200 fps: twice the time
+}
+
+TEST_CASE("a timing claim from too few samples says so instead of a verdict") {
+    const Experiment e = load_experiment(write_experiment("few.toml", kPaper), TechniqueRegistry::instance());
+    RunRecord run;
+    run.cases = {fake_case("shadow.hard", 0, 10.0, 0.06), fake_case("shadow.pcf", 3, 10.5, 0.04),
+                 fake_case("shadow.pcf", 5, 20.0, 0.03)};
+    for (CaseResult& c : run.cases) c.gpu_frame.stats.count = 3;  // --quick
+    auto verdicts = judge_claims(*e.paper, run);
+    CHECK(verdicts[0].outcome == "too few samples");  // 20 > 10.5, but from 3 frames each
+    CHECK(verdicts[0].because.find("too few samples (3 < 6)") == 0);
+    CHECK_FALSE(verdicts[0].decided());
+    CHECK(verdicts[1].outcome == "too few samples");
+    CHECK(verdicts[2].outcome == "holds");  // an error claim: renders are deterministic
+    // One case short is enough to withhold the verdict; at the minimum it is given.
+    run.cases[0].gpu_frame.stats.count = run.cases[2].gpu_frame.stats.count = kMinTimingSamples;
+    verdicts = judge_claims(*e.paper, run);
+    CHECK(verdicts[0].outcome == "too few samples");  // PCF 3 still has 3
+    run.cases[1].gpu_frame.stats.count = kMinTimingSamples;
+    verdicts = judge_claims(*e.paper, run);
+    CHECK(verdicts[0].outcome == "holds");
+    CHECK(verdicts[1].outcome == "holds");
+    const std::string report = paper_report(*e.paper, run);
+    CHECK(report.find("too few samples") != std::string::npos);  // the note on the rule
 }
 
 TEST_CASE("paper table errors name file:line and the fix") {

@@ -12,11 +12,18 @@
 #include "run/interrupt.hpp"
 #include "run/kernel_scaling.hpp"
 #include "report/atomic_file.hpp"
+#include "report/console_table.hpp"
+#include "core/plan_requirements.hpp"
+#include "run/environment.hpp"
+#include "run/output_folder.hpp"
+#include "run/run_identity.hpp"
 
 #include <CLI/CLI.hpp>
 #include <fmt/chrono.h>
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <csignal>
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
@@ -32,13 +39,29 @@ namespace {
 constexpr int kExitOk = 0;
 constexpr int kExitFailedCases = 1;
 constexpr int kExitBadInput = 2;
-constexpr int kExitInterrupted = 130;
+constexpr int kExitInterrupted = 130;   // 128 + SIGINT
+constexpr int kExitTerminated = 143;    // 128 + SIGTERM
 
 int list_techniques() {
+    // One column width for every technique, so long names do not push the columns apart.
+    size_t name_width = 0, type_width = 0, default_width = 0;
+    for (const Technique* t : TechniqueRegistry::instance().all())
+        for (const ParamSpec& p : t->params()) {
+            name_width = std::max(name_width, p.name.size());
+            type_width = std::max(type_width, p.type_and_range().size());
+            default_width = std::max(default_width, to_string(p.default_value).size());
+        }
     for (const Technique* t : TechniqueRegistry::instance().all()) {
-        fmt::print("{}\n  {}\n  from: {}\n  parameters:\n", t->name(), t->summary(), t->paper());
-        for (const ParamSpec& p : t->params())
-            fmt::print("    {:<14} {:<28} default {:<8} {}\n", p.name, p.type_and_range(), to_string(p.default_value), p.doc);
+        fmt::print("{}\n  {}\n  from: {}\n", t->name(), t->summary(), t->paper());
+        const std::vector<ParamSpec> specs = t->params();
+        const ParamSet defaults = ParamSet::resolve(specs, {}, {}, {}, t->name());
+        std::string requires_text;
+        for (const std::string& need : plan_requirements(t->plan(defaults)))
+            requires_text += (requires_text.empty() ? "" : "; ") + need;
+        fmt::print("  requires: {}\n  parameters:\n", requires_text.empty() ? "nothing beyond the scene" : requires_text);
+        for (const ParamSpec& p : specs)
+            fmt::print("    {:<{}}  {:<{}}  default {:<{}}  {}\n", p.name, name_width, p.type_and_range(), type_width,
+                       to_string(p.default_value), default_width, p.doc);
         fmt::print("\n");
     }
     return kExitOk;
@@ -116,39 +139,71 @@ int bench_scaling(const ScalingOptions& options, const std::string& device, cons
     return kExitOk;
 }
 
-int run(const fs::path& config, const std::string& out, bool quick, const std::string& device, bool progress,
-        bool with_reference, const ReferenceOptions& reference_options, ImageOutput images) {
+struct RunCommand {
+    fs::path config;
+    std::string out, device;
+    bool quick = false, progress = true, with_reference = true, resume = false, force = false;
+    ImageOutput images = ImageOutput::all;
+};
+
+int exit_code_for_interrupt() {
+    const int signal = interrupt_signal();
+    return signal == SIGTERM ? kExitTerminated : kExitInterrupted;
+}
+
+int run(const RunCommand& command, const ReferenceOptions& reference_options) {
     const TechniqueRegistry& registry = TechniqueRegistry::instance();
-    // Everything is checked (config, scenes, meshes, device support) before anything is written.
-    const Experiment experiment = load_experiment(config, registry);
-    GpuContext gpu(device);
+    // Everything is checked (config, scenes, meshes, device support, the output folder) before
+    // anything is written.
+    const Experiment experiment = load_experiment(command.config, registry);
+    GpuContext gpu(command.device);
     const PreparedExperiment prepared = prepare_experiment(experiment, registry, gpu);
 
     RunOptions options;
-    options.out_dir = out.empty() ? default_out_dir(experiment.name) : fs::path(out);
-    options.quick = quick;
-    options.show_progress = progress;
-    options.reference = with_reference;
-    options.images = images;
+    options.out_dir = command.out.empty() ? default_out_dir(experiment.name) : fs::path(command.out);
+    options.quick = command.quick;
+    options.show_progress = command.progress;
+    options.reference = command.with_reference;
+    options.images = command.images;
     options.reference_cache_dir = cache_dir(reference_options);
+    const RunIdentity identity = make_run_identity(experiment, options, collect_environment(gpu, experiment.config_hash));
+    const OutputFolderPlan folder = plan_output_folder(options.out_dir, identity, command.force, command.resume);
+    const OutputFolderLock lock(options.out_dir);  // one canopy process per folder
+    if (folder.replace) {
+        const size_t removed = remove_run_outputs(options.out_dir);
+        fmt::print(stderr, "canopy: --force: replacing {} ({} files of the earlier run removed)\n",
+                   options.out_dir.string(), removed);
+    }
+    options.previous = folder.previous ? &*folder.previous : nullptr;
+    if (options.previous)
+        fmt::print(stderr, "canopy: resuming the run in {} (status {}, {} of {} cases recorded)\n",
+                   options.out_dir.string(), options.previous->status, options.previous->cases.size(),
+                   prepared.cases.size());
     fmt::print(stderr, "canopy: {} cases on {} ({}); writing to {}\n", prepared.cases.size(), gpu.info().name,
                gpu.info().driver_info, options.out_dir.string());
     install_interrupt_handler();
     const RunRecord record = run_experiment(prepared, registry, gpu, options);
 
-    fmt::print("{}\n", markdown_table(record));
+    fmt::print("{}\n", console_table(record));
     fmt::print("results: {}\n", fs::absolute(options.out_dir).string());
-    fmt::print("  results.json, results.csv, results.md{}; images in images/ (EXR linear, PNG sRGB)\n",
+    fmt::print("  results.json, results.csv, results.md (every column){}; images in images/ (EXR linear, PNG sRGB)\n",
                experiment.paper ? ", paper.md" : "");
     if (experiment.paper) {
         fmt::print("\n{} ({}): claims\n", experiment.paper->id, experiment.paper->source);
         for (const ClaimVerdict& v : judge_claims(*experiment.paper, record))
-            fmt::print("  {:<13} {}\n", v.outcome, v.text);
+            fmt::print("  {:<15} {}\n", v.outcome, v.text);
+    }
+    if (!record.error.empty()) {
+        fmt::print(stderr, "canopy: the run failed: {}\n  hint: fix the cause (free space, permissions), then run the "
+                           "same command again: it resumes, keeping the finished cases results.json records\n",
+                   record.error);
+        return kExitFailedCases;
     }
     if (record.status == "interrupted") {
-        fmt::print(stderr, "canopy: interrupted after {} of {} cases; the finished ones are saved\n", record.cases.size(),
-                   record.planned_cases);
-        return kExitInterrupted;
+        fmt::print(stderr, "canopy: interrupted after {} of {} cases; the finished ones are saved. Run the same "
+                           "command again (or add --resume) to continue\n",
+                   record.cases.size(), record.planned_cases);
+        return exit_code_for_interrupt();
     }
     if (record.status == "failed") {
         for (const auto& c : record.cases)
@@ -164,11 +219,15 @@ int main(int argc, char** argv) {
     CLI::App app{"canopy: benchmark real-time rendering techniques for nature scenes against a ray-traced reference.\n"
                  "Measures how long each technique takes and how far its image is from the truth."};
     app.require_subcommand(1);
-    app.footer("Exit codes: 0 success, 1 a case failed (e.g. NaN pixels), 2 bad input (the message names file:line),\n"
-               "130 interrupted (finished cases are kept). Set CANOPY_VALIDATION=1 for Vulkan validation layers.");
+    app.set_version_flag("--version", [] {
+        return fmt::format("canopy {} ({} build, commit {})", CANOPY_VERSION, canopy_build_type(), source_commit());
+    });
+    app.footer("Exit codes: 0 success, 1 a case failed (e.g. NaN pixels) or a file could not be written, 2 bad input\n"
+               "(the message names file:line, or the output folder), 130 interrupted by Ctrl-C, 143 by SIGTERM\n"
+               "(finished cases are kept; the same command resumes). Set CANOPY_VALIDATION=1 for Vulkan validation layers.");
 
     std::string config_path, out_dir, device, scene_path;
-    bool quick = false, no_progress = false, no_reference = false;
+    bool quick = false, no_progress = false, no_reference = false, resume = false, force = false;
     std::string images = "all";
     ReferenceOptions reference_options;
     auto add_reference_options = [&](CLI::App* cmd, bool with_size) {
@@ -194,11 +253,22 @@ int main(int argc, char** argv) {
     run_cmd->add_option("--images", images, "which images to write: all (EXR, PNG, error maps), png, none")
         ->check(CLI::IsMember({"all", "png", "none"}))
         ->capture_default_str();
+    run_cmd->add_flag("--resume", resume,
+                      "continue the run in --out (stopped by Ctrl-C, SIGTERM, a kill or a full disk): its finished cases "
+                      "are kept, the rest run; the config and options must be the same");
+    run_cmd->add_flag("--force", force,
+                      "write into a folder that holds another run (its canopy files are removed first) or into "
+                      "committed results (results/paper/, results/baselines/)");
     add_reference_options(run_cmd, false);
     run_cmd->footer("Writes results.json (every sample, statistics, parameters, environment, errors), results.csv,\n"
-                    "results.md, and per case an EXR (linear float), a PNG (sRGB), an absolute-error heat map and a\n"
-                    "FLIP map, plus the reference images, into the output folder. The reference's sample counts come\n"
-                    "from the experiment's [reference] table; references are cached by content.");
+                    "results.md (every column; stdout gets a compact table), paper.md for experiments with a [paper]\n"
+                    "table, and in images/ per case an EXR (linear float), a PNG (sRGB), an absolute-error heat map and\n"
+                    "a FLIP map with colour bars, plus the reference images. The reference's sample counts come from the\n"
+                    "experiment's [reference] table; references are cached by content.\n"
+                    "Output folder: a new or empty one starts a run; one holding a run of the same experiment, config\n"
+                    "(content hash), options (--quick, --images, --no-reference), device and build continues it, keeping\n"
+                    "its finished cases; anything else, and results/paper/ or results/baselines/, is refused (exit 2)\n"
+                    "unless --force. One canopy process at a time writes into a folder.");
 
     CLI::App* reference_cmd = app.add_subcommand("reference", "Ray-trace the ground-truth image of a scene with Embree.");
     reference_cmd->add_option("scene", scene_path, "scene TOML, e.g. configs/scenes/spheres.toml")->required();
@@ -236,9 +306,19 @@ int main(int argc, char** argv) {
     try {
         if (*list_cmd) return list_techniques();
         if (*devices_cmd) return list_devices();
-        if (*run_cmd)
-            return run(config_path, out_dir, quick, device, !no_progress, !no_reference, reference_options,
-                       images == "none" ? ImageOutput::none : images == "png" ? ImageOutput::png : ImageOutput::all);
+        if (*run_cmd) {
+            RunCommand command;
+            command.config = config_path;
+            command.out = out_dir;
+            command.device = device;
+            command.quick = quick;
+            command.progress = !no_progress;
+            command.with_reference = !no_reference;
+            command.resume = resume;
+            command.force = force;
+            command.images = images == "none" ? ImageOutput::none : images == "png" ? ImageOutput::png : ImageOutput::all;
+            return run(command, reference_options);
+        }
         if (*reference_cmd) return reference(scene_path, out_dir, reference_options);
         if (*bench_reference_cmd) return bench_reference(scene_path, reference_options);
         if (*bench_scaling_cmd) return bench_scaling(scaling, device, out_dir);

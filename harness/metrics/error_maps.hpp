@@ -9,7 +9,8 @@ namespace canopy {
 
 // NOTE: unlike other canopy::Image values, the images returned here are NOT linear light: RGB holds
 // sRGB-encoded (display-ready) values in [0, 1], alpha = 1. Write them to an 8-bit PNG as they are;
-// do not apply another linear-to-sRGB conversion. There is no legend.
+// do not apply another linear-to-sRGB conversion. They have no legend: colour_bar.hpp draws one beside
+// them (the runner's error.png and flip.png have it).
 
 // |L_test - L_ref| per pixel (Rec. 709 luminance of the linear RGB values), divided by max_value,
 // clamped to [0, 1] and mapped through viridis (dark blue = 0, yellow = max_value or more).

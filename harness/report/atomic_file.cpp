@@ -1,31 +1,93 @@
 #include "report/atomic_file.hpp"
 
-#include <fstream>
-#include <stdexcept>
+#include <atomic>
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fcntl.h>
+#include <regex>
 #include <unistd.h>
 
 namespace canopy {
 
-void write_atomically(const std::filesystem::path& path, const std::function<void(const std::filesystem::path&)>& write) {
+namespace {
+
+// The test-only failure hook (see atomic_file.hpp): whether this write is one that must fail.
+bool injected_failure() {
+    struct Hook {
+        long after = -1;  // writes that succeed first; -1: no hook
+        bool persistent = false;
+    };
+    static const Hook hook = [] {
+        Hook h;
+        if (const char* value = std::getenv(kFailWriteAfterVariable); value && *value) {
+            char* end = nullptr;
+            h.after = std::strtol(value, &end, 10);
+            h.persistent = end && *end == '+';
+        }
+        return h;
+    }();
+    static std::atomic<long> writes{0};
+    if (hook.after < 0) return false;
+    const long index = writes.fetch_add(1);  // 0-based number of this write
+    return hook.persistent ? index >= hook.after : index == hook.after;
+}
+
+// Writes all of `bytes` to the open file `fd`; returns 0 or the errno of the failure.
+int write_all(int fd, std::string_view bytes, bool fail) {
+    if (fail) return ENOSPC;
+    while (!bytes.empty()) {
+        const ssize_t written = ::write(fd, bytes.data(), bytes.size());
+        if (written < 0) {
+            if (errno == EINTR) continue;
+            return errno;
+        }
+        bytes.remove_prefix(size_t(written));
+    }
+    return 0;
+}
+
+}  // namespace
+
+WriteError::WriteError(const std::filesystem::path& path, int code, const std::string& reason)
+    : std::runtime_error("cannot write " + path.string() + ": " + reason), code_(code) {}
+
+std::filesystem::path temporary_path(const std::filesystem::path& path) {
+    std::string name = ".";
+    name += path.stem().string();
+    name += ".tmp";
+    name += std::to_string(getpid());
+    name += path.extension().string();
     std::filesystem::path temp = path;
-    temp.replace_filename("." + path.stem().string() + ".tmp" + std::to_string(getpid()) + path.extension().string());
-    try {
-        write(temp);
-        std::filesystem::rename(temp, path);
-    } catch (...) {
-        std::error_code ignored;
-        std::filesystem::remove(temp, ignored);
-        throw;
+    temp.replace_filename(name);
+    return temp;
+}
+
+bool is_temporary_file(const std::filesystem::path& file) {
+    static const std::regex pattern(R"(\..*\.tmp[0-9]+(\.[A-Za-z0-9]+)?)");
+    return std::regex_match(file.filename().string(), pattern);
+}
+
+void write_bytes_atomically(const std::filesystem::path& path, std::string_view bytes) {
+    const std::filesystem::path temp = temporary_path(path);
+    const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    if (fd < 0) {
+        const int code = errno;
+        throw WriteError(path, code, std::strerror(code));
+    }
+    // No fsync: this protects readers and killed processes from half-written files, not a power cut.
+    int code = write_all(fd, bytes, injected_failure());
+    if (::close(fd) != 0 && code == 0) code = errno;  // some filesystems report a full disk only here
+    if (code == 0 && std::rename(temp.c_str(), path.c_str()) != 0) code = errno;
+    if (code != 0) {
+        ::unlink(temp.c_str());
+        throw WriteError(path, code, std::strerror(code));
     }
 }
 
 void write_text_atomically(const std::filesystem::path& path, const std::string& content) {
-    write_atomically(path, [&](const std::filesystem::path& temp) {
-        std::ofstream out(temp, std::ios::binary);
-        out << content;
-        out.close();
-        if (!out) throw std::runtime_error("cannot write " + temp.string());
-    });
+    write_bytes_atomically(path, content);
 }
 
 }  // namespace canopy

@@ -2,24 +2,31 @@
 
 #include "report/atomic_file.hpp"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
+#include <string_view>
+#include <vector>
 
 namespace canopy {
 
 namespace {
 
+// Encodes in memory, then writes the bytes atomically: a failed write reports the system's reason
+// (OpenImageIO's own file errors do not say why).
 void write_with_oiio(const std::filesystem::path& path, const OIIO::ImageSpec& spec, OIIO::TypeDesc type,
                      const void* pixels) {
-    write_atomically(path, [&](const std::filesystem::path& temp) {
-        auto out = OIIO::ImageOutput::create(temp.string());
-        if (!out || !out->open(temp.string(), spec) || !out->write_image(type, pixels) || !out->close())
-            throw std::runtime_error("cannot write image " + path.string() + ": " + OIIO::geterror());
-    });
+    std::vector<unsigned char> encoded;
+    OIIO::Filesystem::IOVecOutput memory(encoded);
+    auto out = OIIO::ImageOutput::create(path.string());
+    if (!out) throw std::runtime_error("cannot write image " + path.string() + ": " + OIIO::geterror());
+    if (!out->set_ioproxy(&memory) || !out->open(path.string(), spec) || !out->write_image(type, pixels) || !out->close())
+        throw std::runtime_error("cannot encode image " + path.string() + ": " + out->geterror());
+    write_bytes_atomically(path, std::string_view(reinterpret_cast<const char*>(encoded.data()), encoded.size()));
 }
 
 void write_png_8bit(const std::filesystem::path& path, const Image& image, bool encode_srgb) {
@@ -46,6 +53,9 @@ float linear_to_srgb(float linear) {
 void write_exr(const std::filesystem::path& path, const Image& image) {
     OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::FLOAT);
     spec.attribute("compression", "zip");
+    // No write time in the header (OpenImageIO adds one otherwise): the same image is the same
+    // bytes, whenever it is written (a resumed run, a determinism check).
+    spec.attribute("DateTime", "");
     write_with_oiio(path, spec, OIIO::TypeDesc::FLOAT, image.pixels.data());
 }
 

@@ -90,13 +90,18 @@ std::string json_report(const RunRecord& run) {
     for (const auto& c : run.cases) cases.push_back(case_json(c));
     nlohmann::json references = nlohmann::json::array();
     for (const auto& r : run.references) references.push_back(reference_json(r));
-    nlohmann::json j = {{"canopy_results_version", 1},
+    nlohmann::json identity = nlohmann::json::object();
+    for (const auto& [name, value] : run.identity.fields) identity[name] = value;
+    nlohmann::json j = {{"canopy_results_version", kResultsVersion},
                         {"experiment", run.experiment},
                         {"description", run.description},
                         {"config", run.config_file},
                         {"status", run.status},
+                        {"error", run.error},
+                        {"run_identity", identity},
                         {"started_at", run.started_at},
                         {"finished_at", run.finished_at},
+                        {"resumed_at", run.resumed_at},
                         {"warmup_frames", run.warmup_frames},
                         {"measured_frames", run.measured_frames},
                         {"quick", run.quick},

@@ -8,6 +8,9 @@
 
 namespace canopy {
 
+// 2: the run's identity (what a resumed run must match), resumed_at and the run's error.
+inline constexpr int kResultsVersion = 2;
+
 std::string json_report(const RunRecord& run);
 void write_json_report(const std::filesystem::path& path, const RunRecord& run);
 

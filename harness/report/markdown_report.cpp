@@ -1,6 +1,7 @@
 #include "report/markdown_report.hpp"
 
 #include "report/atomic_file.hpp"
+#include "report/text_table.hpp"
 
 #include <fmt/format.h>
 
@@ -10,34 +11,6 @@
 namespace canopy {
 
 namespace {
-
-std::string render(const std::vector<std::string>& header, const std::vector<std::vector<std::string>>& rows,
-                   const std::vector<bool>& right_aligned) {
-    std::vector<size_t> width(header.size());
-    for (size_t c = 0; c < header.size(); ++c) {
-        width[c] = std::max<size_t>(header[c].size(), 3);
-        for (const auto& row : rows) width[c] = std::max(width[c], row[c].size());
-    }
-    auto line = [&](const std::vector<std::string>& cells) {
-        std::string out = "|";
-        for (size_t c = 0; c < cells.size(); ++c)
-            out += right_aligned[c] ? fmt::format(" {:>{}} |", cells[c], width[c]) : fmt::format(" {:<{}} |", cells[c], width[c]);
-        return out + "\n";
-    };
-    std::string out = line(header) + "|";
-    for (size_t c = 0; c < header.size(); ++c)
-        out += right_aligned[c] ? std::string(width[c] + 1, '-') + ":|" : std::string(width[c] + 2, '-') + "|";
-    out += "\n";
-    for (const auto& row : rows) out += line(row);
-    return out;
-}
-
-// 4 significant digits; "-" where a metric does not apply (NaN), "inf" for identical images.
-std::string metric_cell(double value) {
-    if (std::isnan(value)) return "-";
-    if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
-    return fmt::format("{:.4g}", value);
-}
 
 std::string mib(uint64_t bytes) { return fmt::format("{:.2f}", double(bytes) / (1024.0 * 1024.0)); }
 
@@ -70,7 +43,7 @@ std::string markdown_table(const RunRecord& run) {
         for (const auto& p : c.passes) passes += fmt::format("{}{} {:.3f}", passes.empty() ? "" : ", ", p.name, p.stats.median);
         const bool timed = c.gpu_frame.stats.count > 0;
         std::vector<std::string> row = {
-            c.scene, fmt::format("{}x{}", c.resolution.width, c.resolution.height), c.technique, c.params_changed,
+            c.scene, fmt::format("{}x{}", c.resolution.width, c.resolution.height), c.technique, c.params_shown,
             timed ? fmt::format("{:.3f}", c.gpu_frame.stats.median) : "-",
             timed ? fmt::format("{:.3f}", c.gpu_frame.stats.mad) : "-",
             timed ? fmt::format("{:.1f}", 100.0 * c.gpu_frame.stats.cv) : "-",
@@ -88,7 +61,7 @@ std::string markdown_table(const RunRecord& run) {
         row.push_back(c.ok ? "ok" : "FAILED: " + c.error);
         rows.push_back(std::move(row));
     }
-    return render(header, rows, right);
+    return render_table(header, rows, right);
 }
 
 std::string markdown_report(const RunRecord& run) {
@@ -100,9 +73,13 @@ std::string markdown_report(const RunRecord& run) {
     out += fmt::format("- CPU: {}, nproc {}, LP_NUM_THREADS {}\n", e.cpu_model, e.nproc, e.lp_num_threads);
     out += fmt::format("- canopy {} ({} build), commit {}{}, config hash {}\n", e.canopy_version, e.build_type,
                        e.git_commit, e.git_dirty ? " (with uncommitted changes)" : "", e.config_hash);
-    out += fmt::format("- {} warm-up and {} measured frames per case{}; started {}, finished {}; status: {}\n\n",
-                       run.warmup_frames, run.measured_frames, run.quick ? " (--quick)" : "", run.started_at,
+    std::string resumed;
+    for (const std::string& at : run.resumed_at) resumed += (resumed.empty() ? ", resumed " : " and ") + at;
+    out += fmt::format("- {} warm-up and {} measured frames per case{}; started {}{}, finished {}; status: {}\n",
+                       run.warmup_frames, run.measured_frames, run.quick ? " (--quick)" : "", run.started_at, resumed,
                        run.finished_at.empty() ? "-" : run.finished_at, run.status);
+    if (!run.error.empty()) out += fmt::format("- the run stopped: {}\n", run.error);
+    out += "\n";
     out += markdown_table(run);
     if (!run.references.empty()) {
         out += "\nReferences (Embree, same shading model, area lights integrated):\n\n";

@@ -1,4 +1,5 @@
-// results.md and the console table: a readable, pasteable Markdown table per run.
+// results.md: a readable, pasteable Markdown table per run with every column (the console gets the
+// compact one, console_table.hpp).
 #pragma once
 
 #include "run/case_result.hpp"
@@ -8,7 +9,7 @@
 
 namespace canopy {
 
-// The table alone (also what `canopy run` prints).
+// The full table alone: timings, spread, passes, memory, every error column.
 std::string markdown_table(const RunRecord& run);
 // Title, environment, the table and notes on reading it.
 std::string markdown_report(const RunRecord& run);

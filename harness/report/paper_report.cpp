@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -95,6 +96,7 @@ std::vector<ClaimVerdict> judge_claims(const PaperComparison& paper, const RunRe
         const PaperRow* right = row_named(paper, claim.right);
         std::string numbers;
         int measured = 0, holding = 0, failing = 0;
+        size_t fewest_samples = std::numeric_limits<size_t>::max();
         for (size_t col = 0; col < paper.columns.size(); ++col) {
             if (!claim.column.empty() && paper.columns[col] != claim.column) continue;
             const CaseResult* l = find_case(paper, run, *left, col);
@@ -103,6 +105,8 @@ std::vector<ClaimVerdict> judge_claims(const PaperComparison& paper, const RunRe
             const double a = metric_of(*l, claim.metric), b = metric_of(*r, claim.metric);
             if (std::isnan(a) || std::isnan(b)) continue;
             ++measured;
+            if (claim.metric == "time")
+                fewest_samples = std::min({fewest_samples, l->gpu_frame.stats.count, r->gpu_frame.stats.count});
             // Renders are deterministic; timings are not: their noise band is 2 x (MAD + MAD).
             const double noise = claim.metric == "time" ? 2.0 * (l->gpu_frame.stats.mad + r->gpu_frame.stats.mad) : 0.0;
             bool holds = false, fails = false;
@@ -124,7 +128,9 @@ std::vector<ClaimVerdict> judge_claims(const PaperComparison& paper, const RunRe
                                    claim.relation == "about" && b != 0.0 ? fmt::format(" (ratio {:.2f})", a / b) : "",
                                    noise > 0.0 ? fmt::format(", noise ±{:.3g}", noise) : "");
         }
+        const bool too_few = measured > 0 && fewest_samples < kMinTimingSamples;
         if (measured == 0) v.outcome = "not measured";
+        else if (too_few) v.outcome = "too few samples";
         else if (failing > 0) v.outcome = "does not hold";
         else if (holding == measured) v.outcome = "holds";
         else v.outcome = "within noise";
@@ -132,6 +138,9 @@ std::vector<ClaimVerdict> judge_claims(const PaperComparison& paper, const RunRe
                                      : claim.relation == "less" ? "below" : "above";
         v.because = measured ? fmt::format("{} of {} is {} {}'s: {}", claim.metric, claim.left, relation, claim.right, numbers)
                              : "no measured case for one of the rows";
+        if (too_few)
+            v.because = fmt::format("too few samples ({} < {}) to judge a timing claim; {}", fewest_samples,
+                                    kMinTimingSamples, v.because);
         verdicts.push_back(v);
     }
     return verdicts;
@@ -234,8 +243,11 @@ std::string paper_report(const PaperComparison& paper, const RunRecord& run) {
     if (!verdicts.empty()) {
         out += "## Claims\n\n";
         for (const ClaimVerdict& v : verdicts) out += fmt::format("- **{}** — {} ({})\n", v.outcome, v.text, v.because);
-        out += "\nA timing claim holds or fails only by more than its noise band, 2 × (MAD + MAD) of the two medians; "
-               "inside it the verdict is \"within noise\". Error claims compare deterministic renders.\n\n";
+        out += fmt::format("\nA timing claim holds or fails only by more than its noise band, 2 × (MAD + MAD) of the two "
+                           "medians; inside it the verdict is \"within noise\". Timings of fewer than {} measured "
+                           "frames (--quick measures 3) judge no claim: \"too few samples\". Error claims compare "
+                           "deterministic renders.\n\n",
+                           kMinTimingSamples);
     }
     if (!paper.notes.empty()) out += paper.notes + "\n";
     return out;

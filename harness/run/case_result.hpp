@@ -5,6 +5,7 @@
 #include "metrics/image_metrics.hpp"
 #include "render/frame_renderer.hpp"
 #include "run/environment.hpp"
+#include "run/run_identity.hpp"
 #include "run/statistics.hpp"
 
 #include <optional>
@@ -26,7 +27,7 @@ struct CaseResult {
     Resolution resolution;
     std::vector<std::pair<std::string, ParamValue>> params;
     std::string params_summary;        // every value
-    std::string params_changed;        // only values that differ from the defaults ("-" if none)
+    std::string params_shown;          // swept parameters and values that differ from the defaults ("-" if none)
     std::vector<TimingSeries> passes;  // GPU time per pass
     TimingSeries gpu_frame;            // GPU time, first pass start to last pass end
     TimingSeries wall;                 // CPU wall time per frame, submit to completion
@@ -63,8 +64,11 @@ struct RunRecord {
     int warmup_frames = 0;
     int measured_frames = 0;
     bool quick = false;
+    RunIdentity identity;                 // what a run continuing this one must match
     std::string started_at, finished_at;  // ISO 8601, UTC
+    std::vector<std::string> resumed_at;  // when it was continued (--resume), ISO 8601, UTC
     std::string status = "running";       // running | complete | interrupted | failed
+    std::string error;                    // why the run stopped when it failed as a whole (e.g. a full disk)
     size_t planned_cases = 0;
     bool reference_enabled = false;
     std::vector<ReferenceRecord> references;

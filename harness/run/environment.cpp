@@ -32,7 +32,18 @@ std::string cpu_model() {
     return "unknown";
 }
 
+std::string git_command() { return std::string("git -C '") + CANOPY_SOURCE_DIR + "' "; }
+
 }  // namespace
+
+std::string canopy_build_type() { return CANOPY_BUILD_TYPE; }
+
+std::filesystem::path source_checkout() { return CANOPY_SOURCE_DIR; }
+
+std::string source_commit() {
+    const std::string commit = command_output(git_command() + "rev-parse HEAD 2>/dev/null");
+    return commit.empty() ? "unknown" : commit;
+}
 
 Environment collect_environment(const GpuContext& gpu, const std::string& config_hash) {
     Environment e;
@@ -45,10 +56,9 @@ Environment collect_environment(const GpuContext& gpu, const std::string& config
     e.cpu_model = cpu_model();
     e.build_type = CANOPY_BUILD_TYPE;
     e.canopy_version = CANOPY_VERSION;
-    const std::string git = std::string("git -C '") + CANOPY_SOURCE_DIR + "' ";
-    e.git_commit = command_output(git + "rev-parse HEAD 2>/dev/null");
-    if (e.git_commit.empty()) e.git_commit = "unknown";
-    else e.git_dirty = !command_output(git + "status --porcelain --untracked-files=no 2>/dev/null").empty();
+    e.git_commit = source_commit();
+    if (e.git_commit != "unknown")
+        e.git_dirty = !command_output(git_command() + "status --porcelain --untracked-files=no 2>/dev/null").empty();
     char host[256] = {};
     gethostname(host, sizeof host - 1);
     e.hostname = host;

@@ -5,6 +5,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include <filesystem>
 #include <string>
 
 namespace canopy {
@@ -24,6 +25,10 @@ struct Environment {
 };
 
 Environment collect_environment(const GpuContext& gpu, const std::string& config_hash);
+// The checkout this binary was built from, and its commit ("unknown" outside a git checkout).
+std::filesystem::path source_checkout();
+std::string source_commit();
+std::string canopy_build_type();  // CMAKE_BUILD_TYPE of this binary
 void to_json(nlohmann::json& j, const Environment& e);
 
 }  // namespace canopy

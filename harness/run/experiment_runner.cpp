@@ -1,6 +1,7 @@
 #include "run/experiment_runner.hpp"
 
 #include "config/experiment_config.hpp"
+#include "metrics/colour_bar.hpp"
 #include "metrics/comparable_pair.hpp"
 #include "metrics/error_maps.hpp"
 #include "report/csv_report.hpp"
@@ -9,8 +10,13 @@
 #include "report/markdown_report.hpp"
 #include "report/paper_report.hpp"
 #include "run/interrupt.hpp"
+#include "run/case_labels.hpp"
+#include "run/output_folder.hpp"
 #include "run/progress.hpp"
+#include "run/recorded_path.hpp"
 #include "run/reference_provider.hpp"
+#include "run/run_identity.hpp"
+#include "run/test_hooks.hpp"
 
 #include <fmt/chrono.h>
 #include <fmt/format.h>
@@ -18,6 +24,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <map>
+#include <optional>
+#include <set>
 
 namespace canopy {
 
@@ -37,19 +46,7 @@ TimingSeries series(std::string name, std::vector<double> samples) {
     return t;
 }
 
-// "kernel=5 pattern=poisson": the values that differ from the technique's defaults.
-std::string changed_params(const Technique& technique, const ParamSet& params) {
-    std::string out;
-    const auto specs = technique.params();
-    for (const auto& [name, value] : params.values()) {
-        auto spec = std::find_if(specs.begin(), specs.end(), [&](const ParamSpec& s) { return s.name == name; });
-        if (spec != specs.end() && to_string(spec->default_value) == to_string(value)) continue;
-        out += fmt::format("{}{}={}", out.empty() ? "" : " ", name, to_string(value));
-    }
-    return out.empty() ? "-" : out;
-}
-
-CaseResult case_header(const Case& c, const Scene& scene, const Technique& technique) {
+CaseResult case_header(const Case& c, const Scene& scene) {
     CaseResult result;
     result.id = c.id;
     result.scene = scene.name;
@@ -57,7 +54,6 @@ CaseResult case_header(const Case& c, const Scene& scene, const Technique& techn
     result.resolution = c.resolution;
     result.params = c.params.values();
     result.params_summary = c.params.summary();
-    result.params_changed = changed_params(technique, c.params);
     return result;
 }
 
@@ -110,7 +106,7 @@ PreparedExperiment prepare_experiment(const Experiment& experiment, const Techni
 CaseResult measure_case(const Case& c, const Scene& scene, const std::vector<TriangleMesh>& meshes,
                         const Technique& technique, const GpuContext& gpu, int warmup_frames, int measured_frames,
                         Image* image_out) {
-    CaseResult result = case_header(c, scene, technique);
+    CaseResult result = case_header(c, scene);
     FrameRenderer renderer(gpu, scene, meshes, uint32_t(c.resolution.width), uint32_t(c.resolution.height),
                            technique.plan(c.params));
     for (int i = 0; i < warmup_frames && !interrupt_requested(); ++i) renderer.render();
@@ -140,14 +136,51 @@ CaseResult measure_case(const Case& c, const Scene& scene, const std::vector<Tri
     return result;
 }
 
+namespace {
+
+// Which of the previous run's cases (and references) this run keeps: finished, recorded, and with
+// every file they name still on disk. A case that failed is run again.
+struct KeptResults {
+    std::map<std::string, CaseResult> cases;  // by case id
+    std::vector<ReferenceRecord> references;
+};
+
+bool same_reference(const ReferenceRecord& r, const std::string& scene, const Resolution& resolution) {
+    return r.scene == scene && r.resolution.width == resolution.width && r.resolution.height == resolution.height;
+}
+
+bool files_exist(const std::filesystem::path& dir, std::initializer_list<const std::string*> files) {
+    return std::all_of(files.begin(), files.end(),
+                       [&](const std::string* f) { return f->empty() || std::filesystem::is_regular_file(dir / *f); });
+}
+
+KeptResults kept_results(const RunRecord* previous, const std::filesystem::path& out) {
+    KeptResults kept;
+    if (!previous) return kept;
+    for (const ReferenceRecord& r : previous->references)
+        if (files_exist(out, {&r.image_exr, &r.image_png, &r.visibility_exr})) kept.references.push_back(r);
+    for (const CaseResult& c : previous->cases) {
+        const bool reference_kept =
+            !c.image_error || std::any_of(kept.references.begin(), kept.references.end(),
+                                          [&](const ReferenceRecord& r) { return same_reference(r, c.scene, c.resolution); });
+        if (c.ok && reference_kept && files_exist(out, {&c.image_exr, &c.image_png, &c.error_map_png, &c.flip_map_png}))
+            kept.cases.emplace(c.id, c);
+    }
+    return kept;
+}
+
+}  // namespace
+
 RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegistry& registry, const GpuContext& gpu,
                          const RunOptions& options) {
     const Experiment& experiment = *prepared.experiment;
+    const std::filesystem::path& out = options.out_dir;
     RunRecord run;
     run.experiment = experiment.name;
     run.description = experiment.description;
-    run.config_file = experiment.file.string();
+    run.config_file = recorded_path(experiment.file);
     run.environment = collect_environment(gpu, experiment.config_hash);
+    run.identity = make_run_identity(experiment, options, run.environment);
     run.quick = options.quick;
     run.warmup_frames = options.quick ? std::min(experiment.warmup_frames, 1) : experiment.warmup_frames;
     run.measured_frames = options.quick ? std::min(experiment.measured_frames, 3) : experiment.measured_frames;
@@ -155,110 +188,185 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
     run.planned_cases = prepared.cases.size();
     run.reference_enabled = options.reference && experiment.reference_enabled;
 
-    const std::filesystem::path& out = options.out_dir;
-    std::filesystem::create_directories(out / "images");
-    write_reports(out, run, experiment);
-
-    ReferenceProvider references(options.reference_cache_dir, experiment.reference);
-    Progress progress(prepared.cases.size());
-    for (size_t i = 0; i < prepared.cases.size() && !interrupt_requested(); ++i) {
+    // A continued run keeps what the previous one finished; the rest is run in the planned order.
+    const KeptResults kept = kept_results(options.previous, out);
+    if (options.previous) {
+        run.started_at = options.previous->started_at;
+        run.resumed_at = options.previous->resumed_at;
+        run.resumed_at.push_back(utc_now());
+        run.references = kept.references;
+    }
+    const CaseLabels labels(prepared.cases, registry);
+    std::vector<std::optional<CaseResult>> slots(prepared.cases.size());  // planned order
+    for (size_t i = 0; i < prepared.cases.size(); ++i) {
         const Case& c = prepared.cases[i];
-        const Scene& scene = experiment.scenes[c.scene_index];
-        const Technique& technique = *registry.find(c.technique);
-        const std::string label = fmt::format("{} {}x{} {} {}", scene.name, c.resolution.width, c.resolution.height,
-                                              c.technique, changed_params(technique, c.params));
-        const auto start = std::chrono::steady_clock::now();
-
-        // The reference first, so a case's record is complete when it is written.
-        const ReferenceEntry* reference = nullptr;
-        if (run.reference_enabled) {
-            const std::string stem = reference_stem(scene, c.resolution);
-            const bool first_use = std::none_of(run.references.begin(), run.references.end(), [&](const ReferenceRecord& r) {
-                return r.scene == scene.name && r.resolution.width == c.resolution.width &&
-                       r.resolution.height == c.resolution.height;
-            });
-            if (options.show_progress && first_use) progress.start_case(i, "ray-tracing " + stem);
-            reference = &references.get(scene, prepared.meshes[c.scene_index], c.resolution.width, c.resolution.height,
-                                        [&](double fraction) {
-                                            if (options.show_progress)
-                                                progress.update_label(i, fmt::format("ray-tracing {} {:.0f}%", stem, 100.0 * fraction));
-                                        });
-            const bool recorded = std::any_of(run.references.begin(), run.references.end(),
-                                              [&](const ReferenceRecord& r) { return r.key == reference->key; });
-            if (!recorded) {
-                ReferenceRecord record;
-                record.scene = scene.name;
-                record.resolution = c.resolution;
-                record.key = reference->key;
-                record.from_cache = reference->from_cache;
-                record.seconds = reference->images.seconds;
-                record.shadow_rays = reference->images.shadow_rays;
-                record.light_samples = references.settings().light_samples;
-                record.pixel_samples = references.settings().pixel_samples;
-                record.error_map_scale = error_map_scale(reference->images.radiance);
-                if (options.images != ImageOutput::none) {
-                    record.image_png = "images/" + stem + ".png";
-                    write_png_srgb(out / record.image_png, reference->images.radiance);
-                }
-                if (options.images == ImageOutput::all) {
-                    record.image_exr = "images/" + stem + ".exr";
-                    record.visibility_exr = "images/" + stem + ".visibility.exr";
-                    write_exr(out / record.image_exr, reference->images.radiance);
-                    write_exr(out / record.visibility_exr, reference->images.visibility);
-                }
-                run.references.push_back(record);
-            }
+        if (auto it = kept.cases.find(c.id); it != kept.cases.end()) {
+            CaseResult result = it->second;  // measurements as recorded, labels from this run's cases
+            result.params = c.params.values();
+            result.params_summary = c.params.summary();
+            result.params_shown = labels.parameters(c);
+            slots[i] = std::move(result);
         }
+    }
+    auto record_cases = [&] {
+        run.cases.clear();
+        for (const auto& slot : slots)
+            if (slot) run.cases.push_back(*slot);
+    };
+    record_cases();
 
-        if (options.show_progress) progress.start_case(i, label);
-        CaseResult result;
-        Image image;
-        try {
-            result = measure_case(c, scene, prepared.meshes[c.scene_index], technique, gpu, run.warmup_frames,
-                                  run.measured_frames, &image);
-        } catch (const GpuError& e) {
-            result = case_header(c, scene, technique);
-            result.ok = false;
-            result.error = e.what();
-        }
-        if (interrupt_requested()) break;  // this case did not finish: keep only the finished ones
-
-        if (!image.pixels.empty()) {
-            const bool pngs = options.images != ImageOutput::none;
-            if (options.images == ImageOutput::all) {
-                result.image_exr = "images/" + c.id + ".exr";
-                write_exr(out / result.image_exr, image);
-            }
-            if (pngs) {
-                result.image_png = "images/" + c.id + ".png";
-                write_png_srgb(out / result.image_png, image);
-            }
-            if (reference) {
-                const Image& truth = reference->images.radiance;
-                std::vector<float> flip_map;
-                result.image_error = compute_metrics(image, truth, &reference->images.visibility, {}, &flip_map);
-                if (pngs) {
-                    const auto record = std::find_if(run.references.begin(), run.references.end(),
-                                                     [&](const ReferenceRecord& r) { return r.key == reference->key; });
-                    result.error_map_png = "images/" + c.id + ".error.png";
-                    result.flip_map_png = "images/" + c.id + ".flip.png";
-                    write_png_display(out / result.error_map_png,
-                                      absolute_error_heatmap(image, truth, record->error_map_scale));
-                    write_png_display(out / result.flip_map_png, flip_heatmap(flip_map, image.width, image.height));
-                }
-            }
-        }
-        run.cases.push_back(std::move(result));
+    // References the cases still to run need, for the ETA.
+    std::set<std::string> references_needed;
+    for (size_t i = 0; i < prepared.cases.size(); ++i)
+        if (!slots[i])
+            references_needed.insert(fmt::format("{}@{}x{}", prepared.cases[i].scene_index, prepared.cases[i].resolution.width,
+                                                 prepared.cases[i].resolution.height));
+    Progress progress(prepared.cases.size(), run.reference_enabled ? references_needed.size() : 0);
+    ReferenceProvider references(options.reference_cache_dir, experiment.reference);
+    size_t measured = 0;  // cases this process measured
+    try {
+        std::filesystem::create_directories(out / "images");
+        if (options.previous) remove_temporary_files(out);
         write_reports(out, run, experiment);
-        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        if (options.show_progress) progress.finish_case(i, label, seconds, run.cases.back().ok);
+
+        for (size_t i = 0; i < prepared.cases.size() && !interrupt_requested(); ++i) {
+            const Case& c = prepared.cases[i];
+            const Scene& scene = experiment.scenes[c.scene_index];
+            const Technique& technique = *registry.find(c.technique);
+            const std::string label = fmt::format("{} {}x{} {} {}", scene.name, c.resolution.width, c.resolution.height,
+                                                  c.technique, labels.parameters(c));
+            if (slots[i]) {
+                if (options.show_progress) progress.kept_case(i, label);
+                continue;
+            }
+            const auto start = std::chrono::steady_clock::now();
+
+            // The reference first, so a case's record is complete when it is written.
+            const ReferenceEntry* reference = nullptr;
+            if (run.reference_enabled) {
+                const std::string stem = reference_stem(scene, c.resolution);
+                const std::string name = fmt::format("{} {}x{}", scene.name, c.resolution.width, c.resolution.height);
+                bool obtained_now = false;
+                bool source_from_cache = false;
+                const auto reference_start = std::chrono::steady_clock::now();
+                reference = &references.get(
+                    scene, prepared.meshes[c.scene_index], c.resolution.width, c.resolution.height,
+                    [&](double fraction) {
+                        if (options.show_progress) progress.reference_progress(i, name, fraction);
+                    },
+                    [&](bool from_cache) {
+                        obtained_now = true;
+                        source_from_cache = from_cache;
+                        if (options.show_progress) progress.reference_started(i, name, from_cache);
+                    });
+                if (obtained_now && options.show_progress)
+                    progress.reference_finished(
+                        i, name, std::chrono::duration<double>(std::chrono::steady_clock::now() - reference_start).count(),
+                        source_from_cache);
+                const bool recorded = std::any_of(run.references.begin(), run.references.end(),
+                                                  [&](const ReferenceRecord& r) { return same_reference(r, scene.name, c.resolution); });
+                if (!recorded) {
+                    ReferenceRecord record;
+                    record.scene = scene.name;
+                    record.resolution = c.resolution;
+                    record.key = reference->key;
+                    record.from_cache = reference->from_cache;
+                    record.seconds = reference->images.seconds;
+                    record.shadow_rays = reference->images.shadow_rays;
+                    record.light_samples = references.settings().light_samples;
+                    record.pixel_samples = references.settings().pixel_samples;
+                    record.error_map_scale = error_map_scale(reference->images.radiance);
+                    if (options.images != ImageOutput::none) {
+                        record.image_png = "images/" + stem + ".png";
+                        write_png_srgb(out / record.image_png, reference->images.radiance);
+                    }
+                    if (options.images == ImageOutput::all) {
+                        record.image_exr = "images/" + stem + ".exr";
+                        record.visibility_exr = "images/" + stem + ".visibility.exr";
+                        write_exr(out / record.image_exr, reference->images.radiance);
+                        write_exr(out / record.visibility_exr, reference->images.visibility);
+                    }
+                    run.references.push_back(record);
+                }
+            }
+
+            if (options.show_progress) progress.start_case(i, label);
+            CaseResult result;
+            Image image;
+            try {
+                result = measure_case(c, scene, prepared.meshes[c.scene_index], technique, gpu, run.warmup_frames,
+                                      run.measured_frames, &image);
+            } catch (const GpuError& e) {
+                result = case_header(c, scene);
+                result.ok = false;
+                result.error = e.what();
+            }
+            if (interrupt_requested()) break;  // this case did not finish: keep only the finished ones
+            result.params_shown = labels.parameters(c);
+            ++measured;
+
+            if (!image.pixels.empty()) {
+                const bool pngs = options.images != ImageOutput::none;
+                if (options.images == ImageOutput::all) {
+                    result.image_exr = "images/" + c.id + ".exr";
+                    write_exr(out / result.image_exr, image);
+                }
+                if (pngs) {
+                    result.image_png = "images/" + c.id + ".png";
+                    write_png_srgb(out / result.image_png, image);
+                }
+                if (reference) {
+                    const Image& truth = reference->images.radiance;
+                    std::vector<float> flip_map;
+                    result.image_error = compute_metrics(image, truth, &reference->images.visibility, {}, &flip_map);
+                    if (pngs) {
+                        const auto record = std::find_if(run.references.begin(), run.references.end(),
+                                                         [&](const ReferenceRecord& r) { return same_reference(r, scene.name, c.resolution); });
+                        result.error_map_png = "images/" + c.id + ".error.png";
+                        result.flip_map_png = "images/" + c.id + ".flip.png";
+                        // Each with its scale drawn beside it.
+                        write_png_display(out / result.error_map_png,
+                                          with_colour_bar(absolute_error_heatmap(image, truth, record->error_map_scale),
+                                                          viridis_colormap(), record->error_map_scale));
+                        write_png_display(out / result.flip_map_png,
+                                          with_colour_bar(flip_heatmap(flip_map, image.width, image.height),
+                                                          magma_colormap(), 1.0));
+                    }
+                }
+            }
+            test_hooks::case_images_written(measured);
+            slots[i] = std::move(result);
+            record_cases();
+            write_reports(out, run, experiment);
+            test_hooks::case_recorded(measured);
+            const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            if (options.show_progress) progress.finish_case(i, label, seconds, slots[i]->ok);
+        }
+    } catch (const std::exception& e) {
+        // The run cannot go on (a full disk, an unwritable folder, a reference that cannot be
+        // rendered): record why, if the disk still takes it.
+        if (options.show_progress) progress.done();
+        run.finished_at = utc_now();
+        run.status = "failed";
+        run.error = e.what();
+        try {
+            write_reports(out, run, experiment);
+        } catch (const std::exception& again) {
+            run.error += fmt::format(" (results.json could not record this either: {})", again.what());
+        }
+        return run;
     }
     if (options.show_progress) progress.done();
 
     run.finished_at = utc_now();
     const bool any_failed = std::any_of(run.cases.begin(), run.cases.end(), [](const CaseResult& c) { return !c.ok; });
     run.status = interrupt_requested() ? "interrupted" : any_failed ? "failed" : "complete";
-    write_reports(out, run, experiment);
+    try {
+        write_reports(out, run, experiment);
+    } catch (const std::exception& e) {
+        run.status = "failed";
+        run.error = e.what();
+    }
     return run;
 }
 

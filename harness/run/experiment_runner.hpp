@@ -18,6 +18,9 @@ struct RunOptions {
     ImageOutput images = ImageOutput::all;
     bool reference = true;                        // ray-trace references and compute errors (if the experiment enables it)
     std::filesystem::path reference_cache_dir;    // empty: no cache
+    // The run this one continues (read from out_dir's results.json, same identity): its finished
+    // cases whose files exist are kept, the others are run. Null: a new run.
+    const RunRecord* previous = nullptr;
 };
 
 // An experiment checked against the device: every case's plan fits its scene and the device,
@@ -32,7 +35,9 @@ struct PreparedExperiment {
 PreparedExperiment prepare_experiment(const Experiment& experiment, const TechniqueRegistry& registry,
                                       const GpuContext& gpu);
 
-// Writes results.json, results.csv, results.md and images/ under options.out_dir.
+// Writes results.json, results.csv, results.md and images/ under options.out_dir, rewriting the
+// reports after every case. A failure to write (a full disk, ...) ends the run with status
+// "failed" and the reason in RunRecord::error, recorded in results.json where the disk allows.
 RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegistry& registry, const GpuContext& gpu,
                          const RunOptions& options);
 

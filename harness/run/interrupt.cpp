@@ -7,12 +7,13 @@ namespace canopy {
 
 namespace {
 
-std::atomic<bool> requested{false};
+std::atomic<int> received{0};
 
 void on_signal(int signal) {
-    if (requested.exchange(true) && signal == SIGINT) {
-        std::signal(SIGINT, SIG_DFL);
-        std::raise(SIGINT);
+    int none = 0;
+    if (!received.compare_exchange_strong(none, signal)) {  // the second signal: stop now
+        std::signal(signal, SIG_DFL);
+        std::raise(signal);
     }
 }
 
@@ -23,6 +24,8 @@ void install_interrupt_handler() {
     std::signal(SIGTERM, on_signal);
 }
 
-bool interrupt_requested() { return requested.load(); }
+bool interrupt_requested() { return received.load() != 0; }
+
+int interrupt_signal() { return received.load(); }
 
 }  // namespace canopy

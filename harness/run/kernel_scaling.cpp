@@ -2,6 +2,7 @@
 
 #include "config/scene_config.hpp"
 #include "render/frame_renderer.hpp"
+#include "run/recorded_path.hpp"
 #include "run/statistics.hpp"
 
 #include <fmt/format.h>
@@ -125,7 +126,7 @@ std::string kernel_scaling_report(const std::vector<ScalingSeries>& series, cons
                        "(least squares over p in [0.2, 3.5], a ≥ 0 and b linear). Separable filters should give p ≈ 1, "
                        "K×K kernels (PCF, PCSS) p ≈ 2. Scene `{}` at {}x{}, {} warm-up + {} measured frames per "
                        "point; canopy {} on {} ({}), nproc {}, LP_NUM_THREADS {}, commit {}{}.\n\n",
-                       options.scene_file, options.width, options.height, options.warmup, options.measured,
+                       recorded_path(options.scene_file), options.width, options.height, options.warmup, options.measured,
                        e.canopy_version, e.device.name, e.device.driver_info, e.nproc, e.lp_num_threads, e.git_commit,
                        e.git_dirty ? " (with uncommitted changes)" : "");
     out += "| technique | swept | passes timed | fitted p | expected | R² | a (ms) | widths: median ms |\n";

@@ -2,55 +2,107 @@
 
 #include <fmt/format.h>
 
-#include <cstdio>
 #include <unistd.h>
 
 namespace canopy {
-
-namespace {
 
 std::string clock_text(double seconds) {
     const long s = long(seconds + 0.5);
     return s >= 3600 ? fmt::format("{}:{:02}:{:02}", s / 3600, (s / 60) % 60, s % 60) : fmt::format("{}:{:02}", s / 60, s % 60);
 }
 
-}  // namespace
+std::optional<double> estimate_remaining_seconds(double case_seconds, size_t cases_measured, size_t cases_left,
+                                                 double reference_seconds, size_t references_done,
+                                                 size_t references_left) {
+    if (cases_measured == 0) return std::nullopt;
+    double left = case_seconds / double(cases_measured) * double(cases_left);
+    if (references_done > 0) left += reference_seconds / double(references_done) * double(references_left);
+    return left;
+}
 
-Progress::Progress(size_t total_cases)
-    : total_(total_cases), terminal_(isatty(STDERR_FILENO) != 0), start_(std::chrono::steady_clock::now()) {}
+Progress::Progress(size_t total_cases, size_t references, std::FILE* out, std::optional<bool> terminal)
+    : total_(total_cases),
+      references_left_(references),
+      out_(out),
+      terminal_(terminal.value_or(isatty(fileno(out)) != 0)),
+      start_(std::chrono::steady_clock::now()) {}
+
+std::optional<double> Progress::remaining_seconds() const {
+    return estimate_remaining_seconds(case_seconds_, measured_, total_ - done_, reference_seconds_, references_done_,
+                                      references_left_);
+}
+
+std::string Progress::eta_text() const {
+    const auto left = remaining_seconds();
+    return left ? clock_text(*left) : "?";
+}
 
 void Progress::draw_bar(size_t done, const std::string& label) {
     constexpr int kWidth = 28;
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     const int filled = total_ ? int(kWidth * done / total_) : kWidth;
-    const std::string eta = done ? clock_text(elapsed / double(done) * double(total_ - done)) : "?";
     std::string text = fmt::format("\r[{}{}] {}/{}  elapsed {}  ETA {}  {}", std::string(size_t(filled), '#'),
-                                   std::string(size_t(kWidth - filled), '.'), done, total_, clock_text(elapsed), eta, label);
+                                   std::string(size_t(kWidth - filled), '.'), done, total_, clock_text(elapsed),
+                                   eta_text(), label);
     if (text.size() > 120) text.resize(120);
-    fmt::print(stderr, "{}\033[K", text);
-    std::fflush(stderr);
+    fmt::print(out_, "{}\033[K", text);
+    std::fflush(out_);
+}
+
+void Progress::line(const std::string& text) {
+    if (terminal_) fmt::print(out_, "\r\033[K{}\n", text);
+    else fmt::print(out_, "{}\n", text);
+    std::fflush(out_);
+}
+
+void Progress::kept_case(size_t index, const std::string& label) {
+    ++done_;
+    ++kept_;
+    if (!terminal_) line(fmt::format("[{}/{}] {} kept from the earlier run", index + 1, total_, label));
+}
+
+void Progress::reference_started(size_t index, const std::string& name, bool from_cache) {
+    const std::string text = from_cache ? fmt::format("reference {}: from the cache", name)
+                                        : fmt::format("ray-tracing reference {} ...", name);
+    if (terminal_) draw_bar(done_, text);
+    else line(fmt::format("[{}/{}] {}", index + 1, total_, text));
+}
+
+void Progress::reference_progress(size_t, const std::string& name, double fraction) {
+    if (terminal_) draw_bar(done_, fmt::format("ray-tracing reference {} {:.0f}%", name, 100.0 * fraction));
+}
+
+void Progress::reference_finished(size_t index, const std::string& name, double seconds, bool from_cache) {
+    ++references_done_;
+    if (references_left_ > 0) --references_left_;
+    reference_seconds_ += seconds;
+    if (from_cache) return;  // reference_started said so
+    line(fmt::format("[{}/{}] reference {} ray-traced in {:.1f} s", index + 1, total_, name, seconds));
 }
 
 void Progress::start_case(size_t index, const std::string& label) {
-    if (terminal_) draw_bar(index, label);
-    else fmt::print(stderr, "[{}/{}] {} ...\n", index + 1, total_, label);
-}
-
-void Progress::update_label(size_t index, const std::string& label) {
-    if (terminal_) draw_bar(index, label);
+    if (terminal_) draw_bar(done_, label);
+    else line(fmt::format("[{}/{}] {} ...", index + 1, total_, label));
 }
 
 void Progress::finish_case(size_t index, const std::string& label, double seconds, bool ok) {
+    ++done_;
+    ++measured_;
+    case_seconds_ += seconds;
     if (terminal_) {
-        if (!ok) fmt::print(stderr, "\r\033[K[{}/{}] {} FAILED\n", index + 1, total_, label);
-        draw_bar(index + 1, label);
+        if (!ok) line(fmt::format("[{}/{}] {} FAILED", index + 1, total_, label));
+        draw_bar(done_, label);
     } else {
-        fmt::print(stderr, "[{}/{}] {} {} in {:.1f} s\n", index + 1, total_, label, ok ? "done" : "FAILED", seconds);
+        line(fmt::format("[{}/{}] {} {} in {:.1f} s, ETA {}", index + 1, total_, label, ok ? "done" : "FAILED", seconds,
+                         eta_text()));
     }
 }
 
 void Progress::done() {
-    if (terminal_) fmt::print(stderr, "\r\033[K");
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    std::string text = fmt::format("finished {} of {} cases in {}", done_, total_, clock_text(elapsed));
+    if (kept_ > 0) text += fmt::format(" ({} kept from the earlier run)", kept_);
+    line(text);
 }
 
 }  // namespace canopy

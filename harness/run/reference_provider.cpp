@@ -10,7 +10,8 @@ ReferenceProvider::ReferenceProvider(std::filesystem::path cache_dir, ReferenceS
     : cache_dir_(std::move(cache_dir)), settings_(settings) {}
 
 const ReferenceEntry& ReferenceProvider::get(const Scene& scene, const std::vector<TriangleMesh>& meshes, int width,
-                                             int height, const std::function<void(double)>& progress) {
+                                             int height, const std::function<void(double)>& progress,
+                                             const std::function<void(bool from_cache)>& started) {
     const std::string key = reference_cache_key(scene, meshes, width, height, settings_);
     if (auto it = entries_.find(key); it != entries_.end()) return it->second;
 
@@ -22,6 +23,7 @@ const ReferenceEntry& ReferenceProvider::get(const Scene& scene, const std::vect
             entry.from_cache = true;
         }
     }
+    if (started) started(entry.from_cache);
     if (!entry.from_cache) {
         entry.images = render_reference(scene, meshes, width, height, settings_, progress);
         if (!cache_dir_.empty()) {

@@ -23,9 +23,12 @@ public:
     // An empty cache_dir disables the cache (every reference is rendered).
     ReferenceProvider(std::filesystem::path cache_dir, ReferenceSettings settings);
 
-    // `progress` gets the fraction done while a reference is rendered (not called on a cache hit).
+    // `started` learns where a reference not yet in memory comes from (true: the cache, false:
+    // ray-traced now), before any rendering; `progress` gets the fraction done while a
+    // reference is rendered (not called on a cache hit).
     const ReferenceEntry& get(const Scene& scene, const std::vector<TriangleMesh>& meshes, int width, int height,
-                              const std::function<void(double)>& progress = {});
+                              const std::function<void(double)>& progress = {},
+                              const std::function<void(bool from_cache)>& started = {});
     const ReferenceSettings& settings() const { return settings_; }
 
 private:

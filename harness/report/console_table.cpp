@@ -1,0 +1,70 @@
+#include "report/console_table.hpp"
+
+#include "report/text_table.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+namespace canopy {
+
+namespace {
+
+// Cuts at a character boundary and marks the cut.
+std::string shortened(const std::string& text, size_t width) {
+    if (text.size() <= width) return text;
+    size_t cut = width - 1;
+    while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;
+    return text.substr(0, cut) + "…";
+}
+
+}  // namespace
+
+std::string console_table(const RunRecord& run) {
+    const bool errors = std::any_of(run.cases.begin(), run.cases.end(), [](const CaseResult& c) { return c.image_error.has_value(); });
+    const bool failures = std::any_of(run.cases.begin(), run.cases.end(), [](const CaseResult& c) { return !c.ok; });
+    std::vector<std::string> header = {"technique", "parameters", "GPU ms", "ratio"};
+    std::vector<bool> right = {false, false, true, true};
+    if (errors) {
+        header.insert(header.end(), {"PSNR dB", "FLIP", "penumbra RMSE"});
+        right.insert(right.end(), {true, true, true});
+    }
+    if (failures) {
+        header.push_back("status");
+        right.push_back(false);
+    }
+
+    std::string out;
+    std::vector<std::vector<std::string>> rows;
+    std::string group;
+    double baseline = 0.0;
+    auto flush = [&] {
+        if (!rows.empty()) out += (out.empty() ? "" : "\n") + group + "\n" + render_table(header, rows, right);
+        rows.clear();
+    };
+    for (const CaseResult& c : run.cases) {
+        const std::string this_group = fmt::format("{} {}x{}", c.scene, c.resolution.width, c.resolution.height);
+        if (this_group != group) {
+            flush();
+            group = this_group;
+            baseline = c.ok ? c.gpu_frame.stats.median : 0.0;
+        }
+        const bool timed = c.gpu_frame.stats.count > 0;
+        std::vector<std::string> row = {
+            c.technique, shortened(c.params_shown, kConsoleParametersWidth),
+            timed ? fmt::format("{:.3f}", c.gpu_frame.stats.median) : "-",
+            timed && baseline > 0 ? fmt::format("{:.2f}", c.gpu_frame.stats.median / baseline) : "-"};
+        if (errors) {
+            if (const auto& m = c.image_error)
+                for (double v : {m->psnr, m->flip_mean, m->penumbra_rmse}) row.push_back(metric_cell(v));
+            else
+                row.insert(row.end(), 3, "-");
+        }
+        if (failures) row.push_back(c.ok ? "ok" : "FAILED");
+        rows.push_back(std::move(row));
+    }
+    flush();
+    return out;
+}
+
+}  // namespace canopy

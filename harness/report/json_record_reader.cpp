@@ -1,0 +1,150 @@
+#include "report/json_record_reader.hpp"
+
+#include "report/json_report.hpp"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <limits>
+#include <stdexcept>
+
+namespace canopy {
+
+namespace {
+
+using nlohmann::json;
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// null (not applicable, or not finite) reads back as NaN.
+double metric(const json& value) { return value.is_null() ? kNaN : value.get<double>(); }
+
+SampleStats read_stats(const json& j) {
+    SampleStats s;
+    s.count = j.at("count").get<size_t>();
+    s.median = j.at("median").get<double>();
+    s.min = j.at("min").get<double>();
+    s.max = j.at("max").get<double>();
+    s.mean = j.at("mean").get<double>();
+    s.mad = j.at("mad").get<double>();
+    s.cv = j.at("cv").get<double>();
+    return s;
+}
+
+TimingSeries read_series(const json& j) {
+    return {j.at("name").get<std::string>(), j.at("samples_ms").get<std::vector<double>>(), read_stats(j.at("stats_ms"))};
+}
+
+ParamValue read_param(const json& j) {
+    if (j.is_boolean()) return j.get<bool>();
+    if (j.is_number_integer()) return j.get<long long>();
+    if (j.is_number()) return j.get<double>();
+    return j.get<std::string>();
+}
+
+ImageMetrics read_error(const json& j) {
+    ImageMetrics m{};
+    m.mae = metric(j.at("mae"));
+    m.rmse = metric(j.at("rmse"));
+    m.psnr = j.at("psnr_infinite").get<bool>() ? std::numeric_limits<double>::infinity() : metric(j.at("psnr_db"));
+    m.max_error = metric(j.at("max_error"));
+    m.max_x = j.at("max_error_pixel").at(0).get<int>();
+    m.max_y = j.at("max_error_pixel").at(1).get<int>();
+    m.ssim = metric(j.at("ssim"));
+    m.flip_mean = metric(j.at("flip_mean"));
+    m.flip_median_weighted = metric(j.at("flip_weighted_median"));
+    m.nonfinite_pixels = j.at("nonfinite_pixels").get<long long>();
+    m.light_bleeding = metric(j.at("light_bleeding"));
+    m.over_darkening = metric(j.at("over_darkening"));
+    m.penumbra_rmse = metric(j.at("penumbra_rmse"));
+    m.umbra_pixels = j.at("umbra_pixels").get<long long>();
+    m.lit_pixels = j.at("lit_pixels").get<long long>();
+    m.penumbra_pixels = j.at("penumbra_pixels").get<long long>();
+    return m;
+}
+
+CaseResult read_case(const json& j) {
+    CaseResult c;
+    c.id = j.at("id").get<std::string>();
+    c.scene = j.at("scene").get<std::string>();
+    c.technique = j.at("technique").get<std::string>();
+    c.resolution = {j.at("width").get<int>(), j.at("height").get<int>()};
+    for (const auto& [name, value] : j.at("params").items()) c.params.emplace_back(name, read_param(value));
+    c.ok = j.at("ok").get<bool>();
+    c.error = j.at("error").get<std::string>();
+    const json& timing = j.at("timing");
+    c.gpu_frame = read_series(timing.at("gpu_frame"));
+    c.wall = read_series(timing.at("wall"));
+    for (const json& pass : timing.at("passes")) c.passes.push_back(read_series(pass));
+    const json& memory = j.at("memory_bytes");
+    c.memory = {memory.at("technique").get<uint64_t>(), memory.at("targets").get<uint64_t>(),
+                memory.at("scene").get<uint64_t>()};
+    c.triangles = j.at("triangles").get<size_t>();
+    c.shadow_sampler = j.at("shadow_sampler").get<std::string>();
+    c.nonfinite_pixels = j.at("nonfinite_pixels").get<long long>();
+    if (!j.at("image_error").is_null()) c.image_error = read_error(j.at("image_error"));
+    const json& images = j.at("images");
+    c.image_exr = images.at("exr").get<std::string>();
+    c.image_png = images.at("png").get<std::string>();
+    c.error_map_png = images.at("error_map_png").get<std::string>();
+    c.flip_map_png = images.at("flip_map_png").get<std::string>();
+    return c;
+}
+
+ReferenceRecord read_reference(const json& j) {
+    ReferenceRecord r;
+    r.scene = j.at("scene").get<std::string>();
+    r.resolution = {j.at("width").get<int>(), j.at("height").get<int>()};
+    r.key = j.at("key").get<std::string>();
+    r.from_cache = j.at("from_cache").get<bool>();
+    r.seconds = j.at("seconds").get<double>();
+    r.shadow_rays = j.at("shadow_rays").get<uint64_t>();
+    r.light_samples = j.at("light_samples").get<int>();
+    r.pixel_samples = j.at("pixel_samples").get<int>();
+    r.error_map_scale = j.at("error_map_scale").get<double>();
+    const json& images = j.at("images");
+    r.image_exr = images.at("exr").get<std::string>();
+    r.image_png = images.at("png").get<std::string>();
+    r.visibility_exr = images.at("visibility_exr").get<std::string>();
+    return r;
+}
+
+}  // namespace
+
+RunRecord read_json_report(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) throw std::runtime_error(fmt::format("cannot read {}: it does not exist or cannot be opened", file.string()));
+    try {
+        const json j = json::parse(in);
+        const int version = j.at("canopy_results_version").get<int>();
+        if (version != kResultsVersion)
+            throw std::runtime_error(fmt::format("it is results version {}, this canopy reads version {}", version,
+                                                 kResultsVersion));
+        RunRecord run;
+        run.experiment = j.at("experiment").get<std::string>();
+        run.description = j.at("description").get<std::string>();
+        run.config_file = j.at("config").get<std::string>();
+        run.status = j.at("status").get<std::string>();
+        run.error = j.at("error").get<std::string>();
+        for (const auto& [name, value] : j.at("run_identity").items())
+            run.identity.fields.emplace_back(name, value.get<std::string>());
+        run.started_at = j.at("started_at").get<std::string>();
+        run.finished_at = j.at("finished_at").get<std::string>();
+        run.resumed_at = j.at("resumed_at").get<std::vector<std::string>>();
+        run.warmup_frames = j.at("warmup_frames").get<int>();
+        run.measured_frames = j.at("measured_frames").get<int>();
+        run.quick = j.at("quick").get<bool>();
+        run.planned_cases = j.at("planned_cases").get<size_t>();
+        run.reference_enabled = j.at("reference_enabled").get<bool>();
+        for (const json& r : j.at("references")) run.references.push_back(read_reference(r));
+        for (const json& c : j.at("cases")) run.cases.push_back(read_case(c));
+        return run;
+    } catch (const json::exception& e) {
+        throw std::runtime_error(fmt::format("cannot read {}: not a canopy results.json ({})", file.string(), e.what()));
+    } catch (const std::runtime_error& e) {
+        throw std::runtime_error(fmt::format("cannot read {}: {}", file.string(), e.what()));
+    }
+}
+
+}  // namespace canopy

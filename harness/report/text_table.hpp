@@ -1,0 +1,16 @@
+// Aligned Markdown tables, and the number formats every table of a run shares.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace canopy {
+
+// A Markdown table whose columns line up in plain text too.
+std::string render_table(const std::vector<std::string>& header, const std::vector<std::vector<std::string>>& rows,
+                         const std::vector<bool>& right_aligned);
+
+// 4 significant digits; "-" where a metric does not apply (NaN), "inf" for identical images.
+std::string metric_cell(double value);
+
+}  // namespace canopy

@@ -1,0 +1,34 @@
+#include "run/case_labels.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+namespace canopy {
+
+CaseLabels::CaseLabels(const std::vector<Case>& cases, const TechniqueRegistry& registry) : registry_(registry) {
+    for (const Case& c : cases)
+        for (const auto& [name, value] : c.params.values()) values_[c.technique][name].insert(to_string(value));
+}
+
+bool CaseLabels::swept(const std::string& technique, const std::string& parameter) const {
+    const auto technique_values = values_.find(technique);
+    if (technique_values == values_.end()) return false;
+    const auto parameter_values = technique_values->second.find(parameter);
+    return parameter_values != technique_values->second.end() && parameter_values->second.size() > 1;
+}
+
+std::string CaseLabels::parameters(const Case& c) const {
+    const Technique* technique = registry_.find(c.technique);
+    const std::vector<ParamSpec> specs = technique ? technique->params() : std::vector<ParamSpec>{};
+    std::string out;
+    for (const auto& [name, value] : c.params.values()) {
+        const auto spec = std::find_if(specs.begin(), specs.end(), [&](const ParamSpec& s) { return s.name == name; });
+        const bool is_default = spec != specs.end() && to_string(spec->default_value) == to_string(value);
+        if (is_default && !swept(c.technique, name)) continue;
+        out += fmt::format("{}{}={}", out.empty() ? "" : " ", name, to_string(value));
+    }
+    return out.empty() ? "-" : out;
+}
+
+}  // namespace canopy

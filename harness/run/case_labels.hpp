@@ -1,0 +1,30 @@
+// How a case's parameters are shown in tables and progress lines: every swept parameter — one
+// that takes more than one value among the experiment's cases of that technique, so rows can be
+// told apart even where a value is the default — and every other value that differs from its
+// default ("kernel=3 pattern=poisson").
+#pragma once
+
+#include "config/experiment.hpp"
+#include "core/registry.hpp"
+
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace canopy {
+
+class CaseLabels {
+public:
+    CaseLabels(const std::vector<Case>& cases, const TechniqueRegistry& registry);
+
+    // "kernel=3 resolution=256" in the technique's declaration order; "-" when nothing is shown.
+    std::string parameters(const Case& c) const;
+    bool swept(const std::string& technique, const std::string& parameter) const;
+
+private:
+    const TechniqueRegistry& registry_;
+    std::map<std::string, std::map<std::string, std::set<std::string>>> values_;  // technique -> parameter -> values
+};
+
+}  // namespace canopy

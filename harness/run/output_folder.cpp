@@ -1,0 +1,134 @@
+#include "run/output_folder.hpp"
+
+#include "core/error.hpp"
+#include "report/atomic_file.hpp"
+#include "report/json_record_reader.hpp"
+
+#include <fmt/format.h>
+
+#include <array>
+#include <cerrno>
+#include <cstring>
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+#include <vector>
+
+namespace canopy {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr std::array kReportFiles = {"results.json", "results.csv", "results.md", "paper.md"};
+
+bool is_empty_folder(const fs::path& dir) { return fs::is_directory(dir) && fs::directory_iterator(dir) == fs::directory_iterator(); }
+
+std::vector<fs::path> files_in(const fs::path& dir) {
+    std::vector<fs::path> files;
+    std::error_code error;
+    if (!fs::is_directory(dir, error)) return files;
+    for (const auto& entry : fs::directory_iterator(dir, error))
+        if (entry.is_regular_file(error)) files.push_back(entry.path());
+    return files;
+}
+
+std::string bulleted(const std::vector<std::string>& lines) {
+    std::string out;
+    for (const std::string& line : lines) out += "\n    " + line;
+    return out;
+}
+
+}  // namespace
+
+OutputFolderLock::OutputFolderLock(const fs::path& dir) {
+    fs::create_directories(dir);
+    fd_ = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (fd_ < 0) throw ConfigError(dir, 0, fmt::format("cannot open the output folder: {}", std::strerror(errno)));
+    if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+        const int code = errno;
+        ::close(fd_);
+        fd_ = -1;
+        if (code == EWOULDBLOCK)
+            throw ConfigError(dir, 0, "another canopy run is writing to this folder",
+                              "wait for it to finish (then run again to resume), or choose another --out");
+        throw ConfigError(dir, 0, fmt::format("cannot lock the output folder: {}", std::strerror(code)));
+    }
+}
+
+OutputFolderLock::~OutputFolderLock() {
+    if (fd_ >= 0) ::close(fd_);  // releases the lock
+}
+
+bool is_committed_results_folder(const fs::path& dir) {
+    const fs::path full = fs::weakly_canonical(fs::absolute(dir));
+    std::string previous;
+    for (const fs::path& part : full) {
+        const std::string name = part.string();
+        if (previous == "results" && (name == "paper" || name == "baselines")) return true;
+        previous = name;
+    }
+    return false;
+}
+
+OutputFolderPlan plan_output_folder(const fs::path& dir, const RunIdentity& identity, bool force, bool resume) {
+    const std::string another = "write somewhere else with --out (e.g. results/runs/<name>)";
+    if (is_committed_results_folder(dir) && !force)
+        throw ConfigError(dir, 0, "this folder holds committed results (results/paper/ or results/baselines/); "
+                                  "canopy does not write there unless told to",
+                          another + ", or add --force to regenerate them (then review `git diff`)");
+    if (fs::exists(dir) && !fs::is_directory(dir))
+        throw ConfigError(dir, 0, "--out names a file, not a folder", another);
+
+    OutputFolderPlan plan;
+    if (!fs::exists(dir) || is_empty_folder(dir)) {
+        if (resume)
+            throw ConfigError(dir, 0, "nothing to resume: the folder holds no run", "drop --resume to start a new run");
+        return plan;
+    }
+    if (force && !resume) {
+        plan.replace = true;
+        return plan;
+    }
+    if (!fs::exists(dir / "results.json"))
+        throw ConfigError(dir, 0, "the folder is not empty and holds no canopy run (no results.json); refusing to "
+                                  "write into it",
+                          another + ", or add --force to write into it anyway");
+    RunRecord previous;
+    try {
+        previous = read_json_report(dir / "results.json");
+    } catch (const std::runtime_error& e) {
+        throw ConfigError(dir, 0, fmt::format("the folder holds a run canopy cannot continue: {}", e.what()),
+                          another + ", or add --force to replace it");
+    }
+    const std::vector<std::string> differences = identity_differences(previous.identity, identity);
+    if (!differences.empty())
+        throw ConfigError(dir, 0,
+                          fmt::format("the folder holds another run (experiment '{}'); refusing to overwrite or mix "
+                                      "its results. It differs in:{}",
+                                      previous.experiment, bulleted(differences)),
+                          another + "; or run with the options of the folder's run to resume it; or add --force to "
+                                    "replace it");
+    plan.previous = std::move(previous);
+    return plan;
+}
+
+void remove_temporary_files(const fs::path& dir) {
+    for (const fs::path& folder : {dir, dir / "images"})
+        for (const fs::path& file : files_in(folder))
+            if (is_temporary_file(file)) fs::remove(file);
+}
+
+size_t remove_run_outputs(const fs::path& dir) {
+    size_t removed = 0;
+    for (const char* name : kReportFiles) removed += fs::remove(dir / name) ? 1 : 0;
+    for (const fs::path& file : files_in(dir / "images")) {
+        const std::string extension = file.extension().string();
+        if (extension == ".exr" || extension == ".png" || is_temporary_file(file)) removed += fs::remove(file) ? 1 : 0;
+    }
+    for (const fs::path& file : files_in(dir))
+        if (is_temporary_file(file)) removed += fs::remove(file) ? 1 : 0;
+    return removed;
+}
+
+}  // namespace canopy

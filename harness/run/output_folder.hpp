@@ -1,0 +1,52 @@
+// Where a run may write. A run never writes over another run's results (that would mix two
+// experiments' files and leave stale images), and never into committed results (results/paper/,
+// results/baselines/) unless asked to with --force. A folder that holds a run of the same
+// identity (run_identity.hpp) is continued: its finished cases are kept.
+#pragma once
+
+#include "run/case_result.hpp"
+#include "run/run_identity.hpp"
+
+#include <filesystem>
+#include <optional>
+
+namespace canopy {
+
+struct OutputFolderPlan {
+    std::optional<RunRecord> previous;  // a run to continue, or none: start afresh
+    bool replace = false;               // --force over a used folder: remove canopy's earlier outputs first
+};
+
+// Decides how a run with `identity` may use `dir`, before anything is written. Throws ConfigError
+// naming the folder (exit code 2) with what to do instead when the folder holds something else,
+// is committed results without `force`, or `resume` finds nothing to continue.
+//   empty or new folder   -> start afresh (with `resume`: error, nothing to continue)
+//   same identity         -> continue it (with or without `resume`)
+//   anything else         -> error; with `force` (and no `resume`): replace it
+OutputFolderPlan plan_output_folder(const std::filesystem::path& dir, const RunIdentity& identity, bool force,
+                                    bool resume);
+
+// While it lives, no other canopy process can hold the same folder (flock on the folder itself:
+// no lock file is left behind, and the lock goes with the process, also when it is killed).
+// Creates the folder. Throws ConfigError (exit code 2) when another run holds it.
+class OutputFolderLock {
+public:
+    explicit OutputFolderLock(const std::filesystem::path& dir);
+    ~OutputFolderLock();
+    OutputFolderLock(const OutputFolderLock&) = delete;
+    OutputFolderLock& operator=(const OutputFolderLock&) = delete;
+
+private:
+    int fd_ = -1;
+};
+
+// Whether `dir` is, or is under, a results/paper or results/baselines folder.
+bool is_committed_results_folder(const std::filesystem::path& dir);
+
+// Removes what a canopy run writes into a folder (results.json, .csv, .md, paper.md, the images'
+// EXR and PNG files, temporary files) and nothing else. Returns how many files it removed.
+size_t remove_run_outputs(const std::filesystem::path& dir);
+// Removes the temporary files a killed run left behind (atomic_file.hpp's names).
+void remove_temporary_files(const std::filesystem::path& dir);
+
+}  // namespace canopy

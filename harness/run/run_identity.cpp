@@ -1,0 +1,63 @@
+#include "run/run_identity.hpp"
+
+#include "config/experiment.hpp"
+#include "run/environment.hpp"
+#include "run/experiment_runner.hpp"
+
+#include <fmt/format.h>
+
+namespace canopy {
+
+namespace {
+
+const char* images_name(ImageOutput images) {
+    switch (images) {
+        case ImageOutput::all: return "all";
+        case ImageOutput::png: return "png";
+        case ImageOutput::none: return "none";
+    }
+    return "?";
+}
+
+std::string shown(const std::string* value) { return value ? "'" + *value + "'" : "nothing"; }
+
+}  // namespace
+
+const std::string* RunIdentity::find(const std::string& name) const {
+    for (const auto& [key, value] : fields)
+        if (key == name) return &value;
+    return nullptr;
+}
+
+RunIdentity make_run_identity(const Experiment& experiment, const RunOptions& options, const Environment& environment) {
+    RunIdentity identity;
+    auto add = [&](std::string name, std::string value) { identity.fields.emplace_back(std::move(name), std::move(value)); };
+    add("experiment", experiment.name);
+    add("config_hash", experiment.config_hash);
+    add("quick", options.quick ? "true" : "false");
+    add("images", images_name(options.images));
+    add("reference", options.reference && experiment.reference_enabled ? "on" : "off");
+    add("device", environment.device.name);
+    add("driver", environment.device.driver_info);
+    // Timings of one run are compared with each other, so every part must come from one build on
+    // the same threads.
+    add("commit", environment.git_commit + (environment.git_dirty ? " (with uncommitted changes)" : ""));
+    add("build_type", environment.build_type);
+    add("lp_num_threads", environment.lp_num_threads);
+    add("nproc", std::to_string(environment.nproc));
+    return identity;
+}
+
+std::vector<std::string> identity_differences(const RunIdentity& recorded, const RunIdentity& now) {
+    std::vector<std::string> differences;
+    for (const auto& [name, value] : now.fields) {
+        const std::string* before = recorded.find(name);
+        if (!before || *before != value)
+            differences.push_back(fmt::format("{}: the folder's run has {}, this one '{}'", name, shown(before), value));
+    }
+    for (const auto& [name, value] : recorded.fields)
+        if (!now.find(name)) differences.push_back(fmt::format("{}: the folder's run has '{}', this one nothing", name, value));
+    return differences;
+}
+
+}  // namespace canopy

@@ -1,0 +1,270 @@
+// What a run's folder holds and who may write there: the run's identity, the output-folder
+// decision (new, continue, refuse, replace), results.json read back exactly, and paths recorded
+// relative to the checkout.
+#include "config/experiment.hpp"
+#include "core/error.hpp"
+#include "report/atomic_file.hpp"
+#include "report/json_record_reader.hpp"
+#include "report/json_report.hpp"
+#include "run/experiment_runner.hpp"
+#include "run/kernel_scaling.hpp"
+#include "run/output_folder.hpp"
+#include "run/recorded_path.hpp"
+#include "run/run_identity.hpp"
+
+#include <doctest/doctest.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <unistd.h>
+
+using namespace canopy;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path fresh_folder(const std::string& name) {
+    const fs::path dir = fs::temp_directory_path() / ("canopy-test-folder-" + name + "-" + std::to_string(getpid()));
+    fs::remove_all(dir);
+    return dir;
+}
+
+Experiment tiny_experiment() {
+    Experiment e;
+    e.name = "tiny";
+    e.config_hash = "5d8ae7b4e274bd95";
+    return e;
+}
+
+Environment lavapipe() {
+    Environment env;
+    env.device.name = "llvmpipe (LLVM 15.0.6, 256 bits)";
+    env.device.driver_info = "Mesa 22.3.6 (LLVM 15.0.6)";
+    env.git_commit = "3a3b7f9";
+    env.build_type = "Release";
+    env.lp_num_threads = "unset";
+    env.nproc = 2;
+    return env;
+}
+
+RunIdentity identity(bool quick = true, ImageOutput images = ImageOutput::all, std::string hash = "5d8ae7b4e274bd95") {
+    Experiment e = tiny_experiment();
+    e.config_hash = std::move(hash);
+    RunOptions options;
+    options.quick = quick;
+    options.images = images;
+    return make_run_identity(e, options, lavapipe());
+}
+
+// A record with every kind of value a results.json holds, including the awkward ones.
+RunRecord awkward_record(const RunIdentity& id) {
+    RunRecord run;
+    run.experiment = "tiny";
+    run.description = "a \"quoted\" description";
+    run.config_file = "tests/data/experiments/tiny.toml";
+    run.identity = id;
+    run.warmup_frames = 1;
+    run.measured_frames = 3;
+    run.quick = true;
+    run.started_at = "2026-01-01T00:00:00Z";
+    run.resumed_at = {"2026-01-01T00:01:00Z"};
+    run.status = "interrupted";
+    run.planned_cases = 3;
+    run.reference_enabled = true;
+    ReferenceRecord r;
+    r.scene = "tiny";
+    r.resolution = {96, 64};
+    r.key = "00ff";
+    r.seconds = 0.1234567890123456789;
+    r.shadow_rays = 1ull << 40;
+    r.light_samples = 64;
+    r.pixel_samples = 4;
+    r.error_map_scale = 1.0 / 3.0;
+    r.image_png = "images/reference_tiny_96x64.png";
+    run.references.push_back(r);
+    CaseResult c;
+    c.id = "tiny_96x64_shadow.pcf_kernel-3";
+    c.scene = "tiny";
+    c.technique = "shadow.pcf";
+    c.resolution = {96, 64};
+    c.params = {{"exact", true}, {"kernel", 3LL}, {"pattern", std::string("grid")}, {"radius", 1.0}};
+    c.gpu_frame = {"gpu_frame", {0.1, 0.2 + 1e-17, 1.0 / 7.0}, {3, 0.2, 0.1, 1.0 / 7.0, 0.15, 0.05, 0.33}};
+    c.wall = {"wall", {1, 2, 3}, {3, 2, 1, 3, 2, 1, 0.5}};
+    c.passes = {{"shadow_map", {0.01, 0.02, 0.03}, {3, 0.02, 0.01, 0.03, 0.02, 0.01, 0.5}}};
+    c.memory = {262144, 100, 7};
+    c.triangles = 14;
+    c.shadow_sampler = "compare";
+    ImageMetrics m{};
+    m.mae = 0.01;
+    m.rmse = std::sqrt(2.0) / 100.0;
+    m.psnr = std::numeric_limits<double>::infinity();
+    m.max_error = 0.5;
+    m.max_x = 3;
+    m.max_y = 4;
+    m.ssim = 0.999;
+    m.flip_mean = 0.02;
+    m.flip_median_weighted = 0.03;
+    m.light_bleeding = std::numeric_limits<double>::quiet_NaN();
+    m.over_darkening = 1e-300;
+    m.penumbra_rmse = 0.07;
+    m.umbra_pixels = 10;
+    m.lit_pixels = 20;
+    m.penumbra_pixels = 30;
+    c.image_error = m;
+    c.image_exr = "images/a.exr";
+    c.image_png = "images/a.png";
+    c.error_map_png = "images/a.error.png";
+    c.flip_map_png = "images/a.flip.png";
+    run.cases.push_back(c);
+    CaseResult failed = c;
+    failed.id = "tiny_96x64_shadow.pcf_kernel-5";
+    failed.ok = false;
+    failed.error = "12 pixels are NaN or Inf";
+    failed.image_error.reset();
+    run.cases.push_back(failed);
+    return run;
+}
+
+}  // namespace
+
+TEST_CASE("a run's identity: what differs is named, field by field") {
+    CHECK(identity_differences(identity(), identity()).empty());
+    const auto quick = identity_differences(identity(true), identity(false));
+    REQUIRE(quick.size() == 1);
+    CHECK(quick[0] == "quick: the folder's run has 'true', this one 'false'");
+    const auto two = identity_differences(identity(true, ImageOutput::png, "aaaa"), identity(true, ImageOutput::all));
+    REQUIRE(two.size() == 2);
+    CHECK(two[0].find("config_hash") == 0);
+    CHECK(two[1].find("images: the folder's run has 'png', this one 'all'") == 0);
+    // The device, the build and the thread count are part of it: timings of one run compare.
+    for (const char* field : {"device", "driver", "commit", "build_type", "lp_num_threads", "nproc", "reference"})
+        CHECK_MESSAGE(identity().find(field) != nullptr, field);
+}
+
+TEST_CASE("results.json reads back exactly: every field, NaN, infinity, every digit") {
+    const fs::path dir = fresh_folder("roundtrip");
+    fs::create_directories(dir);
+    const RunRecord run = awkward_record(identity());
+    write_json_report(dir / "results.json", run);
+    const RunRecord back = read_json_report(dir / "results.json");
+    // Written again, the cases, references and run fields are the same text: nothing was lost.
+    const nlohmann::json a = nlohmann::json::parse(json_report(run)), b = nlohmann::json::parse(json_report(back));
+    for (const char* key : {"cases", "references", "run_identity", "status", "error", "started_at", "resumed_at",
+                            "measured_frames", "warmup_frames", "quick", "planned_cases", "config", "description"})
+        CHECK_MESSAGE(a[key].dump() == b[key].dump(), key);
+    CHECK(back.cases[0].gpu_frame.samples_ms[2] == 1.0 / 7.0);
+    CHECK(std::isinf(back.cases[0].image_error->psnr));
+    CHECK(std::isnan(back.cases[0].image_error->light_bleeding));
+    CHECK(std::get<bool>(back.cases[0].params[0].second) == true);
+    CHECK(std::get<long long>(back.cases[0].params[1].second) == 3);
+    CHECK(std::get<double>(back.cases[0].params[3].second) == 1.0);
+    CHECK(identity_differences(back.identity, identity()).empty());
+    fs::remove_all(dir);
+}
+
+TEST_CASE("results.json of another version or no results.json at all are refused with the reason") {
+    const fs::path dir = fresh_folder("version");
+    fs::create_directories(dir);
+    write_text_atomically(dir / "results.json", R"({"canopy_results_version": 1, "cases": []})");
+    CHECK_THROWS_WITH(read_json_report(dir / "results.json"),
+                      doctest::Contains("results version 1, this canopy reads version 2"));
+    write_text_atomically(dir / "results.json", "{ not json");
+    CHECK_THROWS_WITH(read_json_report(dir / "results.json"), doctest::Contains("not a canopy results.json"));
+    fs::remove_all(dir);
+}
+
+TEST_CASE("an output folder: new or empty starts, the same run continues, anything else is refused") {
+    const fs::path dir = fresh_folder("plan");
+    // New, then empty: a fresh run; --resume there has nothing to continue.
+    CHECK_FALSE(plan_output_folder(dir, identity(), false, false).previous);
+    CHECK_THROWS_WITH_AS(plan_output_folder(dir, identity(), false, true), doctest::Contains("nothing to resume"),
+                         ConfigError);
+    fs::create_directories(dir);
+    CHECK_FALSE(plan_output_folder(dir, identity(), false, false).previous);
+
+    // Holding a run of the same identity: continued, with or without --resume.
+    write_json_report(dir / "results.json", awkward_record(identity()));
+    for (bool resume : {false, true}) {
+        const OutputFolderPlan plan = plan_output_folder(dir, identity(), false, resume);
+        REQUIRE(plan.previous);
+        CHECK(plan.previous->cases.size() == 2);
+        CHECK_FALSE(plan.replace);
+    }
+    // Another config, other options: refused, naming what differs and what to do.
+    try {
+        plan_output_folder(dir, identity(false, ImageOutput::all, "ffff"), false, false);
+        FAIL("not refused");
+    } catch (const ConfigError& e) {
+        const std::string text = e.formatted();
+        CHECK(text.find(dir.string() + ": error: the folder holds another run") == 0);
+        CHECK(text.find("config_hash: the folder's run has '5d8ae7b4e274bd95', this one 'ffff'") != std::string::npos);
+        CHECK(text.find("quick: the folder's run has 'true', this one 'false'") != std::string::npos);
+        CHECK(text.find("--force") != std::string::npos);
+    }
+    CHECK_THROWS_AS(plan_output_folder(dir, identity(true, ImageOutput::png), false, true), ConfigError);
+    // --force replaces it (without --resume).
+    const OutputFolderPlan forced = plan_output_folder(dir, identity(false), true, false);
+    CHECK(forced.replace);
+    CHECK_FALSE(forced.previous);
+
+    // Files but no run: refused unless --force.
+    fs::remove(dir / "results.json");
+    std::ofstream(dir / "notes.txt") << "mine";
+    CHECK_THROWS_WITH_AS(plan_output_folder(dir, identity(), false, false), doctest::Contains("holds no canopy run"),
+                         ConfigError);
+    CHECK(plan_output_folder(dir, identity(), true, false).replace);
+    // A file is no folder.
+    CHECK_THROWS_WITH_AS(plan_output_folder(dir / "notes.txt", identity(), false, false),
+                         doctest::Contains("names a file"), ConfigError);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("committed results are refused without --force, even when empty or new") {
+    const fs::path root = fresh_folder("committed");
+    for (const fs::path& dir : {root / "results" / "paper" / "G-T7.1", root / "results" / "baselines" / "x" / "y",
+                                root / "results" / "paper"}) {
+        CAPTURE(dir.string());
+        CHECK(is_committed_results_folder(dir));
+        CHECK_THROWS_WITH_AS(plan_output_folder(dir, identity(), false, false),
+                             doctest::Contains("committed results"), ConfigError);
+        CHECK_FALSE(plan_output_folder(dir, identity(), true, false).previous);
+    }
+    CHECK(is_committed_results_folder(root / "results" / "runs" / ".." / "paper" / "x"));
+    CHECK_FALSE(is_committed_results_folder(root / "results" / "runs" / "paper"));
+    CHECK_FALSE(is_committed_results_folder(root / "paper"));
+    CHECK_FALSE(fs::exists(root));  // deciding writes nothing
+}
+
+TEST_CASE("replacing a run removes canopy's files only; a killed run's temporary files are cleaned") {
+    const fs::path dir = fresh_folder("replace");
+    fs::create_directories(dir / "images");
+    for (const char* name : {"results.json", "results.csv", "results.md", "paper.md", "notes.txt", "images/a.exr",
+                             "images/a.error.png", "images/.a.tmp123.png", ".results.tmp9.json", "images/keep.txt"})
+        std::ofstream(dir / name) << "x";
+    remove_temporary_files(dir);
+    CHECK_FALSE(fs::exists(dir / "images/.a.tmp123.png"));
+    CHECK_FALSE(fs::exists(dir / ".results.tmp9.json"));
+    CHECK(fs::exists(dir / "results.json"));
+    CHECK(remove_run_outputs(dir) == 6);
+    CHECK(fs::exists(dir / "notes.txt"));
+    CHECK(fs::exists(dir / "images/keep.txt"));
+    CHECK_FALSE(fs::exists(dir / "images/a.exr"));
+    fs::remove_all(dir);
+}
+
+TEST_CASE("paths in results are relative to the checkout, not the machine's folders") {
+    const fs::path checkout = CANOPY_SOURCE_DIR;
+    CHECK(recorded_path(checkout / "configs" / "scenes" / "spheres.toml") == "configs/scenes/spheres.toml");
+    CHECK(recorded_path(checkout / "configs" / ".." / "tests" / "data" / "scenes" / "tiny.toml") ==
+          "tests/data/scenes/tiny.toml");
+    CHECK(recorded_path("/nowhere/else.toml") == "/nowhere/else.toml");
+
+    ScalingOptions options;
+    options.scene_file = (checkout / "configs" / "scenes" / "spheres.toml").string();
+    const std::string report = kernel_scaling_report({}, lavapipe(), options);
+    CHECK(report.find("Scene `configs/scenes/spheres.toml`") != std::string::npos);
+    CHECK(report.find(checkout.string()) == std::string::npos);
+}
