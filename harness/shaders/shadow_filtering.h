@@ -232,18 +232,27 @@ CANOPY_FN vec4 evsm_moments(float z, float c_pos, float c_neg) {
 // sqrt(min_variance), and a receiver delta behind a single depth gets
 // k / (k + (1 - e^(-2c delta))^2), k = (2c)^2 min_variance -- more than VSM's floor would give.
 // Since Chebyshev's bound grows with the variance, max(variance, floor) is evaluated as the larger
-// of two bounds: the data's, var / (var + d^2) on the warped axis (no overflow: c <= 42 keeps
-// every square below 3.4e38), and the floor's on the axis divided by |w_r|, k / (k + q^2) with
-// q = d / |w_r| = sign(w_r) - mean / |w_r|. Each is exactly non-increasing in z_r in float
-// (every operation is monotone in z_r), so the result is too. Infinite moments (fp16 overflow)
-// are read as +-FLT_MAX as in chebyshev_upper_bound.
+// of two bounds:
+//  * the data's, var / (var + d^2), on the warped axis divided by the moments' own scale
+//    s = sqrt(E[w^2]). The ratio does not change with the unit, and in that unit E[w^2] = 1,
+//    E[w]^2 <= 1 and the variance is O(1): evaluated in raw warped units, a footprint near z = 0
+//    with c = 40 has var + d^2 ~ e^-73 (1e-32), below any fixed floor of the denominator (a floor
+//    of 1e-30 turned an edge half at z = 0, half at 0.05, receiver at 0.05, from 0.5 into 0.21).
+//    s does not depend on z_r, so the receiver's term w_r / s is monotone in z_r;
+//  * the floor's, k / (k + q^2) with q = d / |w_r| = sign(w_r) - mean / |w_r|.
+// Each is exactly non-increasing in z_r in float (every operation is monotone in z_r), so the
+// result is too. Scaled values stay finite: |w| <= e^42 and s >= |E[w]| >= e^-42 for a valid
+// footprint, so w_r / s <= e^84 < FLT_MAX; a d^2 that overflows to inf gives the limit 0.
+// Infinite moments (fp16 overflow) are read as +-FLT_MAX as in chebyshev_upper_bound, and a zero
+// E[w^2] (invalid, e.g. underflow) is floored at FLT_MIN.
 CANOPY_FN float sf_evsm_bound(vec2 moments, float w_r, float c, float min_variance) {
     float mean = clamp(moments.x, -SF_FLT_MAX, SF_FLT_MAX);
     if (w_r <= mean) return 1.0f;
-    float m2 = clamp(moments.y, 0.0f, SF_FLT_MAX);
-    float variance = max(m2 - mean * mean, 0.0f);
-    float d = w_r - mean;
-    float p_data = variance / max(variance + d * d, SF_TINY);
+    float scale = sqrt(clamp(moments.y, SF_FLT_MIN, SF_FLT_MAX));  // sqrt(E[w^2])
+    float mean_scaled = mean / scale;                              // |.| <= 1 for valid moments
+    float variance_scaled = max((1.0f - mean_scaled) * (1.0f + mean_scaled), 0.0f);  // less cancellation than 1 - m^2
+    float d_scaled = w_r / scale - mean_scaled;
+    float p_data = variance_scaled / max(variance_scaled + d_scaled * d_scaled, SF_TINY);
     float slope = 2.0f * c;
     float k = max(min_variance, 0.0f) * slope * slope;
     float q = (w_r > 0.0f ? 1.0f : -1.0f) - mean / abs(w_r);  // |w_r| >= exp(-42) > 0

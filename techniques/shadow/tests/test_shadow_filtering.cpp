@@ -2,6 +2,7 @@
 // hand-computed values, the papers' equations, and numerical stability at the extremes. Every
 // visibility must be finite, in [0, 1], non-increasing in the receiver depth and 1 in front of
 // its occluders; a NaN anywhere fails with a message naming the function and its inputs.
+#include "core/registry.hpp"
 #include "shadow_common.h"
 #include "shadow_filtering.h"
 
@@ -13,6 +14,7 @@
 #include <cstdio>
 #include <functional>
 #include <limits>
+#include <map>
 #include <numbers>
 #include <random>
 #include <string>
@@ -179,6 +181,12 @@ std::vector<Footprint> footprints() {
 }
 
 float footprint_min(const Footprint& f) { return *std::min_element(f.z.begin(), f.z.end()); }
+
+// A technique's plan for `given` parameters (the rest at their defaults): what its shaders get.
+canopy::FramePlan plan_of(const std::string& technique, const std::map<std::string, canopy::ParamValue>& given = {}) {
+    const canopy::Technique& t = *canopy::TechniqueRegistry::instance().find(technique);
+    return t.plan(canopy::ParamSet::resolve(t.params(), given, {}, {}, technique));
+}
 
 constexpr float kMinVariance = 1e-6f;
 constexpr float kMsmBias32 = 3e-5f;
@@ -562,6 +570,70 @@ TEST_CASE("EVSM light bleeding is below VSM's for a two-depth mixture") {
     // bounds it to about the truth, so EVSM4 gives ~0.5.
     CHECK(evsm2_visibility({s.evsm.x, s.evsm.y}, 0.4f, o.evsm_pos, kMinVariance) == 1.0f);
     CHECK(evsm4_visibility(s.evsm, 0.4f, o.evsm_pos, o.evsm_neg, kMinVariance) == doctest::Approx(0.5).epsilon(0.05));
+}
+
+// shadow.evsm's own exponents (c+ = 40, c- = 5; 5.54 for both in fp16) and min_variance, as its plan
+// hands them to the shader. An edge -- weight w_a at z_a, the rest at z_b = z_a + 0.05 -- seen by a
+// receiver at z_b: Chebyshev's bound of a two-point distribution at its far point is exactly the
+// far point's weight, on any increasing warp, so EVSM must give 1 - w_a over the whole depth range.
+// (The variance floors stay below that here.) Near the light the warped moments are tiny
+// (E[p^2] ~ e^-80 at z = 0): a fixed floor of the bound's denominator used to take over there
+// (0.21 instead of 0.5 for w_a = 1/2, z_a = 0).
+TEST_CASE("EVSM at the technique's default exponents: an edge's lit fraction from z = 0 to z = 1") {
+    // tolerance: against 1 - w_a; lit: how far from 1 a receiver in front may be (fp16 rounding).
+    struct Precision { std::string name; std::function<float(float)> quantise; float tolerance; float lit; };
+    for (const Precision& precision : {Precision{"fp32", [](float x) { return x; }, 1e-5f, 0.0f},
+                                       Precision{"fp16", half, 0.02f, 1e-4f}}) {
+        const canopy::FramePlan plan = plan_of("shadow.evsm", {{"precision", precision.name}});
+        const float c_pos = plan.shader_params.values[0], c_neg = plan.shader_params.values[1];
+        const float min_variance = plan.shader_params.values[3];
+        CAPTURE(precision.name);
+        CAPTURE(c_pos);
+        CAPTURE(c_neg);
+        if (precision.name == "fp32") {
+            CHECK(c_pos == 40.0f);  // the defaults this test is about
+            CHECK(c_neg == 5.0f);
+        }
+        StatsOptions o;
+        o.evsm_pos = c_pos;
+        o.evsm_neg = c_neg;
+        o.quantise = precision.quantise;
+        const float delta = 0.05f;
+        float worst4 = 0.0f, worst2 = 0.0f, worst_at = 0.0f;
+        for (int i = 0; i <= 190; ++i) {
+            const float z_a = std::min(float(i) / 200.0f, 1.0f - delta);  // 0, 0.005, ..., 0.95
+            const float z_b = z_a + delta;
+            for (float w_a : {0.25f, 0.5f, 0.75f}) {
+                const Stats s = statistics(mixture(z_a, z_b, w_a), o);
+                const float v4 = evsm4_visibility(s.evsm, z_b, c_pos, c_neg, min_variance);
+                const float v2 = evsm2_visibility({s.evsm.x, s.evsm.y}, z_b, c_pos, min_variance);
+                if (std::abs(v4 - (1.0f - w_a)) > worst4) worst_at = z_a;
+                worst4 = std::max(worst4, std::abs(v4 - (1.0f - w_a)));
+                worst2 = std::max(worst2, std::abs(v2 - (1.0f - w_a)));
+                // In front of both depths: lit.
+                CHECK(evsm4_visibility(s.evsm, std::max(z_a - 0.01f, 0.0f), c_pos, c_neg, min_variance) == 1.0f);
+            }
+        }
+        MESSAGE(precision.name, ": EVSM4 worst |error| ", worst4, " (at z_a = ", worst_at, "), EVSM2 ", worst2);
+        CHECK(worst4 <= precision.tolerance);
+        CHECK(worst2 <= precision.tolerance);
+        // The audit's example: half at 0, half at 0.05, receiver at 0.05.
+        const Stats s = statistics(mixture(0.0f, delta, 0.5f), o);
+        CHECK(evsm4_visibility(s.evsm, delta, c_pos, c_neg, min_variance) == doctest::Approx(0.5).epsilon(2.0 * precision.tolerance));
+
+        // Every footprint at these exponents: finite, in [0, 1], non-increasing, lit in front.
+        Sweep evsm4{"evsm4 defaults " + precision.name}, evsm2{"evsm2 defaults " + precision.name};
+        for (const Footprint& f : footprints()) {
+            const Stats st = statistics(f, o);
+            const float front = footprint_min(f);
+            evsm4.run(f.label, [&](float z) { return evsm4_visibility(st.evsm, z, c_pos, c_neg, min_variance); }, front,
+                      precision.lit, 0.0f);
+            evsm2.run(f.label, [&](float z) { return evsm2_visibility({st.evsm.x, st.evsm.y}, z, c_pos, min_variance); }, front,
+                      precision.lit, 0.0f);
+        }
+        evsm4.report();
+        evsm2.report();
+    }
 }
 
 // ---------------------------------------------------------------------------------------------
