@@ -85,6 +85,15 @@ CANOPY_FN float reduce_light_bleeding(float p, float amount) {
 // Linear storage overflows when c z > ln(FLT_MAX) = 88.72 (fp32) or ln(65504) = 11.09 (fp16):
 // an infinite stored value is read as FLT_MAX (ln = 88.72), which keeps the result finite and
 // monotone but not meaningful -- keep c below those bounds, or use log storage.
+// Largest exponent c whose linear storage exp(c z), z in [0, 1], cannot overflow: fp16 holds up to
+// 65504 = e^11.09 -> 11; fp32 up to 3.4e38 = e^88.72, and the box prefilter sums up to 63 texels
+// before dividing (63 = e^4.14) -> 84. shadow.esm refuses larger exponents with linear storage.
+CANOPY_CONST float ESM_MAX_EXPONENT_FP16 = 11.0f;
+CANOPY_CONST float ESM_MAX_EXPONENT_FP32 = 84.0f;
+CANOPY_FN float esm_max_exponent(bool half_precision) {
+    return half_precision ? ESM_MAX_EXPONENT_FP16 : ESM_MAX_EXPONENT_FP32;
+}
+
 CANOPY_FN float esm_visibility_log(float filtered_log, float z_r, float c) {
     float e = clamp(filtered_log - c * z_r, -87.0f, 0.0f);
     return exp(e);
