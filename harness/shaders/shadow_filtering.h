@@ -115,6 +115,46 @@ CANOPY_FN float log_sum_exp_weighted(float log_a, float weight_a, float log_b, f
 }
 
 // ---------------------------------------------------------------------------------------------
+// Bilinear lookups combined in a technique's own space. The lit pass fetches the four texels a
+// LINEAR lookup would blend (bilinear_texels.glsl) and combines them here, where hardware
+// filtering would blend the wrong quantity. Texel order (x, y) = (0, 0), (1, 0), (0, 1), (1, 1);
+// f is the lookup's fraction between them, in [0, 1]^2.
+
+// The weights of a LINEAR lookup at fraction f, in texel order; they sum to 1.
+CANOPY_FN vec4 bilinear_weights(vec2 f) {
+    return vec4((1.0f - f.x) * (1.0f - f.y), f.x * (1.0f - f.y), (1.0f - f.x) * f.y, f.x * f.y);
+}
+
+// Log-space ESM: the texels hold ln E[exp(c z)] of their prefilter window; the lookup must blend
+// the exponentials, log(sum w_i e^(l_i)), not the logs (which is a geometric mean: it drops an
+// edge's lit side from e^(c z_far) to e^(c (z_near + z_far) / 2)). Evaluated relative to the
+// largest log of positive weight (Salvi 2008), so nothing overflows for any c; a zero-weight texel
+// is ignored, however large its log.
+CANOPY_FN float esm_log_bilinear(vec4 logs, vec2 f) {
+    vec4 w = bilinear_weights(clamp(f, vec2(0.0f), vec2(1.0f)));
+    float m = -SF_FLT_MAX;
+    for (int i = 0; i < 4; ++i) if (w[i] > 0.0f) m = max(m, logs[i]);
+    float sum = 0.0f;
+    for (int i = 0; i < 4; ++i) if (w[i] > 0.0f) sum += w[i] * exp(logs[i] - m);
+    return m + log(max(sum, SF_FLT_MIN));
+}
+
+// Power CDF: each texel holds (min, max, mean) of its window. The lookup's mean is the bilinear
+// blend of the windows' means; its min and max are those of every window that blend weighs
+// (positive weight), so they bound every depth the mean averages -- blending the mins and maxes
+// too would give neither a min nor a max. Returns (z_min, z_max, mean).
+CANOPY_FN vec3 power_cdf_bilinear_statistics(vec3 t00, vec3 t10, vec3 t01, vec3 t11, vec2 f) {
+    vec4 w = bilinear_weights(clamp(f, vec2(0.0f), vec2(1.0f)));
+    float mean = w.x * t00.z + w.y * t10.z + w.z * t01.z + w.w * t11.z;
+    float lo = SF_FLT_MAX, hi = -SF_FLT_MAX;
+    if (w.x > 0.0f) { lo = min(lo, t00.x); hi = max(hi, t00.y); }
+    if (w.y > 0.0f) { lo = min(lo, t10.x); hi = max(hi, t10.y); }
+    if (w.z > 0.0f) { lo = min(lo, t01.x); hi = max(hi, t01.y); }
+    if (w.w > 0.0f) { lo = min(lo, t11.x); hi = max(hi, t11.y); }
+    return vec3(lo, hi, mean);
+}
+
+// ---------------------------------------------------------------------------------------------
 // Error functions (GLSL has no erf).
 
 // Winitzki 2008, as printed in Gumbau eq 7.3:

@@ -331,6 +331,48 @@ TEST_CASE("log_sum_exp_weighted is log(wa e^a + wb e^b) without overflow") {
     CHECK_MESSAGE(std::isfinite(both_zero), describe("both weights zero", both_zero));
 }
 
+// The log-space ESM lookup: texels hold ln E[exp(c z)]; a bilinear lookup must blend the
+// exponentials. Blending the logs (what a LINEAR sampler does) is a geometric mean.
+TEST_CASE("ESM log-space lookup blends exponentials, not logs") {
+    CHECK(bilinear_weights({0.25f, 0.5f}) == glm::vec4(0.375f, 0.125f, 0.375f, 0.125f));
+    const float c = 80.0f;  // the technique's default exponent
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    double worst = 0.0;
+    for (int i = 0; i < 2000; ++i) {
+        const glm::vec4 z(u(rng), u(rng), u(rng), u(rng));
+        const glm::vec2 f(u(rng), u(rng));
+        const glm::vec4 w = bilinear_weights(f);
+        double linear = 0.0;  // E[exp(c z)] in double
+        for (int k = 0; k < 4; ++k) linear += double(w[k]) * std::exp(double(c) * z[k]);
+        const float blended = esm_log_bilinear(c * z, f);
+        worst = std::max(worst, std::abs(double(blended) - std::log(linear)));
+        // Visibility at a receiver behind all four depths: the linear filter's value.
+        const float z_r = 1.0f;
+        const double expect = std::min(1.0, linear * std::exp(-double(c) * z_r));
+        CHECK(esm_visibility_log(blended, z_r, c) == doctest::Approx(expect).epsilon(2e-4));
+    }
+    CHECK(worst < 2e-5);
+    // The audit's failure: an edge between z = 0.2 and 0.9 looked up halfway, receiver at 0.9. The
+    // exponentials give ~0.5 (half the footprint is the receiver's own depth); the logs' blend
+    // gives exp(c (0.55 - 0.9)) ~ 7e-13.
+    const glm::vec4 edge = c * glm::vec4(0.2f, 0.9f, 0.2f, 0.9f);
+    const float v = esm_visibility_log(esm_log_bilinear(edge, {0.5f, 0.5f}), 0.9f, c);
+    CHECK(v == doctest::Approx(0.5).epsilon(1e-4));
+    const float logs_blended = glm::dot(bilinear_weights({0.5f, 0.5f}), edge);
+    CHECK(esm_visibility_log(logs_blended, 0.9f, c) < 1e-10f);
+    // Weight 0 drops a texel however large its log; extremes stay finite.
+    CHECK(esm_log_bilinear({1.0f, 1e30f, 1.0f, 1e30f}, {0.0f, 0.3f}) == doctest::Approx(1.0f));
+    for (glm::vec4 logs : {glm::vec4(-1e30f), glm::vec4(1e30f), glm::vec4(0.0f, 1e4f, -1e4f, 0.0f)}) {
+        for (glm::vec2 f : {glm::vec2(0.0f), glm::vec2(1.0f), glm::vec2(0.5f), glm::vec2(-1.0f, 2.0f)}) {
+            const float l = esm_log_bilinear(logs, f);
+            CHECK_MESSAGE(std::isfinite(l), describe("esm_log_bilinear", l));
+            const float vis = esm_visibility_log(l, 0.5f, c);
+            CHECK_MESSAGE((std::isfinite(vis) && vis >= 0.0f && vis <= 1.0f), describe("esm log visibility", vis));
+        }
+    }
+}
+
 // ---------------------------------------------------------------------------------------------
 TEST_CASE("erf approximations: measured error against std::erf") {
     double worst_winitzki = 0.0, worst_winitzki_at = 0.0, worst_winitzki_rel = 0.0;
@@ -456,6 +498,55 @@ TEST_CASE("power CDF: beta of eq 7.6 reproduces the mean") {
         // The shader's curve at t_mean = beta / (beta + 1) is the mean itself: lit there.
         CHECK(power_cdf_visibility(z_min, z_max, mean, mean) == 1.0f);
     }
+}
+
+// The power-CDF lookup: each texel holds (min, max, mean) of its prefilter window. The lookup's
+// mean blends the windows bilinearly; its min and max must bound every depth that mean averages,
+// i.e. be the min and max over the windows of positive weight. A LINEAR lookup blends them too.
+TEST_CASE("power CDF lookup: min and max over the blended texels, mean blended") {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    int blended_not_bounds = 0;
+    for (int i = 0; i < 2000; ++i) {
+        glm::vec3 t[4];
+        for (glm::vec3& texel : t) {  // a window: two depths and a weight between them
+            const float a = u(rng), b = u(rng), w = u(rng);
+            texel = {std::min(a, b), std::max(a, b), w * a + (1.0f - w) * b};
+        }
+        const glm::vec2 f(u(rng), u(rng));
+        const glm::vec4 w = bilinear_weights(f);
+        const glm::vec3 s = power_cdf_bilinear_statistics(t[0], t[1], t[2], t[3], f);
+        CHECK(s.z == doctest::Approx(w.x * t[0].z + w.y * t[1].z + w.z * t[2].z + w.w * t[3].z).epsilon(1e-6));
+        CHECK(s.x == std::min({t[0].x, t[1].x, t[2].x, t[3].x}));
+        CHECK(s.y == std::max({t[0].y, t[1].y, t[2].y, t[3].y}));
+        CHECK(s.x <= s.z);
+        CHECK(s.z <= s.y);
+        const float blended_min = w.x * t[0].x + w.y * t[1].x + w.z * t[2].x + w.w * t[3].x;
+        blended_not_bounds += blended_min > s.x + 1e-3f;  // a receiver between them is misjudged
+    }
+    CHECK(blended_not_bounds > 1000);  // what a LINEAR lookup would do, for the record
+    // At a texel centre (f = 0) the other texels have weight 0 and do not count.
+    const glm::vec3 near_window(0.2f, 0.8f, 0.5f), far_window(0.9f, 0.9f, 0.9f);
+    CHECK(power_cdf_bilinear_statistics(far_window, near_window, near_window, near_window, {0.0f, 0.0f}) == far_window);
+    // Halfway across an occluder edge: a receiver at 0.85 sits between the near window's depths
+    // and the far one's; with the bounds (0.2, 0.9) and mean 0.7 it is lit by
+    // (1 - t^beta) / (1 - t_mu^beta), t = 0.65 / 0.7, beta = 0.5 / 0.2.
+    const glm::vec3 s = power_cdf_bilinear_statistics(near_window, far_window, near_window, far_window, {0.5f, 0.5f});
+    CHECK(s == glm::vec3(0.2f, 0.9f, 0.7f));
+    const double beta = 2.5, t = 0.65 / 0.7, t_mu = beta / (beta + 1.0);
+    CHECK(power_cdf_visibility(s.x, s.y, s.z, 0.85f) ==
+          doctest::Approx((1.0 - std::pow(t, beta)) / (1.0 - std::pow(t_mu, beta))).epsilon(1e-4));
+    // The price (README): a texel leaving the blend at weight 0 leaves the min with it, so the
+    // reconstruction steps at texel centres. Window (0.5, 0.9, mean 0.7) beside one reaching 0.3:
+    // at the centre beta = 1 and v(0.8) = 0.5; a hair off it z_min = 0.3, beta = 2, v = 0.55.
+    const glm::vec3 own(0.5f, 0.9f, 0.7f), neighbour(0.3f, 0.9f, 0.6f);
+    const glm::vec3 at_centre = power_cdf_bilinear_statistics(own, neighbour, own, neighbour, {0.0f, 0.0f});
+    const glm::vec3 beside = power_cdf_bilinear_statistics(own, neighbour, own, neighbour, {1e-4f, 0.0f});
+    const float v_centre = power_cdf_visibility(at_centre.x, at_centre.y, at_centre.z, 0.8f);
+    const float v_beside = power_cdf_visibility(beside.x, beside.y, beside.z, 0.8f);
+    CHECK(v_centre == doctest::Approx(0.5).epsilon(1e-4));
+    CHECK(v_beside == doctest::Approx((1.0 - std::pow(0.5 / 0.6, 2.0)) / (1.0 - 4.0 / 9.0)).epsilon(1e-3));
+    CHECK(v_beside - v_centre < 0.06f);
 }
 
 TEST_CASE("power CDF limits: dz = 0, beta = 0, beta -> inf, inverted inputs") {
