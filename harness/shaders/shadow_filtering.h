@@ -372,12 +372,17 @@ CANOPY_FN float sf_bounded_div(float n, float d, float limit) {
 // to [-1, 1]) expressed for z in [0, 1]: b_target = (0.5, 0.407, 0.3605, 0.33725), the moments of
 // masses 0.314, 0.372, 0.314 at z = 0, 1/2, 1. Three atoms make its Hankel matrix positive
 // definite, so B' is for every valid b. (Blending is linear and the map from [-1, 1] moments to
-// [0, 1] moments is affine, so this is exactly their bias.) Measured on two-depth mixtures it is
-// also the best conditioned of the targets tried -- the reconstruction is non-increasing in z_r
-// to within 2.5e-6 with fp32 or unorm16 moments, against 1e-4..3e-3 for the uniform distribution's
-// moments (1/2, 1/3, 1/4, 1/5) and 6e-4..2e-3 for (0.5, 0.5, 0.5, 0.5).
-// alpha: ~3e-5 for fp32 moments, ~6e-5 for 16-bit unorm (the paper's values). Half floats
-// (rgba16f) keep only 11 bits over [0.5, 1] and reconstruct poorly: use rgba16 unorm for MSM.
+// [0, 1] moments is affine, so this is exactly their bias.) It is also the best conditioned of
+// the targets tried. The result should not rise with z_r, but float rounding in the solve makes
+// it dip just behind an atom (a band ~1e-4 wide in z). Worst step up, measured by
+// test_shadow_filtering.cpp ("MSM: measured rise"; fine sweeps around every atom of ~1300
+// footprints) and asserted there: fp32 moments, alpha 3e-5: 4.2e-5 (bound 1e-4); unorm16,
+// alpha 6e-5: 4.8e-5 (bound 1e-4). With the uniform distribution's moments as target: 1.5e-4
+// and 0.10; with (0.5, 0.5, 0.5, 0.5): 1.0e-4 and 0.016.
+// alpha: ~3e-5 for fp32 moments, ~6e-5 for 16-bit unorm (the paper's values); unorm16 with 3e-5
+// rises by 0.014 in the test (0.29 in a wider search). Half floats (rgba16f) keep only 11 bits
+// over [0.5, 1]: the result rises by up to 0.55 in the test (0.85 in a wider search) -- no
+// longer monotone in any useful sense: use rgba16 unorm for MSM.
 // A planar receiver (a single depth at z_r) gets 1 - G with G <= alpha (G is a lower bound for
 // every distribution with these moments, the biased one included, and the target puts at most
 // 0.686 of its mass below z_r); the usual remedy is a small depth bias subtracted from z_r.
