@@ -32,7 +32,7 @@ struct FilterPass {
     int radius = 1;                            // texels on each side of the centre
     bool horizontal = true;
     std::array<float, 4> params{};             // filter-specific
-    int downsample = 1;                        // output is 1/downsample of the input in both axes
+    int downsample = 1;                        // output is ceil(input / downsample) in both axes
 };
 
 // A depth-only shadow map rendered from the scene's shadow light. It stores linear depth
@@ -47,7 +47,7 @@ struct ShadowMapNeeds {
     bool compare_sampler = false;
     // Separable passes that turn the depth map into a "coarse" R32F map the lit or screen pass
     // samples at binding 4 (e.g. the min-filtered map of screen-space soft shadows). Pass 0
-    // reads the depth map itself.
+    // reads the depth map itself; every pass may read the frame uniforms (binding 2).
     std::vector<FilterPass> coarse_filters;
 };
 
