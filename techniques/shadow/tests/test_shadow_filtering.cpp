@@ -547,6 +547,19 @@ TEST_CASE("power CDF lookup: min and max over the blended texels, mean blended")
     CHECK(v_centre == doctest::Approx(0.5).epsilon(1e-4));
     CHECK(v_beside == doctest::Approx((1.0 - std::pow(0.5 / 0.6, 2.0)) / (1.0 - 4.0 / 9.0)).epsilon(1e-3));
     CHECK(v_beside - v_centre < 0.06f);
+    // Extremes: inverted, infinite or huge texels and fractions outside [0, 1] stay finite and
+    // in range once reconstructed.
+    const float big = std::numeric_limits<float>::max();
+    for (glm::vec3 odd : {glm::vec3(0.9f, 0.1f, 0.5f), glm::vec3(-kInf, kInf, 0.5f), glm::vec3(0.0f, big, big),
+                          glm::vec3(-big, 0.0f, -big), glm::vec3(0.3f)}) {
+        for (glm::vec2 f : {glm::vec2(0.0f), glm::vec2(1.0f), glm::vec2(0.5f), glm::vec2(-3.0f, 7.0f)}) {
+            const glm::vec3 st = power_cdf_bilinear_statistics(odd, own, neighbour, odd, f);
+            Sweep sweep{"power_cdf lookup of odd texels"};
+            sweep.run(describe("mean", st.z), [&](float z_r) { return power_cdf_visibility(st.x, st.y, st.z, z_r); }, -1.0f,
+                      0.0f, 0.0f);
+            sweep.report(true, false);
+        }
+    }
 }
 
 TEST_CASE("power CDF limits: dz = 0, beta = 0, beta -> inf, inverted inputs") {

@@ -373,10 +373,13 @@ TEST_CASE("SSSS blur taps: whole pixels, each once, weighted by the Gaussian of 
 namespace {
 
 // A synthetic screen for the blur: a camera at (0, 0, 5) looking down -z at a floor (the plane
-// z = 0, normal +z) whose left half (world x < 0) a light straight above (orthographic, along -z)
-// shadows, through a shadow map whose left half holds a blocker at depth 0.1.
+// z = 0, normal +z) which a light straight above (orthographic over [-5, 5]^2, along -z) shadows
+// for world x < kShadowEdge, through a 64^2 shadow map whose first 30 columns hold a blocker at
+// depth 0.1. The edge is off the camera's axis, so where along a view ray a point is matters.
 struct BlurScreen {
     static constexpr int kWidth = 64, kHeight = 8;
+    static constexpr int kBlockerColumns = 30;
+    static constexpr float kShadowEdge = -5.0f + 10.0f * float(kBlockerColumns) / 64.0f;  // -0.3125
     FrameUniforms frame{};
     glm::vec3 camera{0.0f, 0.0f, 5.0f};
     glm::mat4 inverse_view_proj{1.0f};
@@ -406,7 +409,8 @@ struct BlurScreen {
     }
     // Distance to the floor along pixel (x, y)'s ray, and where it meets the floor.
     float floor_distance(int x, int y) const { glm::vec3 r = ray(x, y); return -camera.z / r.z; }
-    bool floor_shadowed(int x, int y) const { return (camera + ray(x, y) * floor_distance(x, y)).x < 0.0f; }
+    static bool shadowed(const glm::vec3& p) { return p.x < kShadowEdge; }
+    bool floor_shadowed(int x, int y) const { return shadowed(camera + ray(x, y) * floor_distance(x, y)); }
 };
 
 // The blur's horizontal pass over `data` (per pixel: hard, sigma_x, sigma_y, distance) with the
@@ -419,7 +423,7 @@ Image blur_x(const BlurScreen& screen, const std::vector<float>& data, const std
     const Texture normal_map = upload_texture(ledger, BlurScreen::kWidth, BlurScreen::kHeight, VK_FORMAT_R32G32B32A32_SFLOAT, normals);
     std::vector<float> depth(64 * 64, 1.0f);
     for (int y = 0; y < 64; ++y)
-        for (int x = 0; x < 32; ++x) depth[size_t(y) * 64 + size_t(x)] = 0.1f;  // u < 0.5: world x < 0
+        for (int x = 0; x < BlurScreen::kBlockerColumns; ++x) depth[size_t(y) * 64 + size_t(x)] = 0.1f;
     const Texture shadow_map = upload_texture(ledger, 64, 64, VK_FORMAT_D32_SFLOAT, depth);
     const Buffer frame = upload_uniforms(ledger, screen.frame);
     const FramePlan plan = ssss_plan(given);
@@ -449,7 +453,7 @@ float expected_blur(const BlurScreen& screen, const std::vector<float>& data, in
             const glm::vec3 ray = screen.ray(x + o, y);
             const float t = sh::ssss_tangent_plane_distance({0.0f, 0.0f, 1.0f}, ray, centre_from_camera);
             if (t <= 0.0f) continue;
-            value = (screen.camera + ray * t).x < 0.0f ? 0.0f : 1.0f;  // the shadow map's blocker covers x < 0
+            value = BlurScreen::shadowed(screen.camera + ray * t) ? 0.0f : 1.0f;
         }
         const float w = sh::ssss_tap_weight(o, sigma);
         sum += w * value;
@@ -505,7 +509,7 @@ TEST_CASE("SSSS lazy shadowing on the device: hidden taps take the shadow of the
     const float sigma = 4.0f;
     const int taps = 11;
     // Columns 0-31 show a nearer, lit object (distance 2, not blurred: sigma 0); behind it the
-    // floor continues into the light's shadow (world x < 0). Columns 32+ show the lit floor.
+    // floor continues into the light's shadow (world x < -0.3125). Columns 32+ show the lit floor.
     std::vector<float> data;
     for (int y = 0; y < BlurScreen::kHeight; ++y)
         for (int x = 0; x < BlurScreen::kWidth; ++x) {
@@ -513,14 +517,15 @@ TEST_CASE("SSSS lazy shadowing on the device: hidden taps take the shadow of the
             data.insert(data.end(), {1.0f, object ? 0.0f : sigma, object ? 0.0f : sigma,
                                      object ? 2.0f : screen.floor_distance(x, y)});
         }
-    REQUIRE(screen.floor_shadowed(31, 3));
+    REQUIRE(screen.floor_shadowed(26, 3));  // hidden behind the object, in the light's shadow
+    REQUIRE_FALSE(screen.floor_shadowed(31, 3));  // hidden, lit
     REQUIRE_FALSE(screen.floor_shadowed(32, 3));
     const Image lazy = blur_x(screen, data, {{"kernel", (long long)taps}, {"lazy", true}});
     const Image dropped = blur_x(screen, data, {{"kernel", (long long)taps}, {"lazy", false}});
     const int y = 3;
     int wrong = 0, darker = 0;
     for (int x = 32; x < BlurScreen::kWidth; ++x) {
-        // Hidden taps (x < 32) read the floor's shadow behind the object: 0 there.
+        // Hidden taps (x < 32) read the floor's shadow behind the object: 0 beyond the edge.
         wrong += std::abs(lazy.at(x, y)[0] - expected_blur(screen, data, x, y, taps, 0.05f, true)) > 1e-4f;
         darker += lazy.at(x, y)[0] < 0.99f;
         CHECK(dropped.at(x, y)[0] == 1.0f);  // without lazy shadowing: only the visible, lit floor
