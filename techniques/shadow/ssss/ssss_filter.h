@@ -69,10 +69,11 @@ CANOPY_FN ivec2 ssss_coarse_texel(ivec2 shadow_texel, int block, ivec2 coarse_si
 // Gaussian is then sampled at every pixel of +-(taps - 1) / 2 instead of repeating the centre),
 // and rounded half away from zero, so the kernel is symmetric. Each weight is the Gaussian of the
 // tap's actual offset: the kernel is a Gaussian sampled at the pixels it reads, normalised by the
-// sum of the weights used.
+// sum of the weights used. Offsets are clamped to +-1e6 pixels (beyond any image; fetches clamp to
+// the edge), so a huge sigma (eq 6.2 near d_blocker = 0) cannot overflow the int.
 CANOPY_FN int ssss_tap_offset(int i, int taps, float sigma) {
     float spacing = taps > 1 ? max(6.0f * sigma / float(taps - 1), 1.0f) : 0.0f;
-    float offset = (float(i) - 0.5f * float(taps - 1)) * spacing;
+    float offset = clamp((float(i) - 0.5f * float(taps - 1)) * spacing, -1e6f, 1e6f);
     return int(sign(offset) * floor(abs(offset) + 0.5f));
 }
 

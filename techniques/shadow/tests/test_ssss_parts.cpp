@@ -28,6 +28,7 @@
 #include <cmath>
 #include <cstring>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <random>
 #include <string>
@@ -263,10 +264,12 @@ TEST_CASE("SSSS dilation in a render: the coarse map's blocker region grows with
         const int row = r.coarse.height / 2;
         for (int x = 0; x < r.coarse.width; ++x) covered += r.coarse.at(x, row)[0] < 0.9f;
         widths.push_back(covered);
-        // The reach of the box's top (2.5 from the light; the default occluder distance, the whole
-        // depth range, puts its receivers at the far plane), in whole coarse texels.
+        // The reach of the box's top (2.5 from the light) for receivers up to the default occluder
+        // distance behind it (a fraction of the light's depth range), in whole coarse texels.
         const LightView lv = compute_light_view(scene.lights.front(), scene_bounds(scene, build_scene_meshes(scene)), 1024);
-        const float reach = sh::ssss_dilation_texels(2.5f, lv.far_plane, lv.far_plane, side, lv.texel_world, true);
+        const float occluder_distance = ssss_plan().shadow_map->coarse_filters[1].params[1];
+        const float reach = sh::ssss_dilation_texels(2.5f, occluder_distance * (lv.far_plane - lv.near_plane),
+                                                     lv.far_plane, side, lv.texel_world, true);
         int radius = 0;
         while (sh::ssss_dilation_reaches(radius + 1, reach, block)) ++radius;
         radii.push_back(radius);
@@ -367,6 +370,27 @@ TEST_CASE("SSSS blur taps: whole pixels, each once, weighted by the Gaussian of 
                 CHECK(variance == doctest::Approx(double(sigma) * sigma).epsilon(0.15));
             }
         }
+    }
+}
+
+// Extremes: a sigma from eq 6.2 near d_blocker = 0 is huge, one at contact 0; both stay usable.
+TEST_CASE("SSSS sigma and taps at extremes stay finite") {
+    for (float d_b : {0.0f, 1e-30f, 1.0f, 1e30f})
+        for (float w : {0.0f, 1.0f, 1e30f})
+            for (float d_obs : {0.0f, 1.0f, 1e30f}) {
+                const float sigma = sh::ssss_sigma_pixels(10.0f, d_b, w, d_obs, 1000.0f);
+                CHECK_MESSAGE((std::isfinite(sigma) && sigma >= 0.0f), "sigma ", sigma);
+            }
+    for (float sigma : {0.0f, 1e-30f, 1e30f, std::numeric_limits<float>::infinity()}) {
+        CAPTURE(sigma);
+        for (int i = 0; i < 11; ++i) {
+            const int o = sh::ssss_tap_offset(i, 11, sigma);
+            CHECK(std::abs(o) <= 1000000);
+            CHECK(o == -sh::ssss_tap_offset(10 - i, 11, sigma));
+            const float w = sh::ssss_tap_weight(o, sigma);
+            CHECK((std::isfinite(w) && w >= 0.0f && w <= 1.0f));
+        }
+        CHECK(sh::ssss_tap_weight(0, sigma) == 1.0f);  // the centre always counts
     }
 }
 
