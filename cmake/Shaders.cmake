@@ -1,7 +1,8 @@
 # canopy_add_shaders(TARGET <target> SOURCES <file.vert|.frag|.comp ...>)
 # Compiles GLSL to SPIR-V at build time and embeds it: for shader `dir/name.stage`, the target
 # gets the header `shaders/name_stage.h` declaring `const uint32_t name_stage[]`.
-# Shaders #include files from harness/shaders (GL_GOOGLE_include_directive).
+# Shaders #include files from harness/shaders and from their own folder (GL_GOOGLE_include_directive);
+# a change to either rebuilds them.
 function(canopy_add_shaders)
   cmake_parse_arguments(ARG "" "TARGET" "SOURCES" ${ARGN})
   set(out_dir ${CMAKE_BINARY_DIR}/generated/shaders)
@@ -10,6 +11,8 @@ function(canopy_add_shaders)
   set(headers)
   foreach(src IN LISTS ARG_SOURCES)
     get_filename_component(abs ${src} ABSOLUTE)
+    get_filename_component(src_dir ${abs} DIRECTORY)
+    file(GLOB local_includes ${src_dir}/*.glsl ${src_dir}/*.h)  # includes beside the shader
     get_filename_component(name ${src} NAME_WE)
     get_filename_component(ext ${src} LAST_EXT)
     string(SUBSTRING ${ext} 1 -1 stage)
@@ -20,7 +23,7 @@ function(canopy_add_shaders)
       OUTPUT ${header}
       COMMAND ${GLSLANG_VALIDATOR} --quiet --target-env vulkan1.3 -I${PROJECT_SOURCE_DIR}/harness/shaders
               -I${CMAKE_CURRENT_SOURCE_DIR} --vn ${var} -o ${header} ${abs}
-      DEPENDS ${abs} ${shared_includes}
+      DEPENDS ${abs} ${shared_includes} ${local_includes}
       COMMENT "GLSL -> SPIR-V ${src}"
       VERBATIM)
     list(APPEND headers ${header})

@@ -311,7 +311,6 @@ std::vector<Case> expand_cases(const Experiment& experiment, const TechniqueRegi
                     throw ConfigError(entry.where.file, entry.where.line,
                                       fmt::format("unknown technique '{}'", entry.name),
                                       "run `canopy list` to see every technique");
-                const std::vector<ParamSpec> specs = technique->params();
                 const std::vector<std::string> keys = ordered_keys(entry);
 
                 // Odometer over the sweep: the first key varies slowest.
@@ -334,7 +333,7 @@ std::vector<Case> expand_cases(const Experiment& experiment, const TechniqueRegi
                     run_case.scene_index = scene_index;
                     run_case.resolution = resolution;
                     run_case.technique = entry.name;
-                    run_case.params = ParamSet::resolve(specs, given, entry.param_lines, entry.where, entry.name);
+                    run_case.params = resolve_params(*technique, given, entry.param_lines, entry.where);  // + conflicts
                     run_case.id = std::move(unique_id);
                     cases.push_back(std::move(run_case));
                 } while (advance(choice, keys, entry));

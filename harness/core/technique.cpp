@@ -1,5 +1,9 @@
 #include "core/technique.hpp"
 
+#include "core/error.hpp"
+
+#include <fmt/format.h>
+
 namespace canopy {
 
 const char* to_string(DepthFormat format) { return format == DepthFormat::d16 ? "d16" : "d32f"; }
@@ -28,6 +32,25 @@ uint32_t bytes_per_texel(MomentFormat format) {
         case MomentFormat::rgba16unorm: return 8;
     }
     return 0;
+}
+
+std::optional<ParamConflict> Technique::conflict(const ParamSet&) const { return std::nullopt; }
+
+ParamSet resolve_params(const Technique& technique, const std::map<std::string, ParamValue>& given,
+                        const std::map<std::string, int>& given_lines, const SourceLocation& where) {
+    ParamSet params = ParamSet::resolve(technique.params(), given, given_lines, where, technique.name());
+    const std::optional<ParamConflict> conflict = technique.conflict(params);
+    if (!conflict) return params;
+    SourceLocation location = where;
+    for (const std::string& name : conflict->params) {
+        const auto line = given_lines.find(name);
+        if (given.count(name) && line != given_lines.end() && line->second > 0) {
+            location.line = line->second;
+            break;
+        }
+    }
+    throw ConfigError(location.file, location.line, fmt::format("{}: {}", technique.name(), conflict->message),
+                      conflict->hint);
 }
 
 }  // namespace canopy

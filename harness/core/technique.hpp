@@ -32,7 +32,7 @@ struct FilterPass {
     int radius = 1;                            // texels on each side of the centre
     bool horizontal = true;
     std::array<float, 4> params{};             // filter-specific
-    int downsample = 1;                        // output is 1/downsample of the input in both axes
+    int downsample = 1;                        // output is ceil(input / downsample) in both axes
 };
 
 // A depth-only shadow map rendered from the scene's shadow light. It stores linear depth
@@ -47,7 +47,7 @@ struct ShadowMapNeeds {
     bool compare_sampler = false;
     // Separable passes that turn the depth map into a "coarse" R32F map the lit or screen pass
     // samples at binding 4 (e.g. the min-filtered map of screen-space soft shadows). Pass 0
-    // reads the depth map itself.
+    // reads the depth map itself; every pass may read the frame uniforms (binding 2).
     std::vector<FilterPass> coarse_filters;
 };
 
@@ -94,6 +94,14 @@ struct FramePlan {
     ShaderParams shader_params;
 };
 
+// A combination of parameter values, each valid on its own, that a technique refuses because it
+// would render something meaningless (e.g. a stored exponential that overflows its format).
+struct ParamConflict {
+    std::vector<std::string> params;  // the parameters involved, the one to change first
+    std::string message;              // what would go wrong
+    std::string hint;                 // the safe range, what to change
+};
+
 class Technique {
 public:
     virtual ~Technique() = default;
@@ -102,6 +110,15 @@ public:
     virtual std::string paper() const = 0;        // where it comes from
     virtual std::vector<ParamSpec> params() const = 0;
     virtual FramePlan plan(const ParamSet& params) const = 0;
+    // A refused combination of `params`, or nullopt. Checked by resolve_params when a config's
+    // cases are expanded, before anything runs or is written.
+    virtual std::optional<ParamConflict> conflict(const ParamSet& params) const;
 };
+
+// ParamSet::resolve with `technique`'s specs, then its conflict check: a refused combination
+// throws ConfigError at the line of the first conflicting parameter the config gives (else at
+// `where`), with the technique's hint.
+ParamSet resolve_params(const Technique& technique, const std::map<std::string, ParamValue>& given,
+                        const std::map<std::string, int>& given_lines, const SourceLocation& where);
 
 }  // namespace canopy

@@ -29,9 +29,10 @@ FilterChain::FilterChain(const GpuContext& gpu, MemoryLedger& ledger, const std:
     for (const FilterPass& pass : passes_) {
         const uint32_t f = uint32_t(std::max(pass.downsample, 1));
         per_pass_images_ = per_pass_images_ || f > 1;
-        extents_.push_back({std::max(extents_.back().width / f, 1u), std::max(extents_.back().height / f, 1u)});
+        // Rounded up: a partial block at the edge still gets its own output texel.
+        extents_.push_back({std::max((extents_.back().width + f - 1) / f, 1u), std::max((extents_.back().height + f - 1) / f, 1u)});
     }
-    const VkImageUsageFlags usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT;
+    const VkImageUsageFlags usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;  // + readback
     if (per_pass_images_) {
         writable_source_ = nullptr;
         for (size_t i = 0; i < passes_.size(); ++i)
@@ -139,5 +140,7 @@ void FilterChain::record(VkCommandBuffer commands, size_t index) const {
 }
 
 VkImageView FilterChain::result() const { return output(passes_.size() - 1).view(); }
+
+const Texture& FilterChain::result_texture() const { return output(passes_.size() - 1); }
 
 }  // namespace canopy

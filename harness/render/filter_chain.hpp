@@ -1,6 +1,7 @@
 // A chain of compute passes (FilterPass) over a 2D image: pass 0 reads the source, each later
 // pass reads the previous output. Same-size outputs ping-pong between two images; a chain with
-// a downsampling pass gets one image per pass instead. Used for moment-map prefilters, the
+// a downsampling pass gets one image per pass instead (of ceil(input / downsample) texels: a
+// partial block at the edge gets its own texel). Used for moment-map prefilters, the
 // coarse (downsampled, min-filtered) shadow map and screen-space blurs.
 #pragma once
 
@@ -36,6 +37,7 @@ public:
     const std::string& name(size_t index) const { return passes_[index].name; }
     void record(VkCommandBuffer commands, size_t index) const;  // leaves its output SHADER_READ_ONLY
     VkImageView result() const;                                  // the last pass's output
+    const Texture& result_texture() const;                       // the same, for readbacks
 
 private:
     const Texture& output(size_t index) const;

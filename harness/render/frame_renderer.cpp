@@ -1,6 +1,7 @@
 #include "render/frame_renderer.hpp"
 
 #include "gpu/rendering.hpp"
+#include "render/texture_readback.hpp"
 #include "scene/camera.hpp"
 
 #include <fmt/format.h>
@@ -9,6 +10,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <stdexcept>
 
 namespace canopy {
 
@@ -122,9 +124,11 @@ FrameRenderer::FrameRenderer(const GpuContext& gpu, const Scene& scene, const st
         names.push_back("shadow_map");
         if (!plan.shadow_map->coarse_filters.empty()) {
             const uint32_t size = plan.shadow_map->resolution;
+            // The coarse passes may read the frame (e.g. the light's size).
             coarse_map_ = std::make_unique<FilterChain>(gpu, ledger_, "technique", shadow_pass_->depth().view(),
                                                         VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, nullptr, size, size,
-                                                        VK_FORMAT_R32_SFLOAT, plan.shadow_map->coarse_filters);
+                                                        VK_FORMAT_R32_SFLOAT, plan.shadow_map->coarse_filters,
+                                                        FilterExtras{uniforms_.handle()});
             for (size_t i = 0; i < coarse_map_->size(); ++i) names.push_back(coarse_map_->name(i));
         }
     }
@@ -337,6 +341,16 @@ Image FrameRenderer::read_color() const {
     Image image(int(color.width()), int(color.height()));
     std::memcpy(image.pixels.data(), staging.mapped(), bytes);
     return image;
+}
+
+Image FrameRenderer::read_coarse_map() const {
+    if (!coarse_map_) throw std::logic_error("read_coarse_map: the plan has no coarse map");
+    return read_texture(gpu_, coarse_map_->result_texture(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+}
+
+Image FrameRenderer::read_screen_shadow() const {
+    if (!screen_pass_) throw std::logic_error("read_screen_shadow: the plan has no screen-shadow pass");
+    return read_texture(gpu_, screen_pass_->result_texture(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
 }
 
 MemoryUse FrameRenderer::memory() const {

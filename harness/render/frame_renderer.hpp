@@ -44,6 +44,11 @@ public:
 
     FrameTiming render();
     Image read_color() const;  // the last rendered frame, linear RGBA
+    // Intermediate buffers of the last frame, for tests and debugging: the coarse map (R = depth;
+    // needs ShadowMapNeeds::coarse_filters) and the screen-shadow buffer after its filters
+    // (needs FramePlan::screen_shadow). Throw std::logic_error when the plan has none.
+    Image read_coarse_map() const;
+    Image read_screen_shadow() const;
     const std::vector<std::string>& pass_names() const { return timer_->pass_names(); }
     MemoryUse memory() const;
     size_t triangle_count() const { return scene_->triangle_count(); }

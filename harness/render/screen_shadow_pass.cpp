@@ -12,7 +12,8 @@ ScreenShadowPass::ScreenShadowPass(const GpuContext& gpu, MemoryLedger& ledger, 
                                    const ScreenShadowNeeds& needs, VkPipelineLayout scene_layout,
                                    VkBuffer frame_uniforms, VkImageView shadow_depth)
     : data_(gpu, ledger, "technique", width, height, kDataFormat,
-            VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT,
+            VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT |
+                VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
             VK_IMAGE_ASPECT_COLOR_BIT),
       normals_(gpu, ledger, "technique", width, height, kNormalFormat,
                VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT, VK_IMAGE_ASPECT_COLOR_BIT),

@@ -24,6 +24,7 @@ public:
     const std::string& filter_name(size_t index) const { return filters_->name(index); }
     void record_filter(VkCommandBuffer commands, size_t index) const { filters_->record(commands, index); }
     VkImageView result() const { return filters_ ? filters_->result() : data_.view(); }
+    const Texture& result_texture() const { return filters_ ? filters_->result_texture() : data_; }
 
 private:
     Texture data_;

@@ -1,7 +1,9 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // Coarse map (Gumbau 2011, 6.2.1): each output texel is the minimum (nearest the light) of the
-// downsample x downsample block of the shadow map it covers.
+// downsample x downsample block of the shadow map it covers. A partial block at the map's edge
+// (a size not divisible by the block) reads its last texels again (fetch_block clamps): the
+// minimum is that of the texels it covers.
 #include "separable_filter.glsl"
 
 vec4 filter_texel(ivec2 xy) {

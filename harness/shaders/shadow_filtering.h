@@ -85,6 +85,15 @@ CANOPY_FN float reduce_light_bleeding(float p, float amount) {
 // Linear storage overflows when c z > ln(FLT_MAX) = 88.72 (fp32) or ln(65504) = 11.09 (fp16):
 // an infinite stored value is read as FLT_MAX (ln = 88.72), which keeps the result finite and
 // monotone but not meaningful -- keep c below those bounds, or use log storage.
+// Largest exponent c whose linear storage exp(c z), z in [0, 1], cannot overflow: fp16 holds up to
+// 65504 = e^11.09 -> 11; fp32 up to 3.4e38 = e^88.72, and the box prefilter sums up to 63 texels
+// before dividing (63 = e^4.14) -> 84. shadow.esm refuses larger exponents with linear storage.
+CANOPY_CONST float ESM_MAX_EXPONENT_FP16 = 11.0f;
+CANOPY_CONST float ESM_MAX_EXPONENT_FP32 = 84.0f;
+CANOPY_FN float esm_max_exponent(bool half_precision) {
+    return half_precision ? ESM_MAX_EXPONENT_FP16 : ESM_MAX_EXPONENT_FP32;
+}
+
 CANOPY_FN float esm_visibility_log(float filtered_log, float z_r, float c) {
     float e = clamp(filtered_log - c * z_r, -87.0f, 0.0f);
     return exp(e);
@@ -103,6 +112,46 @@ CANOPY_FN float log_sum_exp_weighted(float log_a, float weight_a, float log_b, f
     if (!(weight_b > 0.0f)) return log_a + log(weight_a);
     float m = max(log_a, log_b);
     return m + log(max(weight_a * exp(log_a - m) + weight_b * exp(log_b - m), SF_FLT_MIN));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Bilinear lookups combined in a technique's own space. The lit pass fetches the four texels a
+// LINEAR lookup would blend (bilinear_texels.glsl) and combines them here, where hardware
+// filtering would blend the wrong quantity. Texel order (x, y) = (0, 0), (1, 0), (0, 1), (1, 1);
+// f is the lookup's fraction between them, in [0, 1]^2.
+
+// The weights of a LINEAR lookup at fraction f, in texel order; they sum to 1.
+CANOPY_FN vec4 bilinear_weights(vec2 f) {
+    return vec4((1.0f - f.x) * (1.0f - f.y), f.x * (1.0f - f.y), (1.0f - f.x) * f.y, f.x * f.y);
+}
+
+// Log-space ESM: the texels hold ln E[exp(c z)] of their prefilter window; the lookup must blend
+// the exponentials, log(sum w_i e^(l_i)), not the logs (which is a geometric mean: it drops an
+// edge's lit side from e^(c z_far) to e^(c (z_near + z_far) / 2)). Evaluated relative to the
+// largest log of positive weight (Salvi 2008), so nothing overflows for any c; a zero-weight texel
+// is ignored, however large its log.
+CANOPY_FN float esm_log_bilinear(vec4 logs, vec2 f) {
+    vec4 w = bilinear_weights(clamp(f, vec2(0.0f), vec2(1.0f)));
+    float m = -SF_FLT_MAX;
+    for (int i = 0; i < 4; ++i) if (w[i] > 0.0f) m = max(m, logs[i]);
+    float sum = 0.0f;
+    for (int i = 0; i < 4; ++i) if (w[i] > 0.0f) sum += w[i] * exp(logs[i] - m);
+    return m + log(max(sum, SF_FLT_MIN));
+}
+
+// Power CDF: each texel holds (min, max, mean) of its window. The lookup's mean is the bilinear
+// blend of the windows' means; its min and max are those of every window that blend weighs
+// (positive weight), so they bound every depth the mean averages -- blending the mins and maxes
+// too would give neither a min nor a max. Returns (z_min, z_max, mean).
+CANOPY_FN vec3 power_cdf_bilinear_statistics(vec3 t00, vec3 t10, vec3 t01, vec3 t11, vec2 f) {
+    vec4 w = bilinear_weights(clamp(f, vec2(0.0f), vec2(1.0f)));
+    float mean = w.x * t00.z + w.y * t10.z + w.z * t01.z + w.w * t11.z;
+    float lo = SF_FLT_MAX, hi = -SF_FLT_MAX;
+    if (w.x > 0.0f) { lo = min(lo, t00.x); hi = max(hi, t00.y); }
+    if (w.y > 0.0f) { lo = min(lo, t10.x); hi = max(hi, t10.y); }
+    if (w.z > 0.0f) { lo = min(lo, t01.x); hi = max(hi, t01.y); }
+    if (w.w > 0.0f) { lo = min(lo, t11.x); hi = max(hi, t11.y); }
+    return vec3(lo, hi, mean);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -232,18 +281,27 @@ CANOPY_FN vec4 evsm_moments(float z, float c_pos, float c_neg) {
 // sqrt(min_variance), and a receiver delta behind a single depth gets
 // k / (k + (1 - e^(-2c delta))^2), k = (2c)^2 min_variance -- more than VSM's floor would give.
 // Since Chebyshev's bound grows with the variance, max(variance, floor) is evaluated as the larger
-// of two bounds: the data's, var / (var + d^2) on the warped axis (no overflow: c <= 42 keeps
-// every square below 3.4e38), and the floor's on the axis divided by |w_r|, k / (k + q^2) with
-// q = d / |w_r| = sign(w_r) - mean / |w_r|. Each is exactly non-increasing in z_r in float
-// (every operation is monotone in z_r), so the result is too. Infinite moments (fp16 overflow)
-// are read as +-FLT_MAX as in chebyshev_upper_bound.
+// of two bounds:
+//  * the data's, var / (var + d^2), on the warped axis divided by the moments' own scale
+//    s = sqrt(E[w^2]). The ratio does not change with the unit, and in that unit E[w^2] = 1,
+//    E[w]^2 <= 1 and the variance is O(1): evaluated in raw warped units, a footprint near z = 0
+//    with c = 40 has var + d^2 ~ e^-73 (1e-32), below any fixed floor of the denominator (a floor
+//    of 1e-30 turned an edge half at z = 0, half at 0.05, receiver at 0.05, from 0.5 into 0.21).
+//    s does not depend on z_r, so the receiver's term w_r / s is monotone in z_r;
+//  * the floor's, k / (k + q^2) with q = d / |w_r| = sign(w_r) - mean / |w_r|.
+// Each is exactly non-increasing in z_r in float (every operation is monotone in z_r), so the
+// result is too. Scaled values stay finite: |w| <= e^42 and s >= |E[w]| >= e^-42 for a valid
+// footprint, so w_r / s <= e^84 < FLT_MAX; a d^2 that overflows to inf gives the limit 0.
+// Infinite moments (fp16 overflow) are read as +-FLT_MAX as in chebyshev_upper_bound, and a zero
+// E[w^2] (invalid, e.g. underflow) is floored at FLT_MIN.
 CANOPY_FN float sf_evsm_bound(vec2 moments, float w_r, float c, float min_variance) {
     float mean = clamp(moments.x, -SF_FLT_MAX, SF_FLT_MAX);
     if (w_r <= mean) return 1.0f;
-    float m2 = clamp(moments.y, 0.0f, SF_FLT_MAX);
-    float variance = max(m2 - mean * mean, 0.0f);
-    float d = w_r - mean;
-    float p_data = variance / max(variance + d * d, SF_TINY);
+    float scale = sqrt(clamp(moments.y, SF_FLT_MIN, SF_FLT_MAX));  // sqrt(E[w^2])
+    float mean_scaled = mean / scale;                              // |.| <= 1 for valid moments
+    float variance_scaled = max((1.0f - mean_scaled) * (1.0f + mean_scaled), 0.0f);  // less cancellation than 1 - m^2
+    float d_scaled = w_r / scale - mean_scaled;
+    float p_data = variance_scaled / max(variance_scaled + d_scaled * d_scaled, SF_TINY);
     float slope = 2.0f * c;
     float k = max(min_variance, 0.0f) * slope * slope;
     float q = (w_r > 0.0f ? 1.0f : -1.0f) - mean / abs(w_r);  // |w_r| >= exp(-42) > 0
@@ -314,12 +372,17 @@ CANOPY_FN float sf_bounded_div(float n, float d, float limit) {
 // to [-1, 1]) expressed for z in [0, 1]: b_target = (0.5, 0.407, 0.3605, 0.33725), the moments of
 // masses 0.314, 0.372, 0.314 at z = 0, 1/2, 1. Three atoms make its Hankel matrix positive
 // definite, so B' is for every valid b. (Blending is linear and the map from [-1, 1] moments to
-// [0, 1] moments is affine, so this is exactly their bias.) Measured on two-depth mixtures it is
-// also the best conditioned of the targets tried -- the reconstruction is non-increasing in z_r
-// to within 2.5e-6 with fp32 or unorm16 moments, against 1e-4..3e-3 for the uniform distribution's
-// moments (1/2, 1/3, 1/4, 1/5) and 6e-4..2e-3 for (0.5, 0.5, 0.5, 0.5).
-// alpha: ~3e-5 for fp32 moments, ~6e-5 for 16-bit unorm (the paper's values). Half floats
-// (rgba16f) keep only 11 bits over [0.5, 1] and reconstruct poorly: use rgba16 unorm for MSM.
+// [0, 1] moments is affine, so this is exactly their bias.) It is also the best conditioned of
+// the targets tried. The result should not rise with z_r, but float rounding in the solve makes
+// it dip just behind an atom (a band ~1e-4 wide in z). Worst step up, measured by
+// test_shadow_filtering.cpp ("MSM: measured rise"; fine sweeps around every atom of ~1300
+// footprints) and asserted there: fp32 moments, alpha 3e-5: 4.2e-5 (bound 1e-4); unorm16,
+// alpha 6e-5: 4.8e-5 (bound 1e-4). With the uniform distribution's moments as target: 1.5e-4
+// and 0.10; with (0.5, 0.5, 0.5, 0.5): 1.0e-4 and 0.016.
+// alpha: ~3e-5 for fp32 moments, ~6e-5 for 16-bit unorm (the paper's values); unorm16 with 3e-5
+// rises by 0.014 in the test (0.29 in a wider search). Half floats (rgba16f) keep only 11 bits
+// over [0.5, 1]: the result rises by up to 0.55 in the test (0.85 in a wider search) -- no
+// longer monotone in any useful sense: use rgba16 unorm for MSM.
 // A planar receiver (a single depth at z_r) gets 1 - G with G <= alpha (G is a lower bound for
 // every distribution with these moments, the biased one included, and the target puts at most
 // 0.686 of its mass below z_r); the usual remedy is a small depth bias subtracted from z_r.

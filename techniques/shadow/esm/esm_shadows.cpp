@@ -3,7 +3,10 @@
 #include "shaders/esm_depth_frag.h"
 #include "shaders/esm_frag.h"
 #include "shaders/log_box_filter_comp.h"
+#include "shadow_filtering.h"
 #include "../common/prefilter_params.hpp"
+
+#include <fmt/format.h>
 
 #include <cmath>
 
@@ -19,18 +22,42 @@ public:
     std::vector<ParamSpec> params() const override {
         auto specs = prefilter_params();
         specs.push_back(ParamSpec::real("exponent", 80.0, 1.0, 200.0,
-                                        "c in exp(c z); exp(c) overflows fp16 above c = 11 and fp32 above c = 88 unless log_space"));
+                                        "c in exp(c z); linear storage holds it up to c = 11 (fp16) or 84 (fp32), "
+                                        "larger c needs log_space"));
         specs.push_back(ParamSpec::boolean("log_space", false,
                                            "store c z and filter in log space (log-sum-exp), so no exponent overflows"));
         return specs;
+    }
+
+    // Linear storage of exp(c z) overflows past esm_max_exponent: the stored value becomes inf, is
+    // read as FLT_MAX, and every shadow vanishes without a sign. Refused rather than clamped, so
+    // a result never silently uses another exponent than the config says.
+    std::optional<ParamConflict> conflict(const ParamSet& params) const override {
+        if (params.boolean("log_space")) return std::nullopt;
+        const bool half = half_precision(params);
+        const double c = params.real("exponent");
+        const double limit = shader::esm_max_exponent(half);
+        if (c <= limit) return std::nullopt;
+        const std::string format = half ? "fp16" : "fp32";
+        ParamConflict conflict;
+        conflict.params = {"exponent", "precision", "log_space"};
+        conflict.message = fmt::format(
+            "exponent {} overflows {} storage: exp(c z) reaches e^{} at the far plane, beyond the largest {} value "
+            "({}), and every shadow would vanish",
+            c, format, c, format, half ? "65504 = e^11.09" : "3.4e38 = e^88.7, less the prefilter's sums");
+        conflict.hint = half ? "with precision = \"fp16\" use exponent in [1, 11], or set log_space = true "
+                               "(stores c z: no overflow), or precision = \"fp32\" (exponent up to 84)"
+                             : "with precision = \"fp32\" use exponent in [1, 84], or set log_space = true "
+                               "(stores c z: no overflow)";
+        return conflict;
     }
 
     FramePlan plan(const ParamSet& params) const override {
         const float c = float(params.real("exponent"));
         const bool log_space = params.boolean("log_space");
         FramePlan plan;
-        // The clear value is the statistic of depth 1 (no caster); exp(c) may be +inf, as the
-        // rendered texels would be: that is the overflow the exponent parameter documents.
+        // The clear value is the statistic of depth 1 (no caster): exp(c), finite since conflict()
+        // refuses exponents linear storage cannot hold.
         const float far_value = log_space ? c : std::exp(c);
         plan.moment_map = moment_map_needs(params, 1, esm_depth_frag, {far_value, 0.0f, 0.0f, 1.0f},
                                            log_space ? std::span<const uint32_t>(log_box_filter_comp)

@@ -1,10 +1,12 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // SSSS step 3: one axis of the separable anisotropic Gaussian over the hard shadows in screen
-// space (Gumbau 2011, 6.2.3), K taps over +-3 sigma of this pixel's own width. Taps on other
-// surfaces (distance to the observer differs by more than depth_error, relative) are either
-// dropped or, with lazy shadowing (6.3.2), replaced by the hard shadow of the point where the
-// tap's view ray meets this pixel's tangent plane — the shadow the occluder hides from view.
+// space (Gumbau 2011, 6.2.3), K taps over +-3 sigma of this pixel's own width, each on a whole
+// pixel and weighted by the Gaussian of its actual offset (ssss_filter.h). Pixels the screen pass
+// masked (no blocker nearby: sigma 0) and the background are left as they are (6.2.2). Taps on
+// other surfaces (distance to the observer differs by more than depth_error, relative) are
+// either dropped or, with lazy shadowing (6.3.2), replaced by the hard shadow of the point where
+// the tap's view ray meets this pixel's tangent plane -- the shadow the occluder hides from view.
 // params: x = taps K, y = depth_error, z = lazy (0/1)
 #define FRAME_BINDING 2
 #include "separable_filter.glsl"
@@ -13,6 +15,7 @@
 #include "shadow_common.h"
 #include "light_space.glsl"
 #include "ssss_common.glsl"
+#include "ssss_filter.h"
 
 layout(set = 0, binding = 3) uniform sampler2D shadow_depth;  // the depth shadow map
 layout(set = 0, binding = 4) uniform sampler2D normals;       // world normals of the camera pass
@@ -27,32 +30,28 @@ vec3 pixel_ray(vec2 pixel) {
 vec4 filter_texel(ivec2 xy) {
     vec4 centre = fetch(xy, 0);
     float sigma = filter_pass.direction.x == 1 ? centre.g : centre.b;
-    if (sigma < 0.25 || centre.a > 1e29) return centre;  // no penumbra here, or background
+    if (!ssss_blurs(sigma, centre.a)) return centre;
 
     int taps = int(filter_pass.params.x);
     float depth_error = filter_pass.params.y;
     bool lazy = filter_pass.params.z > 0.5;
-    float spacing = taps > 1 ? 6.0 * sigma / float(taps - 1) : 0.0;
     vec3 n = texelFetch(normals, xy, 0).xyz;
     vec3 camera = frame.camera_position.xyz;
-    vec3 centre_point = camera + pixel_ray(vec2(xy)) * centre.a;
+    vec3 centre_from_camera = pixel_ray(vec2(xy)) * centre.a;
 
     float sum = 0.0, weights = 0.0;
     for (int i = 0; i < taps; ++i) {
-        float offset = (float(i) - 0.5 * float(taps - 1)) * spacing;
-        int pixel_offset = int(round(offset));
-        vec4 s = fetch(xy, pixel_offset);
+        int offset = ssss_tap_offset(i, taps, sigma);
+        vec4 s = fetch(xy, offset);
         float value = s.r;
-        if (abs(s.a - centre.a) > depth_error * centre.a) {
+        if (!ssss_same_surface(s.a, centre.a, depth_error)) {
             if (!lazy) continue;
-            vec3 ray = pixel_ray(vec2(xy + pixel_offset * filter_pass.direction));
-            float facing = dot(n, ray);
-            if (abs(facing) < 1e-4) continue;
-            float t = dot(n, centre_point - camera) / facing;
+            vec3 ray = pixel_ray(vec2(xy + offset * filter_pass.direction));
+            float t = ssss_tangent_plane_distance(n, ray, centre_from_camera);
             if (t <= 0.0) continue;
             value = hard_shadow_test(shadow_depth, light_space_point(camera + ray * t, n));
         }
-        float w = exp(-0.5 * offset * offset / (sigma * sigma));
+        float w = ssss_tap_weight(offset, sigma);
         sum += w * value;
         weights += w;
     }

@@ -1,19 +1,24 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // SSSS step 2 (Gumbau 2011, 6.2-6.2.3): per pixel, the hard shadow, the eq 6.2 penumbra width
-// in screen space (from the coarse, min-filtered map's blocker depth) turned into the
-// anisotropic Gaussian's sigma along x and y, and the distance to the observer.
-// Output: (hard shadow, sigma_x px, sigma_y px, distance to camera). sigma 0 = no penumbra
-// possible here (lazy: the blur skips the pixel).
+// in screen space (from the coarse, dilated map's blocker depth) turned into the anisotropic
+// Gaussian's sigma along x and y, and the distance to the observer.
+// Output: (hard shadow, sigma_x px, sigma_y px, distance to camera). sigma 0 = no blocker in the
+// dilated coarse map, so no penumbra can reach this pixel: the blur skips it (6.2.2's mask).
+// technique_params[0] = (bias constant, bias slope, coarse block, -)
 #include "screen_shadow_output.glsl"
 #include "shading.h"
 #include "shadow_common.h"
-#include "shadow_filtering.h"
 #include "light_space.glsl"
 #include "ssss_common.glsl"
+#include "ssss_filter.h"
 
-// A Gaussian-blurred step goes from 10 % to 90 % over 2.563 sigma: make that the penumbra width.
-const float PENUMBRA_WIDTH_IN_SIGMAS = 2.563;
+// The coarse texel holding the block of the shadow texel under uv (block_min.comp's blocks).
+float coarse_depth_at(vec2 uv) {
+    ivec2 shadow_texel = nearest_texel(uv, textureSize(shadow_depth, 0));
+    int block = int(frame.technique_params[0].z);
+    return texelFetch(coarse_map, ssss_coarse_texel(shadow_texel, block, textureSize(coarse_map, 0)), 0).r;
+}
 
 vec4 screen_shadow_data(vec3 p, vec3 n) {
     float d_observer = length(p - frame.camera_position.xyz);
@@ -22,15 +27,12 @@ vec4 screen_shadow_data(vec3 p, vec3 n) {
     float hard = hard_shadow_test(shadow_depth, l);
     if (!on_shadow_map(l)) return vec4(hard, 0.0, 0.0, d_observer);
 
-    float coarse = stored_depth_at(coarse_map, l.uv);  // nearest blocker around, dilated
+    float coarse = coarse_depth_at(l.uv);  // nearest blocker around, dilated
     if (coarse >= l.receiver_depth - receiver_bias(l)) return vec4(hard, 0.0, 0.0, d_observer);  // no blocker: no penumbra
 
     float near_plane = frame.shadow_depth_range.x;
     float d_blocker = near_plane + coarse * (frame.shadow_depth_range.y - near_plane);
-    float width = ssss_screen_penumbra_width(l.view_depth, d_blocker, light_width(), d_observer);  // eq 6.2
-    float sigma = width * frame.viewport.z / PENUMBRA_WIDTH_IN_SIGMAS;  // pixels
-    // Anisotropy: a disk on the tangent plane projects to an ellipse whose screen x and y
-    // extents shrink by sqrt(1 - n_x^2) and sqrt(1 - n_y^2) (n in view space).
-    vec3 nv = normalize(mat3(frame.view) * n);
-    return vec4(hard, sigma * sqrt(max(1.0 - nv.x * nv.x, 0.0)), sigma * sqrt(max(1.0 - nv.y * nv.y, 0.0)), d_observer);
+    float sigma = ssss_sigma_pixels(l.view_depth, d_blocker, light_width(), d_observer, frame.viewport.z);  // eq 6.2
+    vec3 view_normal = normalize(mat3(frame.view) * n);
+    return vec4(hard, ssss_anisotropic_sigma(sigma, view_normal), d_observer);
 }

@@ -1,8 +1,8 @@
 // shadow.ssss: screen-space soft shadows (Gumbau 2011, chapter 6).
 #include "core/registry.hpp"
 #include "shaders/block_min_comp.h"
-#include "shaders/min_filter_comp.h"
 #include "shaders/ssss_blur_comp.h"
+#include "shaders/ssss_dilate_comp.h"
 #include "shaders/ssss_frag.h"
 #include "shaders/ssss_screen_frag.h"
 #include "../common/shadow_map_params.hpp"
@@ -23,9 +23,9 @@ public:
         specs.push_back(ParamSpec::integer("kernel", 11, 1, 63, "Gaussian taps K per axis (the paper's K5, K11, K23)"));
         specs.push_back(ParamSpec::integer("coarse_block", 4, 1, 16,
                                            "shadow-map texels per coarse-map texel in each axis (block minimum)"));
-        specs.push_back(ParamSpec::integer("dilation", 2, 0, 32,
-                                           "min-filter radius of the coarse map in coarse texels: the paper's user "
-                                           "factor, large enough to reach outer penumbrae"));
+        specs.push_back(ParamSpec::real("occluder_distance", 1.0, 0.0, 1.0,
+                                        "the paper's dilation factor (6.2.1): the largest distance from a caster to the "
+                                        "receiver of its penumbra, as a fraction of the light's depth range"));
         specs.push_back(ParamSpec::real("depth_error", 0.05, 0.0, 1.0,
                                         "relative difference in distance to the observer that marks another surface"));
         specs.push_back(ParamSpec::boolean("lazy", true,
@@ -35,25 +35,28 @@ public:
 
     FramePlan plan(const ParamSet& params) const override {
         const int block = int(params.integer("coarse_block"));
-        const int dilation = int(params.integer("dilation"));
+        const std::array<float, 4> dilate{float(block), float(params.real("occluder_distance")), 0.0f, 0.0f};
         const std::array<float, 4> blur{float(params.integer("kernel")), float(params.real("depth_error")),
                                         params.boolean("lazy") ? 1.0f : 0.0f, 0.0f};
         FramePlan plan;
         plan.shadow_map = shadow_map_needs(params);
-        // The coarse map (6.2.1): block minima of the depth map, then a separable min filter.
-        plan.shadow_map->coarse_filters = {{"coarse_block", block_min_comp, 0, true, {}, block}};
-        if (dilation > 0) {
-            plan.shadow_map->coarse_filters.push_back({"coarse_x", min_filter_comp, dilation, true, {}});
-            plan.shadow_map->coarse_filters.push_back({"coarse_y", min_filter_comp, dilation, false, {}});
-        }
+        // The coarse map (6.2.1): block minima of the depth map, then a separable min filter whose
+        // reach follows the light's size (ssss_dilate.comp), up to kMaxDilation coarse texels.
+        plan.shadow_map->coarse_filters = {{"coarse_block", block_min_comp, 0, true, {}, block},
+                                           {"coarse_x", ssss_dilate_comp, kMaxDilation, true, dilate},
+                                           {"coarse_y", ssss_dilate_comp, kMaxDilation, false, dilate}};
         plan.screen_shadow = ScreenShadowNeeds{ssss_screen_frag,
                                                {{"blur_x", ssss_blur_comp, 0, true, blur},
                                                 {"blur_y", ssss_blur_comp, 0, false, blur}}};
         plan.needs_area_light = true;
         plan.forward_fragment_spirv = ssss_frag;
         write_bias_params(params, plan.shader_params);
+        plan.shader_params.values[2] = float(block);  // the screen pass finds a texel's coarse block
         return plan;
     }
+
+    // The dilation's cost cap: coarse texels each way (a reach beyond it is cut there).
+    static constexpr int kMaxDilation = 64;
 };
 
 RegisterTechnique<ScreenSpaceSoftShadows> registered;

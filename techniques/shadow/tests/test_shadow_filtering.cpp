@@ -2,6 +2,7 @@
 // hand-computed values, the papers' equations, and numerical stability at the extremes. Every
 // visibility must be finite, in [0, 1], non-increasing in the receiver depth and 1 in front of
 // its occluders; a NaN anywhere fails with a message naming the function and its inputs.
+#include "core/registry.hpp"
 #include "shadow_common.h"
 #include "shadow_filtering.h"
 
@@ -13,6 +14,7 @@
 #include <cstdio>
 #include <functional>
 #include <limits>
+#include <map>
 #include <numbers>
 #include <random>
 #include <string>
@@ -180,6 +182,12 @@ std::vector<Footprint> footprints() {
 
 float footprint_min(const Footprint& f) { return *std::min_element(f.z.begin(), f.z.end()); }
 
+// A technique's plan for `given` parameters (the rest at their defaults): what its shaders get.
+canopy::FramePlan plan_of(const std::string& technique, const std::map<std::string, canopy::ParamValue>& given = {}) {
+    const canopy::Technique& t = *canopy::TechniqueRegistry::instance().find(technique);
+    return t.plan(canopy::ParamSet::resolve(t.params(), given, {}, {}, technique));
+}
+
 constexpr float kMinVariance = 1e-6f;
 constexpr float kMsmBias32 = 3e-5f;
 constexpr float kMsmBias16 = 6e-5f;
@@ -323,6 +331,48 @@ TEST_CASE("log_sum_exp_weighted is log(wa e^a + wb e^b) without overflow") {
     CHECK_MESSAGE(std::isfinite(both_zero), describe("both weights zero", both_zero));
 }
 
+// The log-space ESM lookup: texels hold ln E[exp(c z)]; a bilinear lookup must blend the
+// exponentials. Blending the logs (what a LINEAR sampler does) is a geometric mean.
+TEST_CASE("ESM log-space lookup blends exponentials, not logs") {
+    CHECK(bilinear_weights({0.25f, 0.5f}) == glm::vec4(0.375f, 0.125f, 0.375f, 0.125f));
+    const float c = 80.0f;  // the technique's default exponent
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    double worst = 0.0;
+    for (int i = 0; i < 2000; ++i) {
+        const glm::vec4 z(u(rng), u(rng), u(rng), u(rng));
+        const glm::vec2 f(u(rng), u(rng));
+        const glm::vec4 w = bilinear_weights(f);
+        double linear = 0.0;  // E[exp(c z)] in double
+        for (int k = 0; k < 4; ++k) linear += double(w[k]) * std::exp(double(c) * z[k]);
+        const float blended = esm_log_bilinear(c * z, f);
+        worst = std::max(worst, std::abs(double(blended) - std::log(linear)));
+        // Visibility at a receiver behind all four depths: the linear filter's value.
+        const float z_r = 1.0f;
+        const double expect = std::min(1.0, linear * std::exp(-double(c) * z_r));
+        CHECK(esm_visibility_log(blended, z_r, c) == doctest::Approx(expect).epsilon(2e-4));
+    }
+    CHECK(worst < 2e-5);
+    // The audit's failure: an edge between z = 0.2 and 0.9 looked up halfway, receiver at 0.9. The
+    // exponentials give ~0.5 (half the footprint is the receiver's own depth); the logs' blend
+    // gives exp(c (0.55 - 0.9)) ~ 7e-13.
+    const glm::vec4 edge = c * glm::vec4(0.2f, 0.9f, 0.2f, 0.9f);
+    const float v = esm_visibility_log(esm_log_bilinear(edge, {0.5f, 0.5f}), 0.9f, c);
+    CHECK(v == doctest::Approx(0.5).epsilon(1e-4));
+    const float logs_blended = glm::dot(bilinear_weights({0.5f, 0.5f}), edge);
+    CHECK(esm_visibility_log(logs_blended, 0.9f, c) < 1e-10f);
+    // Weight 0 drops a texel however large its log; extremes stay finite.
+    CHECK(esm_log_bilinear({1.0f, 1e30f, 1.0f, 1e30f}, {0.0f, 0.3f}) == doctest::Approx(1.0f));
+    for (glm::vec4 logs : {glm::vec4(-1e30f), glm::vec4(1e30f), glm::vec4(0.0f, 1e4f, -1e4f, 0.0f)}) {
+        for (glm::vec2 f : {glm::vec2(0.0f), glm::vec2(1.0f), glm::vec2(0.5f), glm::vec2(-1.0f, 2.0f)}) {
+            const float l = esm_log_bilinear(logs, f);
+            CHECK_MESSAGE(std::isfinite(l), describe("esm_log_bilinear", l));
+            const float vis = esm_visibility_log(l, 0.5f, c);
+            CHECK_MESSAGE((std::isfinite(vis) && vis >= 0.0f && vis <= 1.0f), describe("esm log visibility", vis));
+        }
+    }
+}
+
 // ---------------------------------------------------------------------------------------------
 TEST_CASE("erf approximations: measured error against std::erf") {
     double worst_winitzki = 0.0, worst_winitzki_at = 0.0, worst_winitzki_rel = 0.0;
@@ -450,6 +500,68 @@ TEST_CASE("power CDF: beta of eq 7.6 reproduces the mean") {
     }
 }
 
+// The power-CDF lookup: each texel holds (min, max, mean) of its prefilter window. The lookup's
+// mean blends the windows bilinearly; its min and max must bound every depth that mean averages,
+// i.e. be the min and max over the windows of positive weight. A LINEAR lookup blends them too.
+TEST_CASE("power CDF lookup: min and max over the blended texels, mean blended") {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    int blended_not_bounds = 0;
+    for (int i = 0; i < 2000; ++i) {
+        glm::vec3 t[4];
+        for (glm::vec3& texel : t) {  // a window: two depths and a weight between them
+            const float a = u(rng), b = u(rng), w = u(rng);
+            texel = {std::min(a, b), std::max(a, b), w * a + (1.0f - w) * b};
+        }
+        const glm::vec2 f(u(rng), u(rng));
+        const glm::vec4 w = bilinear_weights(f);
+        const glm::vec3 s = power_cdf_bilinear_statistics(t[0], t[1], t[2], t[3], f);
+        CHECK(s.z == doctest::Approx(w.x * t[0].z + w.y * t[1].z + w.z * t[2].z + w.w * t[3].z).epsilon(1e-6));
+        CHECK(s.x == std::min({t[0].x, t[1].x, t[2].x, t[3].x}));
+        CHECK(s.y == std::max({t[0].y, t[1].y, t[2].y, t[3].y}));
+        CHECK(s.x <= s.z);
+        CHECK(s.z <= s.y);
+        const float blended_min = w.x * t[0].x + w.y * t[1].x + w.z * t[2].x + w.w * t[3].x;
+        blended_not_bounds += blended_min > s.x + 1e-3f;  // a receiver between them is misjudged
+    }
+    CHECK(blended_not_bounds > 1000);  // what a LINEAR lookup would do, for the record
+    // At a texel centre (f = 0) the other texels have weight 0 and do not count.
+    const glm::vec3 near_window(0.2f, 0.8f, 0.5f), far_window(0.9f, 0.9f, 0.9f);
+    CHECK(power_cdf_bilinear_statistics(far_window, near_window, near_window, near_window, {0.0f, 0.0f}) == far_window);
+    // Halfway across an occluder edge: a receiver at 0.85 sits between the near window's depths
+    // and the far one's; with the bounds (0.2, 0.9) and mean 0.7 it is lit by
+    // (1 - t^beta) / (1 - t_mu^beta), t = 0.65 / 0.7, beta = 0.5 / 0.2.
+    const glm::vec3 s = power_cdf_bilinear_statistics(near_window, far_window, near_window, far_window, {0.5f, 0.5f});
+    CHECK(s == glm::vec3(0.2f, 0.9f, 0.7f));
+    const double beta = 2.5, t = 0.65 / 0.7, t_mu = beta / (beta + 1.0);
+    CHECK(power_cdf_visibility(s.x, s.y, s.z, 0.85f) ==
+          doctest::Approx((1.0 - std::pow(t, beta)) / (1.0 - std::pow(t_mu, beta))).epsilon(1e-4));
+    // The price (README): a texel leaving the blend at weight 0 leaves the min with it, so the
+    // reconstruction steps at texel centres. Window (0.5, 0.9, mean 0.7) beside one reaching 0.3:
+    // at the centre beta = 1 and v(0.8) = 0.5; a hair off it z_min = 0.3, beta = 2, v = 0.55.
+    const glm::vec3 own(0.5f, 0.9f, 0.7f), neighbour(0.3f, 0.9f, 0.6f);
+    const glm::vec3 at_centre = power_cdf_bilinear_statistics(own, neighbour, own, neighbour, {0.0f, 0.0f});
+    const glm::vec3 beside = power_cdf_bilinear_statistics(own, neighbour, own, neighbour, {1e-4f, 0.0f});
+    const float v_centre = power_cdf_visibility(at_centre.x, at_centre.y, at_centre.z, 0.8f);
+    const float v_beside = power_cdf_visibility(beside.x, beside.y, beside.z, 0.8f);
+    CHECK(v_centre == doctest::Approx(0.5).epsilon(1e-4));
+    CHECK(v_beside == doctest::Approx((1.0 - std::pow(0.5 / 0.6, 2.0)) / (1.0 - 4.0 / 9.0)).epsilon(1e-3));
+    CHECK(v_beside - v_centre < 0.06f);
+    // Extremes: inverted, infinite or huge texels and fractions outside [0, 1] stay finite and
+    // in range once reconstructed.
+    const float big = std::numeric_limits<float>::max();
+    for (glm::vec3 odd : {glm::vec3(0.9f, 0.1f, 0.5f), glm::vec3(-kInf, kInf, 0.5f), glm::vec3(0.0f, big, big),
+                          glm::vec3(-big, 0.0f, -big), glm::vec3(0.3f)}) {
+        for (glm::vec2 f : {glm::vec2(0.0f), glm::vec2(1.0f), glm::vec2(0.5f), glm::vec2(-3.0f, 7.0f)}) {
+            const glm::vec3 st = power_cdf_bilinear_statistics(odd, own, neighbour, odd, f);
+            Sweep sweep{"power_cdf lookup of odd texels"};
+            sweep.run(describe("mean", st.z), [&](float z_r) { return power_cdf_visibility(st.x, st.y, st.z, z_r); }, -1.0f,
+                      0.0f, 0.0f);
+            sweep.report(true, false);
+        }
+    }
+}
+
 TEST_CASE("power CDF limits: dz = 0, beta = 0, beta -> inf, inverted inputs") {
     // dz = 0: a clean step at the single depth.
     for (float z : {0.0f, 0.3f, 1.0f}) {
@@ -564,6 +676,70 @@ TEST_CASE("EVSM light bleeding is below VSM's for a two-depth mixture") {
     CHECK(evsm4_visibility(s.evsm, 0.4f, o.evsm_pos, o.evsm_neg, kMinVariance) == doctest::Approx(0.5).epsilon(0.05));
 }
 
+// shadow.evsm's own exponents (c+ = 40, c- = 5; 5.54 for both in fp16) and min_variance, as its plan
+// hands them to the shader. An edge -- weight w_a at z_a, the rest at z_b = z_a + 0.05 -- seen by a
+// receiver at z_b: Chebyshev's bound of a two-point distribution at its far point is exactly the
+// far point's weight, on any increasing warp, so EVSM must give 1 - w_a over the whole depth range.
+// (The variance floors stay below that here.) Near the light the warped moments are tiny
+// (E[p^2] ~ e^-80 at z = 0): a fixed floor of the bound's denominator used to take over there
+// (0.21 instead of 0.5 for w_a = 1/2, z_a = 0).
+TEST_CASE("EVSM at the technique's default exponents: an edge's lit fraction from z = 0 to z = 1") {
+    // tolerance: against 1 - w_a; lit: how far from 1 a receiver in front may be (fp16 rounding).
+    struct Precision { std::string name; std::function<float(float)> quantise; float tolerance; float lit; };
+    for (const Precision& precision : {Precision{"fp32", [](float x) { return x; }, 1e-5f, 0.0f},
+                                       Precision{"fp16", half, 0.02f, 1e-4f}}) {
+        const canopy::FramePlan plan = plan_of("shadow.evsm", {{"precision", precision.name}});
+        const float c_pos = plan.shader_params.values[0], c_neg = plan.shader_params.values[1];
+        const float min_variance = plan.shader_params.values[3];
+        CAPTURE(precision.name);
+        CAPTURE(c_pos);
+        CAPTURE(c_neg);
+        if (precision.name == "fp32") {
+            CHECK(c_pos == 40.0f);  // the defaults this test is about
+            CHECK(c_neg == 5.0f);
+        }
+        StatsOptions o;
+        o.evsm_pos = c_pos;
+        o.evsm_neg = c_neg;
+        o.quantise = precision.quantise;
+        const float delta = 0.05f;
+        float worst4 = 0.0f, worst2 = 0.0f, worst_at = 0.0f;
+        for (int i = 0; i <= 190; ++i) {
+            const float z_a = std::min(float(i) / 200.0f, 1.0f - delta);  // 0, 0.005, ..., 0.95
+            const float z_b = z_a + delta;
+            for (float w_a : {0.25f, 0.5f, 0.75f}) {
+                const Stats s = statistics(mixture(z_a, z_b, w_a), o);
+                const float v4 = evsm4_visibility(s.evsm, z_b, c_pos, c_neg, min_variance);
+                const float v2 = evsm2_visibility({s.evsm.x, s.evsm.y}, z_b, c_pos, min_variance);
+                if (std::abs(v4 - (1.0f - w_a)) > worst4) worst_at = z_a;
+                worst4 = std::max(worst4, std::abs(v4 - (1.0f - w_a)));
+                worst2 = std::max(worst2, std::abs(v2 - (1.0f - w_a)));
+                // In front of both depths: lit.
+                CHECK(evsm4_visibility(s.evsm, std::max(z_a - 0.01f, 0.0f), c_pos, c_neg, min_variance) == 1.0f);
+            }
+        }
+        MESSAGE(precision.name, ": EVSM4 worst |error| ", worst4, " (at z_a = ", worst_at, "), EVSM2 ", worst2);
+        CHECK(worst4 <= precision.tolerance);
+        CHECK(worst2 <= precision.tolerance);
+        // The audit's example: half at 0, half at 0.05, receiver at 0.05.
+        const Stats s = statistics(mixture(0.0f, delta, 0.5f), o);
+        CHECK(evsm4_visibility(s.evsm, delta, c_pos, c_neg, min_variance) == doctest::Approx(0.5).epsilon(2.0 * precision.tolerance));
+
+        // Every footprint at these exponents: finite, in [0, 1], non-increasing, lit in front.
+        Sweep evsm4{"evsm4 defaults " + precision.name}, evsm2{"evsm2 defaults " + precision.name};
+        for (const Footprint& f : footprints()) {
+            const Stats st = statistics(f, o);
+            const float front = footprint_min(f);
+            evsm4.run(f.label, [&](float z) { return evsm4_visibility(st.evsm, z, c_pos, c_neg, min_variance); }, front,
+                      precision.lit, 0.0f);
+            evsm2.run(f.label, [&](float z) { return evsm2_visibility({st.evsm.x, st.evsm.y}, z, c_pos, min_variance); }, front,
+                      precision.lit, 0.0f);
+        }
+        evsm4.report();
+        evsm2.report();
+    }
+}
+
 // ---------------------------------------------------------------------------------------------
 TEST_CASE("MSM optimised quantisation round-trips and fits 16-bit storage") {
     double worst = 0.0;
@@ -650,7 +826,8 @@ TEST_CASE("all visibilities over depth distributions (fp32 statistics)") {
         evsm2.run(f.label, [&](float z) { return evsm2_visibility({s.evsm.x, s.evsm.y}, z, o.evsm_pos, kMinVariance); }, front, 0.0f, 0.0f);
         evsm4.run(f.label, [&](float z) { return evsm4_visibility(s.evsm, z, o.evsm_pos, o.evsm_neg, kMinVariance); }, front, 0.0f, 0.0f);
         // MSM: lit up to the moment bias in front (G <= 0.686 alpha, plus rounding); the float
-        // reconstruction may step back up by a few ulps (measured < 2e-6).
+        // reconstruction may step back up (at this sweep's coarse steps < 4e-6; the dips just
+        // behind an atom are measured by "MSM: measured rise" below).
         msm.run(f.label, [&](float z) { return msm_hamburger_visibility(s.msm, z, kMsmBias32); }, front, 1e-4f, 4e-6f);
     }
     for (const Sweep* s : {&cheb, &bleed, &gauss_w, &gauss_a, &power, &esm, &esm_log, &evsm2, &evsm4, &msm}) {
@@ -685,7 +862,7 @@ TEST_CASE("all visibilities with 16-bit (half) statistics") {
         s->report(true, s->name == "power_cdf fp16");
     }
     // MSM from half-float moments (possibly invalid after rounding): finite and in range only --
-    // the reconstruction is not monotone there (measured steps up of ~1e-2), hence unorm16 below.
+    // the reconstruction is not monotone there (see "MSM: measured rise"), hence unorm16 below.
     MESSAGE("msm fp16: worst step up ", msm.worst_rise);
     msm.report(false, false);
     // EVSM past the fp16 limit: the moments overflow to inf, the result must stay finite.
@@ -710,6 +887,85 @@ TEST_CASE("MSM with 16-bit unorm moments: monotone, lit in front") {
     }
     MESSAGE("msm unorm16: worst step up ", msm.worst_rise);
     msm.report();
+}
+
+// How far MSM's reconstruction rises with the receiver depth (it should never rise): the worst
+// step up between consecutive receivers, over a coarse sweep of z_r (steps of 1/2048 over
+// [-1.6 %, 101.6 %]) merged with a fine one (steps of 1e-5) from 5e-4 in front of to 2e-3 behind
+// every depth of the footprint -- the rises are narrow dips just behind an atom, which a coarse
+// sweep steps over. Footprints: the ones above plus 1200 random ones of the kinds that condition
+// the Hankel matrix worst (close pairs, a far atom of tiny weight, clusters near z = 0 where z^4
+// is tiny, equal-weight sets of up to 9 depths). Each storage at the moment bias it is documented
+// with, 16-bit storage also at the technique's default; the bounds asserted are the ones
+// shadow_filtering.h, SHADOW_FILTERING.md and the MSM README document, from this measurement.
+TEST_CASE("MSM: measured rise with receiver depth, per storage, within the documented bounds") {
+    std::vector<Footprint> set = footprints();
+    std::mt19937 rng(2015);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    for (int k = 0; k < 1200; ++k) {
+        Footprint f;
+        switch (k % 4) {
+            case 0: {  // close pair
+                const float z = u(rng);
+                f = mixture(z, std::min(1.0f, z + 1e-3f * u(rng)), u(rng));
+                break;
+            }
+            case 1: f = mixture(u(rng), u(rng), std::pow(u(rng), 6.0f)); break;  // a far atom of tiny weight
+            case 2: {  // a cluster near the light and one more depth
+                f.z = {0.1f * u(rng), 0.1f * u(rng), u(rng)};
+                f.w = {u(rng) + 0.01f, u(rng) + 0.01f, u(rng) + 0.01f};
+                const float total = f.w[0] + f.w[1] + f.w[2];
+                for (float& w : f.w) w /= total;
+                break;
+            }
+            default: {  // a box filter's equal weights
+                const int n = 2 + k % 8;
+                for (int i = 0; i < n; ++i) {
+                    f.z.push_back(u(rng));
+                    f.w.push_back(1.0f / float(n));
+                }
+            }
+        }
+        f.label = "random msm footprint " + std::to_string(k);
+        set.push_back(f);
+    }
+    struct Storage { std::string name; std::function<float(float)> quantise; float bias; float documented_rise; };
+    const std::vector<Storage> storages = {
+        {"fp32, bias 3e-5 (default)", [](float x) { return x; }, kMsmBias32, 1e-4f},
+        {"unorm16, bias 6e-5", unorm16, kMsmBias16, 1e-4f},
+        {"unorm16, bias 3e-5 (default)", unorm16, kMsmBias32, 0.3f},
+        {"fp16, bias 6e-5", half, kMsmBias16, 0.9f},
+        {"fp16, bias 3e-5 (default)", half, kMsmBias32, 0.9f},
+    };
+    for (const Storage& st : storages) {
+        StatsOptions o;
+        o.quantise = st.quantise;
+        float worst = 0.0f;
+        std::string worst_where;
+        int bad = 0;
+        for (const Footprint& f : set) {
+            const Stats s = statistics(f, o);
+            std::vector<float> receivers;
+            for (int i = -64; i <= 2048 + 64; ++i) receivers.push_back(float(i) / 2048.0f);
+            for (float z : f.z)
+                for (int i = -50; i <= 200; ++i) receivers.push_back(z + 1e-5f * float(i));
+            std::sort(receivers.begin(), receivers.end());
+            float previous = kInf;
+            for (float z_r : receivers) {
+                const float v = msm_hamburger_visibility(s.msm, z_r, st.bias);
+                bad += !(std::isfinite(v) && v >= 0.0f && v <= 1.0f);
+                if (v - previous > worst) {
+                    worst = v - previous;
+                    worst_where = f.label + describe(", z_r", z_r);
+                }
+                previous = v;
+            }
+        }
+        CAPTURE(st.name);
+        MESSAGE("msm ", st.name, ": worst step up ", worst, " (", worst_where, "); documented bound ", st.documented_rise);
+        CHECK(bad == 0);
+        CHECK(worst <= st.documented_rise);
+    }
 }
 
 // G-F7.2 (Gumbau L1919, L1926, Fig. 7.2): with 16 bits per channel VSM and the Gaussian CDF show

@@ -1,0 +1,111 @@
+// Screen-space soft shadows (Gumbau 2011, ch. 6): the math of the coarse map's dilation (6.2.1),
+// the Gaussian's width (eq 6.2, 6.2.3), the blur's taps, its depth-discontinuity test and lazy
+// shadowing (6.3.2), shared by the GLSL passes and the C++ tests (shared_math.h), so the tests
+// check the code the GPU runs. Distances are world units along the light's axis (d_blocker,
+// d_receiver) or from the camera (d_observer); offsets and widths in pixels or texels as named.
+#ifndef CANOPY_SSSS_FILTER_H
+#define CANOPY_SSSS_FILTER_H
+
+#include "shadow_filtering.h"
+
+CANOPY_BEGIN_NAMESPACE
+
+// A Gaussian-blurred step rises from 10 % to 90 % over 2 x 1.2816 = 2.563 sigma: that rise is
+// made the penumbra width of eq 6.2.
+CANOPY_CONST float SSSS_PENUMBRA_WIDTH_IN_SIGMAS = 2.563f;
+
+// Below this sigma (pixels) a Gaussian changes nothing visible: the pixel is not blurred.
+CANOPY_CONST float SSSS_MIN_SIGMA = 0.25f;
+
+// Eq 6.2 as the Gaussian's sigma in pixels: w = (d_r - d_b) w_light / (d_b d_observer) is a
+// width per unit of distance to the observer, i.e. an angle; times the focal length in pixels it
+// is pixels, and divided by 2.563 the sigma whose 10-90 % rise spans it.
+CANOPY_FN float ssss_sigma_pixels(float d_receiver, float d_blocker, float w_light, float d_observer, float focal_pixels) {
+    return ssss_screen_penumbra_width(d_receiver, d_blocker, w_light, d_observer) * max(focal_pixels, 0.0f) /
+           SSSS_PENUMBRA_WIDTH_IN_SIGMAS;
+}
+
+// The anisotropic kernel's axes (canopy's separable stand-in for Geusebroek's, see the README): a
+// disk on the tangent plane projects to an ellipse whose screen x and y extents shrink by
+// sqrt(1 - n_x^2) and sqrt(1 - n_y^2), n the unit view-space normal.
+CANOPY_FN vec2 ssss_anisotropic_sigma(float sigma, vec3 view_normal) {
+    return sigma * vec2(sqrt(max(1.0f - view_normal.x * view_normal.x, 0.0f)),
+                        sqrt(max(1.0f - view_normal.y * view_normal.y, 0.0f)));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Dilation of the coarse map (6.2.1, L1614): "proportional to the size of the area light", times
+// the user's constant, "the maximum distance to the occluder in the scene". A blocker at
+// d_blocker shadows receivers up to max_distance behind it (but not past the far plane); its
+// outer penumbra -- the half of eq 6.1's width outside its hard shadow,
+// (w_light / 2) (d_r - d_b) / d_b on the receiver -- must find it in the coarse map. In shadow
+// texels at the receiver (a texel spans texel_world, times d_r for a perspective map):
+//   perspective: (w_light / 2) (1 / d_b - 1 / d_r) / texel_world;  orthographic: / texel_world.
+// Proportional to w_light (G-F6.9), 0 for a point light, and larger for blockers nearer the light.
+CANOPY_FN float ssss_dilation_texels(float d_blocker, float max_distance, float far_plane, float w_light,
+                                     float texel_world, bool perspective) {
+    float d_b = max(d_blocker, 1e-6f);
+    float d_r = max(min(d_b + max(max_distance, 0.0f), far_plane), d_b);
+    float spread = 0.5f * clamp(w_light, 0.0f, 1e20f) * (d_r - d_b) / d_b;  // world units at the receiver
+    return min(spread / (max(texel_world, 1e-20f) * (perspective ? d_r : 1.0f)), 1e30f);  // finite for any input
+}
+
+// Whether a coarse texel `offset` coarse texels away (block x block shadow texels each) is within
+// `reach` shadow texels: the gap between the two texels' facing edges, (|offset| - 1) block, is
+// below it. Its own texel always is.
+CANOPY_FN bool ssss_dilation_reaches(int offset, float reach, int block) {
+    return offset == 0 || float((abs(offset) - 1) * block) < reach;
+}
+
+// The coarse texel under a shadow-map texel: coarse texel i is the minimum of shadow texels
+// [i block, (i + 1) block) in each axis (block_min.comp; the last block may be partial).
+CANOPY_FN ivec2 ssss_coarse_texel(ivec2 shadow_texel, int block, ivec2 coarse_size) {
+    return clamp(shadow_texel / max(block, 1), ivec2(0), coarse_size - ivec2(1));
+}
+
+// ---------------------------------------------------------------------------------------------
+// The blur (6.2.3): `taps` samples over +-3 sigma, each on a whole pixel. Taps are spaced
+// 6 sigma / (taps - 1) apart but at least one pixel, so no pixel is sampled twice (a narrow
+// Gaussian is then sampled at every pixel of +-(taps - 1) / 2 instead of repeating the centre),
+// and rounded half away from zero, so the kernel is symmetric. Each weight is the Gaussian of the
+// tap's actual offset: the kernel is a Gaussian sampled at the pixels it reads, normalised by the
+// sum of the weights used. Offsets are clamped to +-1e6 pixels (beyond any image; fetches clamp to
+// the edge), so a huge sigma (eq 6.2 near d_blocker = 0) cannot overflow the int.
+CANOPY_FN int ssss_tap_offset(int i, int taps, float sigma) {
+    float spacing = taps > 1 ? max(6.0f * sigma / float(taps - 1), 1.0f) : 0.0f;
+    float offset = clamp((float(i) - 0.5f * float(taps - 1)) * spacing, -1e6f, 1e6f);
+    return int(sign(offset) * floor(abs(offset) + 0.5f));
+}
+
+CANOPY_FN float ssss_tap_weight(int offset, float sigma) {
+    float x = float(offset) / max(sigma, 1e-6f);
+    return exp(-0.5f * x * x);
+}
+
+// A tap belongs to the centre's surface when its distance to the observer differs by at most
+// depth_error (relative); others are dropped or, with lazy shadowing, re-evaluated (6.2.3, Alg. 4).
+CANOPY_FN bool ssss_same_surface(float tap_distance, float centre_distance, float depth_error) {
+    return abs(tap_distance - centre_distance) <= depth_error * centre_distance;
+}
+
+// Pixels the blur leaves as they are (the mask of 6.2.2): sigma below SSSS_MIN_SIGMA (the screen
+// pass writes 0 where the coarse map finds no blocker: no penumbra can reach the pixel), and the
+// background (distance 1e30).
+CANOPY_FN bool ssss_blurs(float sigma, float distance) {
+    return sigma >= SSSS_MIN_SIGMA && distance <= 1e29f;
+}
+
+// Lazy shadowing (6.3.2): a tap hidden by another surface is replaced by the hard shadow of the
+// point where its view ray meets the centre pixel's tangent plane (normal n through the centre
+// point, given relative to the camera). Returns the distance along the unit ray, or -1 when the
+// ray misses the plane (grazing, or behind the camera).
+CANOPY_FN float ssss_tangent_plane_distance(vec3 n, vec3 ray, vec3 centre_from_camera) {
+    float facing = dot(n, ray);
+    if (abs(facing) < 1e-4f) return -1.0f;
+    float t = dot(n, centre_from_camera) / facing;
+    return t > 0.0f ? t : -1.0f;
+}
+
+CANOPY_END_NAMESPACE
+
+#endif

@@ -1,0 +1,602 @@
+// shadow.ssss, part by part (Gumbau 2011 ch. 6), on the device where the part is a shader:
+//  * the coarse map: each texel the minimum of its block of the shadow map (6.2.1);
+//  * its dilation, whose reach follows the light's size (L1614) -- in a synthetic map and in a
+//    rendered scene as the light grows;
+//  * the Gaussian's sigma from eq 6.2, in numbers and as the screen pass writes it;
+//  * the blur's taps (Gaussian weights of the pixels actually read), its depth-discontinuity
+//    rejection (6.2.3), lazy shadowing (6.3.2) and the mask of pixels it leaves alone (6.2.2).
+// Synthetic inputs run through the technique's own passes (its FramePlan's FilterPasses) in a
+// FilterChain; the expected values come from ssss_filter.h, the header those shaders include.
+#include "config/scene_config.hpp"
+#include "core/registry.hpp"
+#include "render/filter_chain.hpp"
+#include "render/frame_renderer.hpp"
+#include "render/frame_uniforms.hpp"
+#include "render/light_view.hpp"
+#include "render/texture_readback.hpp"
+#include "scene/camera.hpp"
+#include "scene/geometry.hpp"
+#include "support/test_gpu.hpp"
+
+#include "shading.h"
+#include "../ssss/ssss_filter.h"
+
+#include <doctest/doctest.h>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <functional>
+#include <limits>
+#include <optional>
+#include <random>
+#include <string>
+#include <vector>
+
+using namespace canopy;
+namespace sh = canopy::shader;
+
+namespace {
+
+// ---------------------------------------------------------------------------------------------
+// Device inputs for a FilterChain.
+
+// A float texture holding `texels` (1 or 4 floats each), left in SHADER_READ_ONLY_OPTIMAL.
+Texture upload_texture(MemoryLedger& ledger, uint32_t width, uint32_t height, VkFormat format,
+                       const std::vector<float>& texels) {
+    const GpuContext& gpu = test::gpu();
+    const bool depth = format == VK_FORMAT_D32_SFLOAT;
+    const VkImageUsageFlags usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
+                                    (depth ? 0 : VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
+    const VkImageAspectFlags aspect = depth ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT;
+    Texture texture(gpu, ledger, "test", width, height, format, usage, aspect);
+    Buffer staging(gpu, ledger, "test", texels.size() * sizeof(float), VK_BUFFER_USAGE_TRANSFER_SRC_BIT, true);
+    std::memcpy(staging.mapped(), texels.data(), texels.size() * sizeof(float));
+    VkCommandBuffer commands = gpu.begin_commands();
+    transition(commands, texture, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
+    VkBufferImageCopy region{};
+    region.imageSubresource = {aspect, 0, 0, 1};
+    region.imageExtent = {width, height, 1};
+    vkCmdCopyBufferToImage(commands, staging.handle(), texture.image(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+    transition(commands, texture, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+               depth ? VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    gpu.submit_and_wait(commands);
+    return texture;
+}
+
+Buffer upload_uniforms(MemoryLedger& ledger, const FrameUniforms& u) {
+    Buffer buffer(test::gpu(), ledger, "test", sizeof(FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
+    std::memcpy(buffer.mapped(), &u, sizeof(u));
+    return buffer;
+}
+
+// Runs `passes` over `source` (SHADER_READ_ONLY) and reads the result back.
+Image run_passes(const Texture& source, VkFormat format, const std::vector<FilterPass>& passes,
+                 const FilterExtras& extras) {
+    MemoryLedger ledger;
+    FilterChain chain(test::gpu(), ledger, "test", source.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, nullptr,
+                      source.width(), source.height(), format, passes, extras);
+    VkCommandBuffer commands = test::gpu().begin_commands();
+    for (size_t i = 0; i < chain.size(); ++i) chain.record(commands, i);
+    test::gpu().submit_and_wait(commands);
+    return read_texture(test::gpu(), chain.result_texture(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+}
+
+// shadow.ssss's plan for `given` parameters (the rest at their defaults).
+FramePlan ssss_plan(const std::map<std::string, ParamValue>& given = {}) {
+    const Technique& t = *TechniqueRegistry::instance().find("shadow.ssss");
+    return t.plan(ParamSet::resolve(t.params(), given, {}, {}, "shadow.ssss"));
+}
+
+// The frame a rect light of width `light_width` (mean side) gives the coarse passes: a
+// perspective shadow map over [near, far] whose texel spans `texel_world` at depth 1.
+FrameUniforms coarse_frame(float light_width, float near_plane, float far_plane, float texel_world) {
+    FrameUniforms u{};
+    u.light_position = glm::vec4(0.0f, 0.0f, 0.0f, float(sh::LIGHT_RECT));
+    u.light_size = glm::vec4(light_width * std::sqrt(2.0f), light_width, light_width, 0.0f);
+    u.shadow_depth_range = glm::vec4(near_plane, far_plane, 1.0f / (far_plane - near_plane), 1.0f);
+    u.shadow_texel = glm::vec4(0.0f, 0.0f, texel_world, 0.0f);
+    return u;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Scenes.
+
+// The integration scene (a 1 x 0.5 x 1 box, bottom at y = 1, over a floor at y = 0), lit by a
+// square rect light of side `light_side` at y = 4 facing down.
+Scene box_under_rect_light(float light_side) {
+    Scene scene = load_scene(std::string(CANOPY_TEST_DATA) + "/scenes/tiny.toml");
+    Light& light = scene.lights.front();
+    light.type = LightType::rect;
+    light.position = glm::vec3(0.0f, 4.0f, 0.0f);
+    light.direction = glm::vec3(0.0f, -1.0f, 0.0f);
+    light.rect_size = glm::vec2(light_side);
+    light.intensity = 30.0f;
+    return scene;
+}
+
+struct Rendered {
+    Image coarse, screen, color;
+};
+
+// One frame of shadow.ssss with `given`; the screen buffer before the blur when `without_blur`.
+Rendered render_ssss(const Scene& scene, int width, int height, const std::map<std::string, ParamValue>& given,
+                     bool without_blur) {
+    FramePlan plan = ssss_plan(given);
+    if (without_blur) plan.screen_shadow->filters.clear();
+    FrameRenderer renderer(test::gpu(), scene, build_scene_meshes(scene), uint32_t(width), uint32_t(height), plan);
+    renderer.render();
+    return {renderer.read_coarse_map(), renderer.read_screen_shadow(), renderer.read_color()};
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+TEST_CASE("SSSS coarse map: each texel is the minimum of its block, partial blocks included") {
+    std::mt19937 rng(62);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    for (long long block : {1LL, 4LL, 16LL}) {
+        for (uint32_t size : {64u, 50u}) {  // 50: the last block is partial (2 of 4, or 2 of 16)
+            CAPTURE(block);
+            CAPTURE(size);
+            std::vector<float> depth(size_t(size) * size);
+            for (float& d : depth) d = u(rng);
+            MemoryLedger ledger;
+            const Texture source = upload_texture(ledger, size, size, VK_FORMAT_R32_SFLOAT, depth);
+            const FramePlan plan = ssss_plan({{"coarse_block", block}});
+            const FilterPass& block_pass = plan.shadow_map->coarse_filters.front();
+            REQUIRE(block_pass.downsample == block);
+            const Image coarse = run_passes(source, VK_FORMAT_R32_SFLOAT, {block_pass}, {});
+            const int expected_size = int((size + block - 1) / block);
+            REQUIRE(coarse.width == expected_size);
+            REQUIRE(coarse.height == expected_size);
+            int wrong = 0;
+            for (int cy = 0; cy < coarse.height; ++cy)
+                for (int cx = 0; cx < coarse.width; ++cx) {
+                    float lowest = 1.0f;
+                    for (int y = cy * int(block); y < std::min<int>(int(size), (cy + 1) * int(block)); ++y)
+                        for (int x = cx * int(block); x < std::min<int>(int(size), (cx + 1) * int(block)); ++x)
+                            lowest = std::min(lowest, depth[size_t(y) * size + size_t(x)]);
+                    wrong += coarse.at(cx, cy)[0] != lowest;
+                }
+            CHECK(wrong == 0);
+            // The screen pass's lookup: shadow texel -> its block's coarse texel.
+            for (int x : {0, int(block) - 1, int(block), int(size) - 1})
+                CHECK(sh::ssss_coarse_texel(glm::ivec2(x, 0), int(block), glm::ivec2(expected_size)).x == x / int(block));
+        }
+    }
+}
+
+// L1614: "The amount of dilation is proportional to the size of the area light source [...] the
+// user has to apply a constant factor [...] interpreted as the maximum distance to the occluder".
+TEST_CASE("SSSS dilation: reach from eq 6.1's outer penumbra, proportional to the light's size") {
+    // In numbers: half of eq 6.1's width on the receiver, in texels there.
+    const float near_plane = 2.0f, far_plane = 6.0f, texel = 1e-3f;
+    // Blocker at 3, receiver up to 1 behind (at 4): (0.2 / 2) (4 - 3) / 3 = 1/30 on the receiver,
+    // whose texels span 4e-3: 8.33 texels.
+    CHECK(sh::ssss_dilation_texels(3.0f, 1.0f, far_plane, 0.2f, texel, true) == doctest::Approx(8.3333).epsilon(1e-4));
+    CHECK(sh::ssss_dilation_texels(3.0f, 1.0f, far_plane, 0.4f, texel, true) ==
+          doctest::Approx(2.0 * sh::ssss_dilation_texels(3.0f, 1.0f, far_plane, 0.2f, texel, true)).epsilon(1e-6));
+    CHECK(sh::ssss_dilation_texels(3.0f, 1.0f, far_plane, 0.0f, texel, true) == 0.0f);  // point light: none
+    CHECK(sh::ssss_dilation_texels(3.0f, 0.0f, far_plane, 0.2f, texel, true) == 0.0f);  // no occluder distance
+    CHECK(sh::ssss_dilation_texels(3.0f, 10.0f, far_plane, 0.2f, texel, true) ==          // receiver clamped to far
+          doctest::Approx(0.1 * (1.0 / 3.0 - 1.0 / 6.0) / 1e-3).epsilon(1e-4));
+    CHECK(sh::ssss_dilation_texels(2.5f, 1.0f, far_plane, 0.2f, texel, true) >            // nearer blockers reach farther
+          sh::ssss_dilation_texels(3.0f, 1.0f, far_plane, 0.2f, texel, true));
+    CHECK(sh::ssss_dilation_texels(3.0f, 1.0f, far_plane, 0.2f, 0.01f, false) == doctest::Approx(0.1 / 3.0 / 0.01).epsilon(1e-5));
+    for (float d : {0.0f, 1e-30f, 1e30f})
+        for (float w : {0.0f, 1e30f}) CHECK(std::isfinite(sh::ssss_dilation_texels(d, 1e30f, 1e30f, w, 0.0f, true)));
+    CHECK(sh::ssss_dilation_reaches(0, 0.0f, 4));
+    CHECK_FALSE(sh::ssss_dilation_reaches(1, 0.0f, 4));
+    CHECK(sh::ssss_dilation_reaches(1, 0.1f, 4));
+    CHECK(sh::ssss_dilation_reaches(3, 8.5f, 4));  // gap (3 - 1) 4 = 8 texels < 8.5
+    CHECK_FALSE(sh::ssss_dilation_reaches(-4, 8.5f, 4));
+
+    // On the device, through the technique's own passes: one blocker texel on an empty map
+    // dilates to a square whose half-width is the largest offset its reach covers; a second,
+    // farther blocker reaches less far.
+    const uint32_t size = 96;
+    const int block = 2;
+    const float z_near = 0.25f, z_far = 0.5f;  // d_b = 3 and 4
+    std::vector<float> depth(size_t(size) * size, 1.0f);
+    // Coarse texel (cx, cy) covers shadow texels [2cx, 2cx + 2); put each blocker in one texel.
+    auto put = [&](glm::ivec2 coarse_texel, float z) {
+        depth[size_t(coarse_texel.y * block) * size + size_t(coarse_texel.x * block)] = z;
+    };
+    const glm::ivec2 near_coarse(15, 20), far_coarse(35, 20);
+    put(near_coarse, z_near);
+    put(far_coarse, z_far);
+    MemoryLedger ledger;
+    const Texture source = upload_texture(ledger, size, size, VK_FORMAT_R32_SFLOAT, depth);
+    const FramePlan plan = ssss_plan({{"coarse_block", (long long)block}, {"occluder_distance", 0.25}});
+    std::vector<float> near_reaches;
+    std::vector<int> near_radii;
+    for (float light : {0.1f, 0.2f, 0.4f}) {
+        CAPTURE(light);
+        const Buffer frame = upload_uniforms(ledger, coarse_frame(light, near_plane, far_plane, texel));
+        const Image coarse = run_passes(source, VK_FORMAT_R32_SFLOAT, plan.shadow_map->coarse_filters,
+                                        FilterExtras{frame.handle()});
+        // Expected: the largest coarse offset each blocker reaches (occluder distance 0.25 x 4 = 1).
+        auto reach_of = [&](float z) {
+            return sh::ssss_dilation_texels(near_plane + z * (far_plane - near_plane), 1.0f, far_plane, light, texel, true);
+        };
+        auto radius_of = [&](float reach) {
+            int r = 0;
+            while (sh::ssss_dilation_reaches(r + 1, reach, block)) ++r;
+            return r;
+        };
+        const int r_near = radius_of(reach_of(z_near)), r_far = radius_of(reach_of(z_far));
+        MESSAGE("light ", light, ": the blocker at d = 3 reaches ", reach_of(z_near), " shadow texels (", r_near,
+                " coarse texels), the one at d = 4 ", reach_of(z_far), " (", r_far, ")");
+        CHECK(r_near > r_far);
+        int wrong = 0;
+        for (int y = 0; y < coarse.height; ++y)
+            for (int x = 0; x < coarse.width; ++x) {
+                const glm::ivec2 p(x, y);
+                const glm::ivec2 dn = glm::abs(p - near_coarse), df = glm::abs(p - far_coarse);
+                float expect = 1.0f;
+                if (std::max(df.x, df.y) <= r_far) expect = z_far;
+                if (std::max(dn.x, dn.y) <= r_near) expect = z_near;
+                wrong += coarse.at(x, y)[0] != expect;
+            }
+        CHECK(wrong == 0);
+        near_reaches.push_back(reach_of(z_near));
+        near_radii.push_back(r_near);
+    }
+    // The reach is proportional to the light's size; the radius in whole coarse texels follows it.
+    CHECK(near_reaches[1] == doctest::Approx(2.0 * near_reaches[0]).epsilon(1e-5));
+    CHECK(near_reaches[2] == doctest::Approx(4.0 * near_reaches[0]).epsilon(1e-5));
+    CHECK(near_radii[0] >= 2);
+    CHECK(near_radii[0] < near_radii[1]);
+    CHECK(near_radii[1] < near_radii[2]);
+}
+
+// The same in a rendered scene: the coarse map around the box widens with the light.
+TEST_CASE("SSSS dilation in a render: the coarse map's blocker region grows with the light") {
+    const int block = 4;  // the default coarse_block
+    std::vector<int> widths, radii;
+    for (float side : {0.2f, 0.4f, 0.8f}) {
+        const Scene scene = box_under_rect_light(side);
+        const Rendered r = render_ssss(scene, 32, 32, {}, true);
+        // The middle row of coarse texels: those nearer than the floor hold the box's top.
+        int covered = 0;
+        const int row = r.coarse.height / 2;
+        for (int x = 0; x < r.coarse.width; ++x) covered += r.coarse.at(x, row)[0] < 0.9f;
+        widths.push_back(covered);
+        // The reach of the box's top (2.5 from the light) for receivers up to the default occluder
+        // distance behind it (a fraction of the light's depth range), in whole coarse texels.
+        const LightView lv = compute_light_view(scene.lights.front(), scene_bounds(scene, build_scene_meshes(scene)), 1024);
+        const float occluder_distance = ssss_plan().shadow_map->coarse_filters[1].params[1];
+        const float reach = sh::ssss_dilation_texels(2.5f, occluder_distance * (lv.far_plane - lv.near_plane),
+                                                     lv.far_plane, side, lv.texel_world, true);
+        int radius = 0;
+        while (sh::ssss_dilation_reaches(radius + 1, reach, block)) ++radius;
+        radii.push_back(radius);
+        MESSAGE("light side ", side, ": ", covered, " coarse texels of the middle row hold a blocker; reach ", reach,
+                " shadow texels = ", radius, " coarse texels");
+    }
+    // The box covers the same coarse texels for every light: the growth is the dilation's, on both
+    // sides.
+    for (size_t i = 1; i < widths.size(); ++i) {
+        CAPTURE(i);
+        CHECK(radii[i] > radii[i - 1]);
+        CHECK(widths[i] - widths[i - 1] == 2 * (radii[i] - radii[i - 1]));
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Eq 6.2: w = (d_receiver - d_blocker) w_light / (d_blocker d_observer).
+TEST_CASE("SSSS sigma from eq 6.2, in numbers and as the screen pass writes it") {
+    // d_r = 10, d_b = 5, w_light = 1, d_observer = 4: w = 5 / 20 = 0.25 per unit of distance; with
+    // a focal length of 1000 pixels, 250 pixels, and sigma = 250 / 2.563.
+    CHECK(sh::ssss_sigma_pixels(10.0f, 5.0f, 1.0f, 4.0f, 1000.0f) == doctest::Approx(250.0 / 2.563).epsilon(1e-6));
+    CHECK(sh::ssss_sigma_pixels(10.0f, 5.0f, 2.0f, 4.0f, 1000.0f) ==
+          doctest::Approx(2.0 * sh::ssss_sigma_pixels(10.0f, 5.0f, 1.0f, 4.0f, 1000.0f)));  // G-F6.9
+    CHECK(sh::ssss_sigma_pixels(10.0f, 5.0f, 1.0f, 8.0f, 1000.0f) ==
+          doctest::Approx(0.5 * sh::ssss_sigma_pixels(10.0f, 5.0f, 1.0f, 4.0f, 1000.0f)));  // farther: smaller
+    CHECK(sh::ssss_sigma_pixels(5.0f, 5.0f, 1.0f, 4.0f, 1000.0f) == 0.0f);  // contact: no penumbra
+    // 2.563 sigma is the 10-90 % rise of a blurred step: Phi(1.2816) - Phi(-1.2816) = 0.8.
+    const double half = 0.5 * sh::SSSS_PENUMBRA_WIDTH_IN_SIGMAS / std::sqrt(2.0);
+    CHECK(0.5 * (std::erf(half) - std::erf(-half)) == doctest::Approx(0.8).epsilon(1e-4));
+    // Anisotropy: a normal along view x shrinks x entirely, one tilted 45 degrees in y by sqrt(1/2).
+    CHECK(sh::ssss_anisotropic_sigma(2.0f, {1.0f, 0.0f, 0.0f}) == glm::vec2(0.0f, 2.0f));
+    CHECK(sh::ssss_anisotropic_sigma(2.0f, {0.0f, std::sqrt(0.5f), std::sqrt(0.5f)}).y == doctest::Approx(std::sqrt(2.0)));
+
+    // The screen pass, in the box scene: floor pixels under the box get eq 6.2 with the coarse
+    // map's blocker (the box top at y = 1.5: 2.5 from the light), the floor 4 from the light,
+    // their own distance to the camera and the camera's focal length.
+    const int width = 96, height = 64;
+    const float side = 0.2f;
+    const Scene scene = box_under_rect_light(side);
+    const Rendered r = render_ssss(scene, width, height, {}, true);
+    const float focal = 0.5f * float(height) / std::tan(0.5f * glm::radians(scene.camera.fov_y_degrees));
+    const glm::mat4 view = view_matrix(scene.camera);
+    const glm::vec3 floor_normal_view = glm::normalize(glm::mat3(view) * glm::vec3(0.0f, 1.0f, 0.0f));
+    int checked = 0, wrong = 0;
+    for (glm::vec3 target : {glm::vec3(0.0f), glm::vec3(0.2f, 0.0f, 0.1f), glm::vec3(-0.3f, 0.0f, -0.2f)}) {
+        const glm::vec2 px = project_to_pixel(scene.camera, width, height, target);
+        const int x = int(px.x), y = int(px.y);
+        const Ray ray = primary_ray(scene.camera, width, height, float(x) + 0.5f, float(y) + 0.5f);
+        const glm::vec3 p = ray.origin + ray.direction * (-ray.origin.y / ray.direction.y);  // on the floor
+        const float d_observer = glm::length(p - scene.camera.position);
+        const float sigma = sh::ssss_sigma_pixels(4.0f, 2.5f, side, d_observer, focal);
+        const glm::vec2 expect = sh::ssss_anisotropic_sigma(sigma, floor_normal_view);
+        const float* data = r.screen.at(x, y);
+        CAPTURE(x);
+        CAPTURE(y);
+        CHECK(data[0] == 0.0f);  // under the box: hard shadow
+        CHECK(data[1] == doctest::Approx(expect.x).epsilon(2e-3));
+        CHECK(data[2] == doctest::Approx(expect.y).epsilon(2e-3));
+        CHECK(data[3] == doctest::Approx(d_observer).epsilon(1e-4));
+        ++checked;
+        wrong += !(std::abs(data[1] - expect.x) <= 2e-3f * expect.x);
+    }
+    CHECK(checked == 3);
+    CHECK(wrong == 0);
+    // The open floor's corner, far from any blocker: sigma 0 (the mask).
+    const glm::vec2 open = project_to_pixel(scene.camera, width, height, glm::vec3(-2.5f, 0.0f, 2.0f));
+    CHECK(r.screen.at(int(open.x), int(open.y))[1] == 0.0f);
+    CHECK(r.screen.at(int(open.x), int(open.y))[0] == 1.0f);
+}
+
+// ---------------------------------------------------------------------------------------------
+TEST_CASE("SSSS blur taps: whole pixels, each once, weighted by the Gaussian of its offset") {
+    for (int taps : {5, 11, 23, 4}) {
+        for (float sigma : {0.25f, 0.4f, 0.5f, 0.8f, 1.0f, 1.7f, 3.0f, 6.0f, 20.0f}) {
+            CAPTURE(taps);
+            CAPTURE(sigma);
+            std::vector<int> offsets;
+            double sum = 0.0, second = 0.0;
+            for (int i = 0; i < taps; ++i) {
+                const int o = sh::ssss_tap_offset(i, taps, sigma);
+                offsets.push_back(o);
+                const double w = sh::ssss_tap_weight(o, sigma);
+                CHECK(w == doctest::Approx(std::exp(-0.5 * double(o) * o / (double(sigma) * sigma))));
+                sum += w;
+                second += w * double(o) * o;
+            }
+            std::vector<int> sorted = offsets;
+            std::sort(sorted.begin(), sorted.end());
+            CHECK(std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end());  // no pixel twice
+            for (int i = 0; i < taps; ++i) CHECK(offsets[size_t(i)] == -offsets[size_t(taps - 1 - i)]);  // symmetric
+            if (taps % 2 == 1) CHECK(offsets[size_t(taps / 2)] == 0);
+            // The kernel spans +-3 sigma (or +-(taps - 1) / 2 pixels when that is wider).
+            CHECK(double(sorted.back()) >= std::min(3.0 * sigma, 0.5 * (taps - 1)) - 0.5);
+            // Its variance is sigma^2 where the taps resolve the Gaussian (at least one per sigma):
+            // a sampled Gaussian, not the rounded kernel's (1.5 sigma^2 at sigma 0.5, K = 11).
+            const double variance = second / sum;
+            if (taps >= 11 && sigma >= 0.5f && sigma <= float(taps - 1) / 6.0f) {
+                CHECK(variance == doctest::Approx(double(sigma) * sigma).epsilon(0.15));
+            }
+        }
+    }
+}
+
+// Extremes: a sigma from eq 6.2 near d_blocker = 0 is huge, one at contact 0; both stay usable.
+TEST_CASE("SSSS sigma and taps at extremes stay finite") {
+    for (float d_b : {0.0f, 1e-30f, 1.0f, 1e30f})
+        for (float w : {0.0f, 1.0f, 1e30f})
+            for (float d_obs : {0.0f, 1.0f, 1e30f}) {
+                const float sigma = sh::ssss_sigma_pixels(10.0f, d_b, w, d_obs, 1000.0f);
+                CHECK_MESSAGE((std::isfinite(sigma) && sigma >= 0.0f), "sigma ", sigma);
+            }
+    for (float sigma : {0.0f, 1e-30f, 1e30f, std::numeric_limits<float>::infinity()}) {
+        CAPTURE(sigma);
+        for (int i = 0; i < 11; ++i) {
+            const int o = sh::ssss_tap_offset(i, 11, sigma);
+            CHECK(std::abs(o) <= 1000000);
+            CHECK(o == -sh::ssss_tap_offset(10 - i, 11, sigma));
+            const float w = sh::ssss_tap_weight(o, sigma);
+            CHECK((std::isfinite(w) && w >= 0.0f && w <= 1.0f));
+        }
+        CHECK(sh::ssss_tap_weight(0, sigma) == 1.0f);  // the centre always counts
+    }
+}
+
+namespace {
+
+// A synthetic screen for the blur: a camera at (0, 0, 5) looking down -z at a floor (the plane
+// z = 0, normal +z) which a light straight above (orthographic over [-5, 5]^2, along -z) shadows
+// for world x < kShadowEdge, through a 64^2 shadow map whose first 30 columns hold a blocker at
+// depth 0.1. The edge is off the camera's axis, so where along a view ray a point is matters.
+struct BlurScreen {
+    static constexpr int kWidth = 64, kHeight = 8;
+    static constexpr int kBlockerColumns = 30;
+    static constexpr float kShadowEdge = -5.0f + 10.0f * float(kBlockerColumns) / 64.0f;  // -0.3125
+    FrameUniforms frame{};
+    glm::vec3 camera{0.0f, 0.0f, 5.0f};
+    glm::mat4 inverse_view_proj{1.0f};
+
+    BlurScreen() {
+        const glm::mat4 view = glm::lookAt(camera, glm::vec3(0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
+        // 8 rows over 10 degrees: about 70 degrees across, so the floor's distance changes by at
+        // most ~1.3 % from one pixel to the next (the depth test's threshold is 5 %).
+        const glm::mat4 proj = glm::perspective(glm::radians(10.0f), float(kWidth) / float(kHeight), 0.1f, 100.0f);
+        frame.view = view;
+        frame.view_proj = proj * view;
+        frame.inverse_view_proj = inverse_view_proj = glm::inverse(proj * view);
+        frame.camera_position = glm::vec4(camera, 1.0f);
+        frame.light_position = glm::vec4(0.0f, 0.0f, 10.0f, float(sh::LIGHT_DIRECTIONAL));
+        frame.light_axis = glm::vec4(0.0f, 0.0f, -1.0f, 0.0f);
+        frame.light_view = glm::lookAt(glm::vec3(0.0f, 0.0f, 10.0f), glm::vec3(0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
+        frame.light_proj = glm::ortho(-5.0f, 5.0f, -5.0f, 5.0f, 1.0f, 20.0f);
+        frame.shadow_depth_range = glm::vec4(1.0f, 20.0f, 1.0f / 19.0f, 0.0f);
+        frame.shadow_texel = glm::vec4(64.0f, 1.0f / 64.0f, 10.0f / 64.0f, 0.0f);
+        frame.technique_params[0] = glm::vec4(0.0005f, 1.0f, 0.0f, 0.0f);  // bias constant, slope
+    }
+    // The view ray through pixel (x, y), as ssss_blur.comp's pixel_ray forms it.
+    glm::vec3 ray(int x, int y) const {
+        const glm::vec2 ndc = (glm::vec2(float(x), float(y)) + 0.5f) / glm::vec2(kWidth, kHeight) * 2.0f - 1.0f;
+        const glm::vec4 far_point = inverse_view_proj * glm::vec4(ndc, 1.0f, 1.0f);
+        return glm::normalize(glm::vec3(far_point) / far_point.w - camera);
+    }
+    // Distance to the floor along pixel (x, y)'s ray, and where it meets the floor.
+    float floor_distance(int x, int y) const { glm::vec3 r = ray(x, y); return -camera.z / r.z; }
+    static bool shadowed(const glm::vec3& p) { return p.x < kShadowEdge; }
+    bool floor_shadowed(int x, int y) const { return shadowed(camera + ray(x, y) * floor_distance(x, y)); }
+};
+
+// The blur's horizontal pass over `data` (per pixel: hard, sigma_x, sigma_y, distance) with the
+// technique's own parameters, on the device.
+Image blur_x(const BlurScreen& screen, const std::vector<float>& data, const std::map<std::string, ParamValue>& given) {
+    MemoryLedger ledger;
+    const Texture source = upload_texture(ledger, BlurScreen::kWidth, BlurScreen::kHeight, VK_FORMAT_R32G32B32A32_SFLOAT, data);
+    std::vector<float> normals;
+    for (int i = 0; i < BlurScreen::kWidth * BlurScreen::kHeight; ++i) normals.insert(normals.end(), {0.0f, 0.0f, 1.0f, 1.0f});
+    const Texture normal_map = upload_texture(ledger, BlurScreen::kWidth, BlurScreen::kHeight, VK_FORMAT_R32G32B32A32_SFLOAT, normals);
+    std::vector<float> depth(64 * 64, 1.0f);
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < BlurScreen::kBlockerColumns; ++x) depth[size_t(y) * 64 + size_t(x)] = 0.1f;
+    const Texture shadow_map = upload_texture(ledger, 64, 64, VK_FORMAT_D32_SFLOAT, depth);
+    const Buffer frame = upload_uniforms(ledger, screen.frame);
+    const FramePlan plan = ssss_plan(given);
+    const FilterPass& pass = plan.screen_shadow->filters.front();
+    REQUIRE(pass.horizontal);
+    return run_passes(source, VK_FORMAT_R32G32B32A32_SFLOAT, {pass},
+                      FilterExtras{frame.handle(), shadow_map.view(), normal_map.view()});
+}
+
+// ssss_blur.comp's horizontal pass at pixel (x, y) in C++, from ssss_filter.h: `data` as uploaded;
+// a hidden tap with lazy shadowing reads the floor's shadow where its ray meets the centre's
+// tangent plane (the floor: every test surface here has normal +z).
+float expected_blur(const BlurScreen& screen, const std::vector<float>& data, int x, int y, int taps, float depth_error,
+                    bool lazy) {
+    auto texel = [&](int tx) { return &data[(size_t(y) * BlurScreen::kWidth + size_t(tx)) * 4]; };
+    const float* centre = texel(x);
+    const float sigma = centre[1];
+    if (!sh::ssss_blurs(sigma, centre[3])) return centre[0];
+    const glm::vec3 centre_from_camera = screen.ray(x, y) * centre[3];
+    float sum = 0.0f, weights = 0.0f;
+    for (int i = 0; i < taps; ++i) {
+        const int o = sh::ssss_tap_offset(i, taps, sigma);
+        const int tx = std::clamp(x + o, 0, BlurScreen::kWidth - 1);
+        float value = texel(tx)[0];
+        if (!sh::ssss_same_surface(texel(tx)[3], centre[3], depth_error)) {
+            if (!lazy) continue;
+            const glm::vec3 ray = screen.ray(x + o, y);
+            const float t = sh::ssss_tangent_plane_distance({0.0f, 0.0f, 1.0f}, ray, centre_from_camera);
+            if (t <= 0.0f) continue;
+            value = BlurScreen::shadowed(screen.camera + ray * t) ? 0.0f : 1.0f;
+        }
+        const float w = sh::ssss_tap_weight(o, sigma);
+        sum += w * value;
+        weights += w;
+    }
+    return weights > 0.0f ? sum / weights : centre[0];
+}
+
+}  // namespace
+
+// 6.2.3: "their distance to the observer is taken into account to discard samples whose distance
+// to the current pixel is greater than a certain threshold".
+TEST_CASE("SSSS blur on the device: Gaussian taps, and taps across a depth jump are excluded") {
+    const BlurScreen screen;
+    const float sigma = 3.0f;
+    const int taps = 11;
+    // Columns 0-19: another surface, `far_factor` times as far, in shadow (0); the rest the floor, lit (1).
+    auto make = [&](float far_factor) {
+        std::vector<float> data;
+        for (int y = 0; y < BlurScreen::kHeight; ++y)
+            for (int x = 0; x < BlurScreen::kWidth; ++x) {
+                const float d = screen.floor_distance(x, y);
+                data.insert(data.end(), {x < 20 ? 0.0f : 1.0f, sigma, sigma, x < 20 ? far_factor * d : d});
+            }
+        return data;
+    };
+    // No jump: the plain Gaussian across the step (the floor's own distances stay within 5 %).
+    const std::vector<float> flat = make(1.0f), stepped = make(2.0f);
+    const Image plain = blur_x(screen, flat, {{"kernel", (long long)taps}, {"lazy", false}});
+    // A jump of 100 % (> depth_error 5 %): each side ignores the other's taps.
+    const Image jump = blur_x(screen, stepped, {{"kernel", (long long)taps}, {"lazy", false}});
+    int plain_wrong = 0, jump_wrong = 0, darkened = 0;
+    for (int y = 0; y < BlurScreen::kHeight; ++y)
+        for (int x = 0; x < BlurScreen::kWidth; ++x) {
+            plain_wrong += std::abs(plain.at(x, y)[0] - expected_blur(screen, flat, x, y, taps, 0.05f, false)) > 1e-5f;
+            jump_wrong += std::abs(jump.at(x, y)[0] - expected_blur(screen, stepped, x, y, taps, 0.05f, false)) > 1e-5f;
+            darkened += x >= 20 && plain.at(x, y)[0] < 0.99f;
+        }
+    CHECK(plain_wrong == 0);
+    CHECK(jump_wrong == 0);
+    CHECK(darkened >= 4 * BlurScreen::kHeight);  // without the jump the step is blurred across
+    const int y = 3;
+    for (int x = 0; x < BlurScreen::kWidth; ++x) CHECK(jump.at(x, y)[0] == (x < 20 ? 0.0f : 1.0f));  // own taps only
+    // Sigma and distance pass through untouched.
+    CHECK(jump.at(30, y)[1] == sigma);
+    CHECK(jump.at(30, y)[3] == doctest::Approx(screen.floor_distance(30, y)));
+}
+
+// 6.3.2: a tap hidden by a nearer surface is replaced by the hard shadow of the point where its
+// view ray meets the centre pixel's tangent plane.
+TEST_CASE("SSSS lazy shadowing on the device: hidden taps take the shadow of the tangent plane") {
+    const BlurScreen screen;
+    const float sigma = 4.0f;
+    const int taps = 11;
+    // Columns 0-31 show a nearer, lit object (distance 2, not blurred: sigma 0); behind it the
+    // floor continues into the light's shadow (world x < -0.3125). Columns 32+ show the lit floor.
+    std::vector<float> data;
+    for (int y = 0; y < BlurScreen::kHeight; ++y)
+        for (int x = 0; x < BlurScreen::kWidth; ++x) {
+            const bool object = x < 32;
+            data.insert(data.end(), {1.0f, object ? 0.0f : sigma, object ? 0.0f : sigma,
+                                     object ? 2.0f : screen.floor_distance(x, y)});
+        }
+    REQUIRE(screen.floor_shadowed(26, 3));  // hidden behind the object, in the light's shadow
+    REQUIRE_FALSE(screen.floor_shadowed(31, 3));  // hidden, lit
+    REQUIRE_FALSE(screen.floor_shadowed(32, 3));
+    const Image lazy = blur_x(screen, data, {{"kernel", (long long)taps}, {"lazy", true}});
+    const Image dropped = blur_x(screen, data, {{"kernel", (long long)taps}, {"lazy", false}});
+    const int y = 3;
+    int wrong = 0, darker = 0;
+    for (int x = 32; x < BlurScreen::kWidth; ++x) {
+        // Hidden taps (x < 32) read the floor's shadow behind the object: 0 beyond the edge.
+        wrong += std::abs(lazy.at(x, y)[0] - expected_blur(screen, data, x, y, taps, 0.05f, true)) > 1e-4f;
+        darker += lazy.at(x, y)[0] < 0.99f;
+        CHECK(dropped.at(x, y)[0] == 1.0f);  // without lazy shadowing: only the visible, lit floor
+    }
+    CHECK(wrong == 0);
+    CHECK(darker >= 4);  // the penumbra the object hides from view reappears beside it
+    // The object's own pixels (sigma 0) are left alone.
+    for (int x = 0; x < 32; ++x) CHECK(lazy.at(x, y)[0] == 1.0f);
+    // Tangent-plane distances in numbers: a ray along -z meets the plane z = 0 at 5 from z = 5.
+    CHECK(sh::ssss_tangent_plane_distance({0.0f, 0.0f, 1.0f}, {0.0f, 0.0f, -1.0f}, {0.0f, 0.0f, -5.0f}) == 5.0f);
+    CHECK(sh::ssss_tangent_plane_distance({0.0f, 0.0f, 1.0f}, {1.0f, 0.0f, 0.0f}, {0.0f, 0.0f, -5.0f}) < 0.0f);  // grazing
+    CHECK(sh::ssss_tangent_plane_distance({0.0f, 0.0f, 1.0f}, {0.0f, 0.0f, 1.0f}, {0.0f, 0.0f, -5.0f}) < 0.0f);  // behind
+}
+
+// 6.2.2's mask: pixels that no penumbra can reach skip the blur. Skipping must not change what
+// the blur would give there, and it does not, since such pixels see only their own value; nor do
+// fully lit or fully shadowed neighbourhoods change when blurred.
+TEST_CASE("SSSS mask: skipped pixels keep their value, and fully lit or shadowed ones would anyway") {
+    const BlurScreen screen;
+    const int y = 2;
+    for (float hard : {0.0f, 1.0f}) {
+        for (float sigma : {0.0f, 0.2f, 3.0f}) {
+            std::vector<float> data;
+            for (int yy = 0; yy < BlurScreen::kHeight; ++yy)
+                for (int x = 0; x < BlurScreen::kWidth; ++x)
+                    data.insert(data.end(), {hard, sigma, sigma, screen.floor_distance(x, yy)});
+            const Image out = blur_x(screen, data, {{"lazy", false}});  // (lazy re-reads the synthetic shadow map)
+            CAPTURE(hard);
+            CAPTURE(sigma);
+            for (int x = 0; x < BlurScreen::kWidth; ++x) CHECK(out.at(x, y)[0] == hard);
+        }
+    }
+    // A masked pixel (sigma 0, or below 0.25) beside a shadow edge stays as it is; the background
+    // (distance 1e30) too.
+    std::vector<float> data;
+    for (int yy = 0; yy < BlurScreen::kHeight; ++yy)
+        for (int x = 0; x < BlurScreen::kWidth; ++x) {
+            const float s = x == 20 ? 0.0f : x == 21 ? 0.2f : 3.0f;
+            data.insert(data.end(), {x < 20 ? 0.0f : 1.0f, s, s, x == 40 ? 1e30f : screen.floor_distance(x, yy)});
+        }
+    const Image out = blur_x(screen, data, {{"lazy", false}});
+    CHECK(out.at(20, y)[0] == 1.0f);
+    CHECK(out.at(21, y)[0] == 1.0f);
+    CHECK(out.at(22, y)[0] < 1.0f);  // blurred: its taps reach the shadow
+    CHECK(out.at(40, y)[0] == 1.0f);
+    CHECK(out.at(40, y)[3] == 1e30f);
+    CHECK(sh::ssss_blurs(0.25f, 10.0f));
+    CHECK_FALSE(sh::ssss_blurs(0.2f, 10.0f));
+    CHECK_FALSE(sh::ssss_blurs(3.0f, 1e30f));
+}
