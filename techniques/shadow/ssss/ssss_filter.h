@@ -36,17 +36,21 @@ CANOPY_FN vec2 ssss_anisotropic_sigma(float sigma, vec3 view_normal) {
 // ---------------------------------------------------------------------------------------------
 // Dilation of the coarse map (6.2.1, L1614): "proportional to the size of the area light", times
 // the user's constant, "the maximum distance to the occluder in the scene". A blocker at
-// d_blocker shadows receivers up to max_distance behind it (but not past the far plane); its
-// outer penumbra -- the half of eq 6.1's width outside its hard shadow,
-// (w_light / 2) (d_r - d_b) / d_b on the receiver -- must find it in the coarse map. In shadow
-// texels at the receiver (a texel spans texel_world, times d_r for a perspective map):
-//   perspective: (w_light / 2) (1 / d_b - 1 / d_r) / texel_world;  orthographic: / texel_world.
+// d_blocker shadows receivers up to max_distance behind it (but not past the far plane). The blur
+// spreads its hard-shadow edge over the Gaussian's support, +-3 sigma = +-(3 / 2.563) w with w
+// eq 6.1's width (w_light (d_r - d_b) / d_b on the receiver): every receiver that far beyond the
+// edge must find the blocker in the coarse map, or it is left unblurred and the penumbra stops
+// with a step (the paper's "penumbrae will not be completely smooth"). In shadow texels at the
+// receiver (a texel spans texel_world, times d_r for a perspective map):
+//   perspective: (3 / 2.563) w_light (1 / d_b - 1 / d_r) / texel_world;  orthographic: / texel_world.
 // Proportional to w_light (G-F6.9), 0 for a point light, and larger for blockers nearer the light.
+CANOPY_CONST float SSSS_DILATION_IN_WIDTHS = 3.0f / SSSS_PENUMBRA_WIDTH_IN_SIGMAS;
+
 CANOPY_FN float ssss_dilation_texels(float d_blocker, float max_distance, float far_plane, float w_light,
                                      float texel_world, bool perspective) {
     float d_b = max(d_blocker, 1e-6f);
     float d_r = max(min(d_b + max(max_distance, 0.0f), far_plane), d_b);
-    float spread = 0.5f * clamp(w_light, 0.0f, 1e20f) * (d_r - d_b) / d_b;  // world units at the receiver
+    float spread = SSSS_DILATION_IN_WIDTHS * clamp(w_light, 0.0f, 1e20f) * (d_r - d_b) / d_b;  // world units at the receiver
     return min(spread / (max(texel_world, 1e-20f) * (perspective ? d_r : 1.0f)), 1e30f);  // finite for any input
 }
 

@@ -75,17 +75,19 @@ inline double pcss_model(const EdgeScene& e, const ProfileSample& s, double ligh
 
 // shadow.ssss: the hard shadow blurred in screen space by K Gaussian taps over +-3 sigma, sigma
 // from eq 6.2 with the slab's depth as the (coarse) blocker depth and the width taken as the
-// Gaussian's 10-90 % rise (2.563 sigma). Taps at their exact offsets (not rounded to pixels);
-// the coarse map's dilation is assumed to reach the whole penumbra.
+// Gaussian's 10-90 % rise (2.563 sigma). Each tap reads a whole pixel, at least one pixel from
+// its neighbours, weighted by the Gaussian of its actual offset (the README's choice); the coarse
+// map's dilation is assumed to reach the whole penumbra.
 inline double ssss_model(const EdgeScene& e, const ProfileSample& s, double light_width, int kernel, double pixel_t) {
     const double d_observer = glm::length(glm::dvec3(s.floor_point) - glm::dvec3(e.scene.camera.position));
     const double width = eq61_width(e, light_width) / d_observer;  // eq 6.2
     const double sigma = width * e.focal_pixels / 2.563;             // pixels
     if (sigma < 0.25) return nearest_lit(e, s.t);
-    const double spacing = kernel > 1 ? 6.0 * sigma / (kernel - 1) : 0.0;
+    const double spacing = kernel > 1 ? std::max(6.0 * sigma / (kernel - 1), 1.0) : 0.0;
     double sum = 0.0, weights = 0.0;
     for (int i = 0; i < kernel; ++i) {
-        const double offset = (i - 0.5 * (kernel - 1)) * spacing;
+        const double exact = (i - 0.5 * (kernel - 1)) * spacing;
+        const double offset = std::copysign(std::floor(std::abs(exact) + 0.5), exact);  // whole pixels
         const double w = std::exp(-0.5 * offset * offset / (sigma * sigma));
         sum += w * nearest_lit(e, s.t + offset * pixel_t);
         weights += w;

@@ -170,21 +170,22 @@ TEST_CASE("SSSS coarse map: each texel is the minimum of its block, partial bloc
 
 // L1614: "The amount of dilation is proportional to the size of the area light source [...] the
 // user has to apply a constant factor [...] interpreted as the maximum distance to the occluder".
-TEST_CASE("SSSS dilation: reach from eq 6.1's outer penumbra, proportional to the light's size") {
-    // In numbers: half of eq 6.1's width on the receiver, in texels there.
+TEST_CASE("SSSS dilation: reach over the blur's support (3 sigma of eq 6.1's width), proportional to the light's size") {
+    // In numbers: 3 sigma = 3 / 2.563 of eq 6.1's width on the receiver, in texels there.
     const float near_plane = 2.0f, far_plane = 6.0f, texel = 1e-3f;
-    // Blocker at 3, receiver up to 1 behind (at 4): (0.2 / 2) (4 - 3) / 3 = 1/30 on the receiver,
-    // whose texels span 4e-3: 8.33 texels.
-    CHECK(sh::ssss_dilation_texels(3.0f, 1.0f, far_plane, 0.2f, texel, true) == doctest::Approx(8.3333).epsilon(1e-4));
+    const double support = 3.0 / 2.563;
+    // Blocker at 3, receiver up to 1 behind (at 4): 0.2 (4 - 3) / 3 = 1/15 on the receiver,
+    // whose texels span 4e-3: 16.67 texels wide, the blur reaching 19.51 texels.
+    CHECK(sh::ssss_dilation_texels(3.0f, 1.0f, far_plane, 0.2f, texel, true) == doctest::Approx(support * 16.6667).epsilon(1e-4));
     CHECK(sh::ssss_dilation_texels(3.0f, 1.0f, far_plane, 0.4f, texel, true) ==
           doctest::Approx(2.0 * sh::ssss_dilation_texels(3.0f, 1.0f, far_plane, 0.2f, texel, true)).epsilon(1e-6));
     CHECK(sh::ssss_dilation_texels(3.0f, 1.0f, far_plane, 0.0f, texel, true) == 0.0f);  // point light: none
     CHECK(sh::ssss_dilation_texels(3.0f, 0.0f, far_plane, 0.2f, texel, true) == 0.0f);  // no occluder distance
     CHECK(sh::ssss_dilation_texels(3.0f, 10.0f, far_plane, 0.2f, texel, true) ==          // receiver clamped to far
-          doctest::Approx(0.1 * (1.0 / 3.0 - 1.0 / 6.0) / 1e-3).epsilon(1e-4));
+          doctest::Approx(support * 0.2 * (1.0 / 3.0 - 1.0 / 6.0) / 1e-3).epsilon(1e-4));
     CHECK(sh::ssss_dilation_texels(2.5f, 1.0f, far_plane, 0.2f, texel, true) >            // nearer blockers reach farther
           sh::ssss_dilation_texels(3.0f, 1.0f, far_plane, 0.2f, texel, true));
-    CHECK(sh::ssss_dilation_texels(3.0f, 1.0f, far_plane, 0.2f, 0.01f, false) == doctest::Approx(0.1 / 3.0 / 0.01).epsilon(1e-5));
+    CHECK(sh::ssss_dilation_texels(3.0f, 1.0f, far_plane, 0.2f, 0.01f, false) == doctest::Approx(support * 0.2 / 3.0 / 0.01).epsilon(1e-5));
     for (float d : {0.0f, 1e-30f, 1e30f})
         for (float w : {0.0f, 1e30f}) CHECK(std::isfinite(sh::ssss_dilation_texels(d, 1e30f, 1e30f, w, 0.0f, true)));
     CHECK(sh::ssss_dilation_reaches(0, 0.0f, 4));
