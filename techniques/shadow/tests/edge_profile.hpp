@@ -8,10 +8,11 @@
 // map and the floor is parallel to the map's image plane: every floor point has the same light
 // depth, and floor position maps linearly to map texels. A small post in a corner fixes the scene
 // bounds, so the light frustum (and with it the texel size and depth range) does not depend on
-// the slab's height or the edge's position. The camera looks straight down from below the slab,
-// centred on the edge, so it sees only the floor, with image x along world x and image y along
-// world z: the profile runs along image rows (edge along z, a wide image) or along image columns
-// (`across_z`, a tall image), so both map axes and both screen axes get tested.
+// the slab's height or the edge's position. The camera looks straight down from below the slab
+// (at 0.8 of its height unless `camera_height` says otherwise), centred on the edge, so it sees
+// only the floor, with image x along world x and image y along world z: the profile runs along
+// image rows (edge along z, a wide image) or along image columns (`across_z`, a tall image), so
+// both map axes and both screen axes get tested.
 //
 // Positions along the profile are `t`: shadow-map texels from the geometric edge, positive
 // towards the lit side. The slab's edge is placed 0.3 texel from a texel boundary, so the
@@ -48,6 +49,7 @@ struct EdgeSetup {
     bool across_z = false;         // the edge runs along x and the profile along z (image columns)
     int image_length = 256;        // pixels along the profile
     int image_breadth = 64;        // pixels along the edge
+    float camera_height = 0.0f;    // above the floor; 0: 0.8 of the slab's height
 };
 
 struct ProfileSample {
@@ -164,7 +166,8 @@ inline EdgeScene make_edge_scene(const EdgeSetup& setup) {
     e.image_width = setup.across_z ? setup.image_breadth : setup.image_length;
     e.image_height = setup.across_z ? setup.image_length : setup.image_breadth;
     const double window = setup.window_texels * e.texel_floor;
-    e.camera_height = 0.8 * top;  // high, so the observer distance varies little across the strip
+    // High by default, so the observer distance varies little across the strip.
+    e.camera_height = setup.camera_height > 0.0f ? double(setup.camera_height) : 0.8 * top;
     const double tan_half = 0.5 * window / (e.camera_height * (setup.across_z ? 1.0 : double(e.image_width) / e.image_height));
     s.camera.position = e.edge * across + glm::vec3(0.0f, float(e.camera_height), 0.0f);
     s.camera.target = e.edge * across;

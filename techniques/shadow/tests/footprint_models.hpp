@@ -73,26 +73,66 @@ inline double pcss_model(const EdgeScene& e, const ProfileSample& s, double ligh
     return lit / kernel;
 }
 
-// shadow.ssss: the hard shadow blurred in screen space by K Gaussian taps over +-3 sigma, sigma
-// from eq 6.2 with the slab's depth as the (coarse) blocker depth and the width taken as the
-// Gaussian's 10-90 % rise (2.563 sigma). Each tap reads a whole pixel, at least one pixel from
-// its neighbours, weighted by the Gaussian of its actual offset (the README's choice); the coarse
-// map's dilation is assumed to reach the whole penumbra.
-inline double ssss_model(const EdgeScene& e, const ProfileSample& s, double light_width, int kernel, double pixel_t) {
-    const double d_observer = glm::length(glm::dvec3(s.floor_point) - glm::dvec3(e.scene.camera.position));
-    const double width = eq61_width(e, light_width) / d_observer;  // eq 6.2
-    const double sigma = width * e.focal_pixels / 2.563;             // pixels
-    if (sigma < 0.25) return nearest_lit(e, s.t);
-    const double spacing = kernel > 1 ? std::max(6.0 * sigma / (kernel - 1), 1.0) : 0.0;
-    double sum = 0.0, weights = 0.0;
-    for (int i = 0; i < kernel; ++i) {
-        const double exact = (i - 0.5 * (kernel - 1)) * spacing;
-        const double offset = std::copysign(std::floor(std::abs(exact) + 0.5), exact);  // whole pixels
-        const double w = std::exp(-0.5 * offset * offset / (sigma * sigma));
-        sum += w * nearest_lit(e, s.t + offset * pixel_t);
-        weights += w;
+// shadow.ssss: the hard shadow blurred in screen space by a separable Gaussian, K taps over
+// +-3 sigma along image x, then K along image y over the first pass's result, every pixel with
+// its own sigma: eq 6.2 at its own distance to the observer, with the slab's depth as the
+// (coarse) blocker depth and the width taken as the Gaussian's 10-90 % rise (2.563 sigma). The
+// camera looks straight down, so the floor's view normal is the view axis and the kernel is
+// round (no anisotropic shrink). Each tap reads a whole pixel, clamped to the image, at least one
+// pixel from its neighbours, weighted by the Gaussian of its actual offset (the README's choice);
+// pixels with sigma below 0.25 are left as they are. Every tap lies on the floor, the centre's
+// tangent plane, so the depth test keeps them all; the coarse map's dilation is assumed to reach
+// the whole penumbra. The profile is the mean over the middle half of the image across it, as
+// profile_from_image takes it: where the camera is low, rows off the centre see the floor from
+// farther away (a narrower sigma) and the second pass mixes them in.
+inline Profile ssss_model(const EdgeScene& e, const Profile& at, double light_width, int kernel) {
+    const int width = e.image_width, height = e.image_height;
+    std::vector<double> hard(size_t(width) * height), sigma(hard.size());
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const Ray r = primary_ray(e.scene.camera, width, height, float(x) + 0.5f, float(y) + 0.5f);
+            const glm::dvec3 origin(r.origin), direction(r.direction);
+            const glm::dvec3 p = origin + direction * (-origin.y / direction.y);  // on the floor
+            const size_t i = size_t(y) * width + size_t(x);
+            hard[i] = nearest_lit(e, edge_t(e, glm::vec3(p)));
+            sigma[i] = eq61_width(e, light_width) / glm::length(p - origin) * e.focal_pixels / 2.563;  // eq 6.2, pixels
+        }
+    // One pass over `in` along (dx, dy).
+    auto pass = [&](const std::vector<double>& in, int dx, int dy) {
+        std::vector<double> out(in.size());
+        for (int y = 0; y < height; ++y)
+            for (int x = 0; x < width; ++x) {
+                const size_t c = size_t(y) * width + size_t(x);
+                const double s = sigma[c];
+                if (s < 0.25) {
+                    out[c] = in[c];
+                    continue;
+                }
+                const double spacing = kernel > 1 ? std::max(6.0 * s / (kernel - 1), 1.0) : 0.0;
+                double sum = 0.0, weights = 0.0;
+                for (int i = 0; i < kernel; ++i) {
+                    const double exact = (i - 0.5 * (kernel - 1)) * spacing;
+                    const int offset = int(std::copysign(std::floor(std::abs(exact) + 0.5), exact));  // whole pixels
+                    const int tx = std::clamp(x + offset * dx, 0, width - 1), ty = std::clamp(y + offset * dy, 0, height - 1);
+                    const double w = std::exp(-0.5 * double(offset) * offset / (s * s));
+                    sum += w * in[size_t(ty) * width + size_t(tx)];
+                    weights += w;
+                }
+                out[c] = sum / weights;
+            }
+        return out;
+    };
+    const std::vector<double> blurred = pass(pass(hard, 1, 0), 0, 1);
+    const bool columns = e.setup.across_z;  // the profile runs down the image
+    const int breadth = columns ? width : height;
+    Profile out = at;
+    for (size_t i = 0; i < out.size(); ++i) {
+        double sum = 0.0;
+        for (int j = breadth / 4; j < 3 * breadth / 4; ++j)
+            sum += columns ? blurred[i * width + size_t(j)] : blurred[size_t(j) * width + i];
+        out[i].visibility = sum / (3 * breadth / 4 - breadth / 4);
     }
-    return sum / weights;
+    return out;
 }
 
 // How a prefiltered technique turns depth into stored statistics, filters them, and reads them.

@@ -93,13 +93,16 @@ EdgeSetup directional(bool across_z, float window_texels) {
 
 // An area light 2 above the floor, straight above the edge (0.3 texel off it), the slab's top at
 // `occluder_height`, the strip wide enough for three penumbra widths.
-EdgeScene area_light_edge(LightType type, float size, float occluder_height, int resolution, bool across_z = false) {
+// `camera_height` 0: the default, 0.8 of the slab's height.
+EdgeScene area_light_edge(LightType type, float size, float occluder_height, int resolution, bool across_z = false,
+                          float camera_height = 0.0f) {
     EdgeSetup s;
     s.light = type;
     s.light_size = size;
     s.occluder_height = occluder_height;
     s.resolution = resolution;
     s.across_z = across_z;
+    s.camera_height = camera_height;
     const EdgeScene probe = make_edge_scene(s);
     s.window_texels = float(3.0 * eq61_width(probe, size) / probe.texel_floor + 8.0);
     return make_edge_scene(s);
@@ -213,7 +216,7 @@ TEST_CASE("shadow.ssss: the screen-space Gaussian rises over eq 6.2's width, whi
             CAPTURE(size);
             const Profile got = render_profile(e, "shadow.ssss", {});
             const double pixel = pixel_texels(got);
-            const Profile want = model_profile(got, [&](const ProfileSample& s) { return ssss_model(e, s, size, 11, pixel); });
+            const Profile want = ssss_model(e, got, size, 11);
             const EdgeMeasure m = check_against_model(std::string("shadow.ssss") + (across_z ? " (edge along x)" : " (edge along z)"), got, want).got;
             const double width = eq61_width(e, size) / e.texel_floor;  // eq 6.2 at the receiver, in texels
             CHECK(m.width == doctest::Approx(width).epsilon(0.15));
@@ -229,8 +232,7 @@ TEST_CASE("shadow.ssss: the screen-space Gaussian rises over eq 6.2's width, whi
         const EdgeScene e = area_light_edge(LightType::sphere, diameter, height, 512);
         CAPTURE(height);
         const Profile got = render_profile(e, "shadow.ssss", {});
-        const double pixel = pixel_texels(got);
-        const Profile want = model_profile(got, [&](const ProfileSample& s) { return ssss_model(e, s, diameter, 11, pixel); });
+        const Profile want = ssss_model(e, got, diameter, 11);
         const EdgeMeasure m = check_against_model("shadow.ssss sphere light", got, want).got;
         CHECK(m.width == doctest::Approx(eq61_width(e, diameter) / e.texel_floor).epsilon(0.15));
     }
