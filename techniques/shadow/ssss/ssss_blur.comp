@@ -4,9 +4,10 @@
 // space (Gumbau 2011, 6.2.3), K taps over +-3 sigma of this pixel's own width, each on a whole
 // pixel and weighted by the Gaussian of its actual offset (ssss_filter.h). Pixels the screen pass
 // masked (no blocker nearby: sigma 0) and the background are left as they are (6.2.2). Taps on
-// other surfaces (distance to the observer differs by more than depth_error, relative) are
-// either dropped or, with lazy shadowing (6.3.2), replaced by the hard shadow of the point where
-// the tap's view ray meets this pixel's tangent plane -- the shadow the occluder hides from view.
+// other surfaces (distance to the observer differs by more than depth_error from where the tap's
+// view ray meets this pixel's tangent plane, relative) are either dropped or, with lazy shadowing
+// (6.3.2), replaced by the hard shadow of the point where the tap's view ray meets that plane --
+// the shadow the occluder hides from view.
 // params: x = taps K, y = depth_error, z = lazy (0/1)
 #define FRAME_BINDING 2
 #include "separable_filter.glsl"
@@ -44,7 +45,10 @@ vec4 filter_texel(ivec2 xy) {
         int offset = ssss_tap_offset(i, taps, sigma);
         vec4 s = fetch(xy, offset);
         float value = s.r;
-        if (!ssss_same_surface(s.a, centre.a, depth_error)) {
+        // The pixel fetch() read (clamped at the image's edge) is the one whose distance is tested.
+        ivec2 read = clamp(xy + offset * filter_pass.direction, ivec2(0), filter_pass.src_extent - 1);
+        float expected = ssss_expected_distance(n, pixel_ray(vec2(read)), centre_from_camera, centre.a);
+        if (!ssss_same_surface(s.a, expected, depth_error)) {
             if (!lazy) continue;
             vec3 ray = pixel_ray(vec2(xy + offset * filter_pass.direction));
             float t = ssss_tangent_plane_distance(n, ray, centre_from_camera);

@@ -86,12 +86,6 @@ CANOPY_FN float ssss_tap_weight(int offset, float sigma) {
     return exp(-0.5f * x * x);
 }
 
-// A tap belongs to the centre's surface when its distance to the observer differs by at most
-// depth_error (relative); others are dropped or, with lazy shadowing, re-evaluated (6.2.3, Alg. 4).
-CANOPY_FN bool ssss_same_surface(float tap_distance, float centre_distance, float depth_error) {
-    return abs(tap_distance - centre_distance) <= depth_error * centre_distance;
-}
-
 // Pixels the blur leaves as they are (the mask of 6.2.2): sigma below SSSS_MIN_SIGMA (the screen
 // pass writes 0 where the coarse map finds no blocker: no penumbra can reach the pixel), and the
 // background (distance 1e30).
@@ -99,15 +93,33 @@ CANOPY_FN bool ssss_blurs(float sigma, float distance) {
     return sigma >= SSSS_MIN_SIGMA && distance <= 1e29f;
 }
 
-// Lazy shadowing (6.3.2): a tap hidden by another surface is replaced by the hard shadow of the
-// point where its view ray meets the centre pixel's tangent plane (normal n through the centre
-// point, given relative to the camera). Returns the distance along the unit ray, or -1 when the
-// ray misses the plane (grazing, or behind the camera).
+// The centre pixel's tangent plane (normal n through the centre point, given relative to the
+// camera): the distance along a unit view ray at which the ray meets it, or -1 when the ray misses
+// it (grazing, behind the camera, or beyond 1e30, the background's distance; NaN inputs too).
+// Lazy shadowing (6.3.2) shadow-tests hidden taps there, and the depth test below expects visible
+// taps of the centre's surface there.
 CANOPY_FN float ssss_tangent_plane_distance(vec3 n, vec3 ray, vec3 centre_from_camera) {
     float facing = dot(n, ray);
-    if (abs(facing) < 1e-4f) return -1.0f;
+    if (!(abs(facing) >= 1e-4f)) return -1.0f;
     float t = dot(n, centre_from_camera) / facing;
-    return t > 0.0f ? t : -1.0f;
+    return t > 0.0f && t < 1e30f ? t : -1.0f;
+}
+
+// Where a tap of the centre's surface should be: the distance at which the tap's view ray meets
+// the centre's tangent plane (the paper's local planarity, 6.3.2), or, where the ray misses the
+// plane, the centre's own distance. On a flat floor seen from close by the distance to the
+// observer changes by several per cent within a wide kernel, so comparing with the centre's
+// distance (Algorithm 4's |z_tap - z_ref|) would drop taps of the very surface being blurred.
+CANOPY_FN float ssss_expected_distance(vec3 n, vec3 tap_ray, vec3 centre_from_camera, float centre_distance) {
+    float t = ssss_tangent_plane_distance(n, tap_ray, centre_from_camera);
+    return t > 0.0f ? t : centre_distance;
+}
+
+// A tap belongs to the centre's surface when its distance to the observer differs from the
+// expected one (ssss_expected_distance) by at most depth_error of it; others are dropped or, with
+// lazy shadowing, re-evaluated (6.2.3, Alg. 4). Infinite or NaN distances are another surface.
+CANOPY_FN bool ssss_same_surface(float tap_distance, float expected_distance, float depth_error) {
+    return abs(tap_distance - expected_distance) <= depth_error * min(expected_distance, 1e30f);
 }
 
 CANOPY_END_NAMESPACE

@@ -27,7 +27,8 @@ public:
                                         "the paper's dilation factor (6.2.1): the largest distance from a caster to the "
                                         "receiver of its penumbra, as a fraction of the light's depth range"));
         specs.push_back(ParamSpec::real("depth_error", 0.05, 0.0, 1.0,
-                                        "relative difference in distance to the observer that marks another surface"));
+                                        "a tap whose distance to the observer differs by more than this fraction from "
+                                        "where its ray meets the centre pixel's tangent plane is another surface"));
         specs.push_back(ParamSpec::boolean("lazy", true,
                                            "lazy shadowing (6.3.2): shadow-test hidden taps on the tangent plane instead of dropping them"));
         return specs;

@@ -238,6 +238,32 @@ TEST_CASE("shadow.ssss: the screen-space Gaussian rises over eq 6.2's width, whi
     }
 }
 
+TEST_CASE("shadow.ssss: a wide penumbra seen from close by keeps its width (taps on the tangent plane are kept)") {
+    // The camera 0.25 above the floor under a 1.2 rect light: the penumbra is 1.6 times as wide
+    // as the camera is high, so taps a third of the camera's height to the side are already 5 %
+    // farther from it than the centre. They lie on the centre's tangent plane (the floor), so the
+    // depth test keeps them; a test against the centre's own distance drops them (without lazy
+    // shadowing: 10-90 % width 13.7 texels, 50 % 8 texels into the shadow) or, in the second
+    // pass, puts hard shadows in their place (edge along z: 17.7 texels instead of the model's
+    // 30.5). The model blurs every pixel with its own sigma: seen from this close, eq 6.2's
+    // sigma shrinks by up to a sixth across the strip's breadth and the second pass mixes those rows in.
+    // (Eq 6.2's width itself, 39 texels, is not reached: it divides by the distance to the
+    // observer, not the view depth, so off the view axis the floor's penumbra is drawn narrower.)
+    const float size = 1.2f;
+    for (bool across_z : {false, true}) {
+        const EdgeScene e = area_light_edge(LightType::rect, size, 0.5f, 1024, across_z, 0.25f);
+        const std::string what = std::string("shadow.ssss from 0.25 above the floor") + (across_z ? " (edge along x)" : " (edge along z)");
+        for (bool lazy : {true, false}) {
+            CAPTURE(lazy);
+            const Profile got = render_profile(e, "shadow.ssss", {{"lazy", lazy}});
+            const double pixel = pixel_texels(got);
+            const Profile want = ssss_model(e, got, size, 11);
+            const EdgeMeasure m = check_against_model(what + (lazy ? "" : " lazy=false"), got, want).got;
+            CHECK(std::abs(m.centre - e.boundary) <= kCentreTexels + 1.5 * pixel);
+        }
+    }
+}
+
 namespace {
 
 // A prefiltered technique at filter widths 5 and 9, both map axes: the model's profile, and the

@@ -432,19 +432,22 @@ struct BlurScreen {
         const glm::vec4 far_point = inverse_view_proj * glm::vec4(ndc, 1.0f, 1.0f);
         return glm::normalize(glm::vec3(far_point) / far_point.w - camera);
     }
-    // Distance to the floor along pixel (x, y)'s ray, and where it meets the floor.
-    float floor_distance(int x, int y) const { glm::vec3 r = ray(x, y); return -camera.z / r.z; }
+    // Distance along pixel (x, y)'s ray to the plane through the origin with normal n (the floor:
+    // n = +z).
+    float plane_distance(int x, int y, glm::vec3 n) const { return -glm::dot(n, camera) / glm::dot(n, ray(x, y)); }
+    float floor_distance(int x, int y) const { return plane_distance(x, y, {0.0f, 0.0f, 1.0f}); }
     static bool shadowed(const glm::vec3& p) { return p.x < kShadowEdge; }
     bool floor_shadowed(int x, int y) const { return shadowed(camera + ray(x, y) * floor_distance(x, y)); }
 };
 
 // The blur's horizontal pass over `data` (per pixel: hard, sigma_x, sigma_y, distance) with the
-// technique's own parameters, on the device.
-Image blur_x(const BlurScreen& screen, const std::vector<float>& data, const std::map<std::string, ParamValue>& given) {
+// technique's own parameters, on the device; the normal buffer holds `normal` everywhere.
+Image blur_x(const BlurScreen& screen, const std::vector<float>& data, const std::map<std::string, ParamValue>& given,
+             glm::vec3 normal = {0.0f, 0.0f, 1.0f}) {
     MemoryLedger ledger;
     const Texture source = upload_texture(ledger, BlurScreen::kWidth, BlurScreen::kHeight, VK_FORMAT_R32G32B32A32_SFLOAT, data);
     std::vector<float> normals;
-    for (int i = 0; i < BlurScreen::kWidth * BlurScreen::kHeight; ++i) normals.insert(normals.end(), {0.0f, 0.0f, 1.0f, 1.0f});
+    for (int i = 0; i < BlurScreen::kWidth * BlurScreen::kHeight; ++i) normals.insert(normals.end(), {normal.x, normal.y, normal.z, 1.0f});
     const Texture normal_map = upload_texture(ledger, BlurScreen::kWidth, BlurScreen::kHeight, VK_FORMAT_R32G32B32A32_SFLOAT, normals);
     std::vector<float> depth(64 * 64, 1.0f);
     for (int y = 0; y < 64; ++y)
@@ -458,11 +461,12 @@ Image blur_x(const BlurScreen& screen, const std::vector<float>& data, const std
                       FilterExtras{frame.handle(), shadow_map.view(), normal_map.view()});
 }
 
-// ssss_blur.comp's horizontal pass at pixel (x, y) in C++, from ssss_filter.h: `data` as uploaded;
-// a hidden tap with lazy shadowing reads the floor's shadow where its ray meets the centre's
-// tangent plane (the floor: every test surface here has normal +z).
+// ssss_blur.comp's horizontal pass at pixel (x, y) in C++, from ssss_filter.h: `data` as uploaded,
+// `normal` the normal buffer's. A tap is tested against the distance at which the ray of the pixel
+// it reads (clamped to the image) meets the centre's tangent plane; a hidden tap with lazy
+// shadowing reads the light's shadow where its own ray meets that plane.
 float expected_blur(const BlurScreen& screen, const std::vector<float>& data, int x, int y, int taps, float depth_error,
-                    bool lazy) {
+                    bool lazy, glm::vec3 normal = {0.0f, 0.0f, 1.0f}) {
     auto texel = [&](int tx) { return &data[(size_t(y) * BlurScreen::kWidth + size_t(tx)) * 4]; };
     const float* centre = texel(x);
     const float sigma = centre[1];
@@ -473,10 +477,11 @@ float expected_blur(const BlurScreen& screen, const std::vector<float>& data, in
         const int o = sh::ssss_tap_offset(i, taps, sigma);
         const int tx = std::clamp(x + o, 0, BlurScreen::kWidth - 1);
         float value = texel(tx)[0];
-        if (!sh::ssss_same_surface(texel(tx)[3], centre[3], depth_error)) {
+        const float expected = sh::ssss_expected_distance(normal, screen.ray(tx, y), centre_from_camera, centre[3]);
+        if (!sh::ssss_same_surface(texel(tx)[3], expected, depth_error)) {
             if (!lazy) continue;
             const glm::vec3 ray = screen.ray(x + o, y);
-            const float t = sh::ssss_tangent_plane_distance({0.0f, 0.0f, 1.0f}, ray, centre_from_camera);
+            const float t = sh::ssss_tangent_plane_distance(normal, ray, centre_from_camera);
             if (t <= 0.0f) continue;
             value = BlurScreen::shadowed(screen.camera + ray * t) ? 0.0f : 1.0f;
         }
@@ -485,6 +490,20 @@ float expected_blur(const BlurScreen& screen, const std::vector<float>& data, in
         weights += w;
     }
     return weights > 0.0f ? sum / weights : centre[0];
+}
+
+// The plain Gaussian of the pass at pixel (x, y): every tap kept, whatever its distance.
+float gaussian_blur(const std::vector<float>& data, int x, int y, int taps) {
+    auto texel = [&](int tx) { return &data[(size_t(y) * BlurScreen::kWidth + size_t(std::clamp(tx, 0, BlurScreen::kWidth - 1))) * 4]; };
+    const float sigma = texel(x)[1];
+    float sum = 0.0f, weights = 0.0f;
+    for (int i = 0; i < taps; ++i) {
+        const int o = sh::ssss_tap_offset(i, taps, sigma);
+        const float w = sh::ssss_tap_weight(o, sigma);
+        sum += w * texel(x + o)[0];
+        weights += w;
+    }
+    return sum / weights;
 }
 
 }  // namespace
@@ -525,6 +544,109 @@ TEST_CASE("SSSS blur on the device: Gaussian taps, and taps across a depth jump 
     // Sigma and distance pass through untouched.
     CHECK(jump.at(30, y)[1] == sigma);
     CHECK(jump.at(30, y)[3] == doctest::Approx(screen.floor_distance(30, y)));
+}
+
+// 6.2.3 and 6.3.2: the paper compares |z_tap - z_ref| with errDepth (Algorithm 4) and assumes the
+// surface locally planar (lazy shadowing). canopy tests a tap against where its view ray meets the
+// centre's tangent plane, relative to that distance (README: the depth test), so the centre's own
+// surface is kept however much its distance changes across the kernel, and a depth jump is not.
+TEST_CASE("SSSS depth test: a tap is compared with where its ray meets the centre's tangent plane") {
+    const glm::vec3 up(0.0f, 0.0f, 1.0f), below(0.0f, 0.0f, -5.0f);  // the floor, 5 below the camera
+    const float cos60 = 0.5f, sin60 = std::sqrt(0.75f);
+    const glm::vec3 oblique(sin60, 0.0f, -cos60);
+    // 60 degrees off the vertical the floor is twice as far as straight below: 10, not 5.
+    const float expected = sh::ssss_expected_distance(up, oblique, below, 5.0f);
+    CHECK(expected == doctest::Approx(10.0f).epsilon(1e-6));
+    CHECK(sh::ssss_same_surface(10.0f, expected, 0.05f));
+    CHECK(sh::ssss_same_surface(10.45f, expected, 0.05f));  // 4.5 % of the prediction (9 % of the centre's 5)
+    CHECK(sh::ssss_same_surface(9.55f, expected, 0.05f));
+    CHECK_FALSE(sh::ssss_same_surface(10.6f, expected, 0.05f));  // 6 %: a step of the surface
+    CHECK_FALSE(sh::ssss_same_surface(9.4f, expected, 0.05f));
+    CHECK_FALSE(sh::ssss_same_surface(5.0f, expected, 0.05f));   // the centre's distance is not the floor there
+    CHECK_FALSE(sh::ssss_same_surface(20.0f, expected, 0.05f));  // a depth jump
+    CHECK(sh::ssss_same_surface(10.6f, expected, 0.1f));
+    // A ray that misses the plane (grazing, or away from it) falls back to the centre's distance.
+    CHECK(sh::ssss_expected_distance(up, {1.0f, 0.0f, 0.0f}, below, 5.0f) == 5.0f);
+    CHECK(sh::ssss_expected_distance(up, {0.0f, 0.0f, 1.0f}, below, 5.0f) == 5.0f);
+    CHECK(sh::ssss_same_surface(5.2f, 5.0f, 0.05f));
+    CHECK_FALSE(sh::ssss_same_surface(5.3f, 5.0f, 0.05f));
+    // Extremes: the expected distance is a positive, finite one or the centre's own; an infinite
+    // or NaN distance (tap or expected) is never the same surface.
+    const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
+    for (glm::vec3 n : {up, glm::vec3(0.0f), glm::vec3(nan, 0.0f, 1.0f), glm::vec3(1e-30f, 0.0f, 0.0f)})
+        for (glm::vec3 ray : {glm::vec3(0.0f, 0.0f, -1.0f), oblique, glm::vec3(1.0f, 0.0f, -1e-6f)})
+            for (float d : {0.0f, 1e-30f, 1.0f, 1e30f, 3e38f, inf, nan}) {
+                CAPTURE(n);
+                CAPTURE(ray);
+                CAPTURE(d);
+                const float e = sh::ssss_expected_distance(n, ray, glm::vec3(0.0f, 0.0f, -1.0f) * d, d);
+                CHECK((e == d || (std::isnan(d) && std::isnan(e)) || (e > 0.0f && e < 1e30f)));
+                for (float tap : {inf, -inf, nan}) {
+                    CHECK_FALSE(sh::ssss_same_surface(tap, e, 0.05f));
+                    CHECK_FALSE(sh::ssss_same_surface(tap, e, 1.0f));
+                }
+                if (!std::isfinite(e)) CHECK_FALSE(sh::ssss_same_surface(1.0f, e, 1.0f));
+            }
+    CHECK_FALSE(sh::ssss_same_surface(1.0f, 1.0f, nan));
+
+    // On the device: a wide kernel (sigma 8: taps up to 24 pixels away) over the floor and over a
+    // tilted plane, whose distances change by far more than 5 % across it. Every tap lies on the
+    // centre's tangent plane: the blur is the plain Gaussian, with lazy shadowing or without (a
+    // tap wrongly taken for another surface would be dropped, or re-tested against the shadow map,
+    // whose edge is 9 columns from the data's).
+    const BlurScreen screen;
+    const float sigma = 8.0f;
+    const int taps = 11, y = 3;
+    const glm::vec3 tilted = glm::normalize(glm::vec3(0.6f, 0.0f, 0.8f));
+    auto make = [&](glm::vec3 n) {
+        std::vector<float> data;
+        for (int yy = 0; yy < BlurScreen::kHeight; ++yy)
+            for (int x = 0; x < BlurScreen::kWidth; ++x)
+                data.insert(data.end(), {x < 20 ? 0.0f : 1.0f, sigma, sigma, screen.plane_distance(x, yy, n)});
+        return data;
+    };
+    for (glm::vec3 n : {up, tilted}) {
+        CAPTURE(n);
+        const std::vector<float> data = make(n);
+        // Algorithm 4's test against the centre's distance would drop taps here.
+        int far_taps = 0;
+        for (int i = 0; i < taps; ++i) {
+            const int tx = std::clamp(32 + sh::ssss_tap_offset(i, taps, sigma), 0, BlurScreen::kWidth - 1);
+            far_taps += std::abs(screen.plane_distance(tx, y, n) - screen.plane_distance(32, y, n)) > 0.05f * screen.plane_distance(32, y, n);
+        }
+        REQUIRE(far_taps >= 2);
+        for (bool lazy : {false, true}) {
+            CAPTURE(lazy);
+            const Image out = blur_x(screen, data, {{"kernel", (long long)taps}, {"lazy", lazy}}, n);
+            int wrong = 0, blurred = 0;
+            for (int x = 0; x < BlurScreen::kWidth; ++x) {
+                wrong += std::abs(out.at(x, y)[0] - gaussian_blur(data, x, y, taps)) > 1e-5f;
+                blurred += out.at(x, y)[0] > 0.01f && out.at(x, y)[0] < 0.99f;
+            }
+            CHECK(wrong == 0);
+            CHECK(blurred >= 30);  // the step spreads over +-3 sigma
+        }
+    }
+    // The normal buffer decides: told the tilted plane is the floor, the blur finds its far taps
+    // off the floor's plane and drops them (ssss_filter.h's rule, evaluated in C++).
+    const std::vector<float> data = make(tilted);
+    double margin = 1.0;  // how far each tap's relative difference is from the threshold
+    for (int x = 0; x < BlurScreen::kWidth; ++x)
+        for (int i = 0; i < taps; ++i) {
+            const int tx = std::clamp(x + sh::ssss_tap_offset(i, taps, sigma), 0, BlurScreen::kWidth - 1);
+            const float e = sh::ssss_expected_distance(up, screen.ray(tx, y), screen.ray(x, y) * data[(size_t(y) * BlurScreen::kWidth + size_t(x)) * 4 + 3],
+                                                       screen.plane_distance(x, y, tilted));
+            margin = std::min(margin, std::abs(std::abs(screen.plane_distance(tx, y, tilted) - e) / e - 0.05));
+        }
+    REQUIRE(margin > 1e-4);  // no tap so near the threshold that float rounding could flip it
+    const Image misled = blur_x(screen, data, {{"kernel", (long long)taps}, {"lazy", false}}, up);
+    int wrong = 0, differs = 0;
+    for (int x = 0; x < BlurScreen::kWidth; ++x) {
+        wrong += std::abs(misled.at(x, y)[0] - expected_blur(screen, data, x, y, taps, 0.05f, false, up)) > 1e-5f;
+        differs += std::abs(misled.at(x, y)[0] - gaussian_blur(data, x, y, taps)) > 0.01f;
+    }
+    CHECK(wrong == 0);
+    CHECK(differs >= 4);
 }
 
 // 6.3.2: a tap hidden by a nearer surface is replaced by the hard shadow of the point where its
