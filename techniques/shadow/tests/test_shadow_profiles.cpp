@@ -20,10 +20,11 @@ using namespace canopy::test;
 namespace {
 
 // Tolerances, in shadow-map texels unless said otherwise. On lavapipe every profile matches its
-// model to float precision, except SSSS, whose taps land on whole pixels (a step moves by up to
-// half a pixel). The allowances cover that, other devices' rasterisation and filtering precision
-// (1/256 texel), and crossings interpolated between pixel samples; a shift of half a texel, or a
-// footprint 12 % too wide at 4 texels (less at wider ones), exceeds them.
+// model to float precision (SSSS's too: its model rounds the taps to the same whole pixels). The
+// allowances cover SSSS taps rounded the other way on another device (a step moves by up to half
+// a pixel), other devices' rasterisation and filtering precision (1/256 texel), and crossings
+// interpolated between pixel samples; a shift of half a texel, or a footprint 12 % too wide at 4
+// texels (less at wider ones), exceeds them.
 constexpr double kCentreTexels = 0.2;     // plus 1.5 pixels
 constexpr double kWidthTexels = 0.2;      // plus 1.5 pixels and kWidthRelative of the expected width
 constexpr double kWidthRelative = 0.04;
