@@ -699,7 +699,7 @@ TEST_CASE("alpha-test hook: a filter that discards every other triangle lets ray
     }};
     const EmbreeScene embree(scene, {grid}, options);
 
-    RTCIntersectContext context;
+    RTCIntersectContext context{};
     rtcInitIntersectContext(&context);
     int blocked = 0, passed = 0, hits_on_odd = 0;
     for (size_t t = 0; t < grid.triangle_count(); ++t) {
