@@ -228,6 +228,36 @@ TEST_CASE("SSIM drops for a contrast-reduced copy and decreases with noise; it i
     CHECK(compute_ssim(noisy, reference) == doctest::Approx(compute_ssim(reference, noisy)).epsilon(1e-12));
 }
 
+TEST_CASE("SSIM compares Rec. 709 luminance: two uniform colours by hand") {
+    // Pure red has luminance 0.2126, pure blue 0.0722 (equal weights would make both 1/3 and
+    // SSIM 1). Uniform images: SSIM = (2 a b + C1) / (a^2 + b^2 + C1).
+    const double a = 0.2126, b = 0.0722, c1 = 1e-4;
+    CHECK(compute_ssim(filled(16, 16, 1.0f, 0.0f, 0.0f), filled(16, 16, 0.0f, 0.0f, 1.0f)) ==
+          doctest::Approx((2 * a * b + c1) / (a * a + b * b + c1)).epsilon(1e-5));
+}
+
+TEST_CASE("SSIM weighs a window's pixels with the 11x11 Gaussian of sigma 1.5: one changed pixel by hand") {
+    // 21 x 21 grey 0.5 with the centre pixel at 0.75: every one of the 11 x 11 valid windows
+    // holds that pixel, at offset (i, j) from its centre, with weight w = g_i g_j (g the
+    // normalised Gaussian, sigma 1.5). In such a window the reference is constant, so
+    //   mu_r = 0.5, mu_t = 0.5 + 0.25 w, var_r = cov = 0, var_t = w (1 - w) 0.25^2 and
+    //   SSIM = (2 mu_t mu_r + C1) C2 / ((mu_t^2 + mu_r^2 + C1)(var_t + C2)); the result is their mean.
+    const Image reference = filled(21, 21, 0.5f, 0.5f, 0.5f);
+    Image test = reference;
+    set_gray(test, 10, 10, 0.75f);
+    double g[11], total = 0.0;
+    for (int k = -5; k <= 5; ++k) total += g[k + 5] = std::exp(-k * k / (2.0 * 1.5 * 1.5));
+    const double c1 = 1e-4, c2 = 9e-4;
+    double sum = 0.0;
+    for (int i = 0; i < 11; ++i)
+        for (int j = 0; j < 11; ++j) {
+            const double w = g[i] / total * g[j] / total;
+            const double mu_t = 0.5 + 0.25 * w, mu_r = 0.5, var_t = w * (1.0 - w) * 0.0625;
+            sum += (2 * mu_t * mu_r + c1) * c2 / ((mu_t * mu_t + mu_r * mu_r + c1) * (var_t + c2));
+        }
+    CHECK(compute_ssim(test, reference) == doctest::Approx(sum / 121.0).epsilon(1e-5));
+}
+
 TEST_CASE("SSIM matches an independent direct-window reference") {
     // tests/data/metrics/ssim_reference.py: 2D 11x11 Gaussian window, valid region, double precision.
     const PatternPair images = pattern_images();
@@ -418,6 +448,32 @@ TEST_CASE("pixels with G = 0 (background, back-facing) are excluded from the sha
     CHECK(error.lit_pixels == 16);
     CHECK(error.light_bleeding == doctest::Approx(0.4 / 16.0).epsilon(1e-5));
     CHECK(error.over_darkening == doctest::Approx(0.2 / 16.0).epsilon(1e-5));
+}
+
+TEST_CASE("shadow metrics weigh R, G and B by Rec. 709 luminance: coloured errors by hand") {
+    // Grey scenes hide the weights (they sum to 1); here each error sits in one channel.
+    const ShadowScene scene;
+    Image test = scene.reference;
+    test.at(9, 0)[0] += 0.5f;   // umbra, red + 0.5:   luminance + 0.2126 * 0.5 = 0.1063
+    test.at(10, 1)[2] += 0.5f;  // umbra, blue + 0.5:  + 0.0722 * 0.5 = 0.0361
+    test.at(11, 2)[1] -= 0.05f; // umbra, darker: not light bleeding
+    test.at(2, 0)[1] -= 0.3f;   // lit, green - 0.3:   - 0.7152 * 0.3 = 0.21456
+    test.at(3, 1)[0] -= 0.4f;   // lit, red - 0.4:     - 0.2126 * 0.4 = 0.08504
+    const ShadowError error = compute_shadow_error(test, scene.reference, scene.visibility, 1e-3);
+    CHECK(error.light_bleeding == doctest::Approx((0.1063 + 0.0361) / 32.0).epsilon(1e-5));
+    CHECK(error.over_darkening == doctest::Approx((0.21456 + 0.08504) / 32.0).epsilon(1e-5));
+
+    // Penumbra: luminance errors 0.2126 * 0.2, 0.7152 * 0.1 and -0.0722 * 0.4.
+    Image reference = filled(3, 1, 0.45f, 0.45f, 0.45f);
+    Image visibility = visibility_image(3, 1);
+    Image penumbra_test = reference;
+    for (int x = 0; x < 3; ++x) set_visibility(visibility, x, 0, 0.5f);
+    penumbra_test.at(0, 0)[0] += 0.2f;
+    penumbra_test.at(1, 0)[1] += 0.1f;
+    penumbra_test.at(2, 0)[2] -= 0.4f;
+    const double r = 0.2126 * 0.2, g = 0.7152 * 0.1, b = 0.0722 * 0.4;
+    CHECK(compute_shadow_error(penumbra_test, reference, visibility, 1e-3).penumbra_rmse ==
+          doctest::Approx(std::sqrt((r * r + g * g + b * b) / 3.0)).epsilon(1e-5));
 }
 
 TEST_CASE("shadow metrics are NaN when the visibility has no pixels of that kind") {

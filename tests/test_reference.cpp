@@ -193,6 +193,69 @@ struct TemporaryFolder {
     }
 };
 
+// The rendered penumbra of a straight edge, through the whole renderer (camera rays, hit points,
+// shadow-ray origins, the visibility and radiance images): the occluder is the half-plane x < 0
+// at height 1, the light is centred above the edge at height 2, the ground is y = 0, and the
+// camera looks straight down with its near plane clipping the occluder away. Returns, for every
+// pixel of the middle row, the ground x at its centre and its visibility R and radiance.
+struct EdgeProfile {
+    std::vector<double> x, visible, radiance;
+};
+
+constexpr float kEdgeAlbedo = 0.5f;
+
+EdgeProfile render_edge_profile(const Light& light) {
+    Scene scene;
+    scene.camera.position = {0.0f, 10.0f, 0.0f};
+    scene.camera.target = {0.0f, 0.0f, 0.0f};
+    scene.camera.up = {0.0f, 0.0f, -1.0f};  // image x runs along world +x
+    scene.camera.near_plane = 9.5f;         // the occluder, at distance 9, is not seen
+    const int width = 120, height = 6;
+    // 2.4 units of ground across the image: half-height 1.2 / 20 at distance 10.
+    scene.camera.fov_y_degrees = float(2.0 * std::atan(1.2 / 20.0 / 10.0) * 180.0 / kPi);
+    scene.ambient = glm::vec3(0.0f);
+    scene.objects.push_back(plane_object("ground", {20.0f, 20.0f}, glm::vec3(0.0f), glm::vec3(kEdgeAlbedo)));
+    scene.objects.push_back(plane_object("occluder", {40.0f, 40.0f}, glm::vec3(-20.0f, 1.0f, 0.0f)));
+    scene.lights.push_back(light);
+    ReferenceSettings settings;
+    settings.light_samples = 256;
+    settings.pixel_samples = 4;
+    const ReferenceImages images = render_reference(scene, build_scene_meshes(scene), width, height, settings);
+    EdgeProfile profile;
+    const int row = height / 2;
+    for (int column = 0; column < width; ++column) {
+        const Ray ray = primary_ray(scene.camera, width, height, float(column) + 0.5f, float(row) + 0.5f);
+        REQUIRE(images.visibility.at(column, row)[1] == 1.0f);  // the ground, facing the light
+        profile.x.push_back(ray.origin.x - ray.origin.y / ray.direction.y * ray.direction.x);
+        profile.visible.push_back(images.visibility.at(column, row)[0]);
+        profile.radiance.push_back(images.radiance.at(column, row)[0]);
+    }
+    REQUIRE(profile.x.front() < -1.1);
+    REQUIRE(profile.x.back() > 1.1);
+    return profile;
+}
+
+// Where a rising profile first reaches `level`, by linear interpolation between samples.
+double crossing(const std::vector<double>& x, const std::vector<double>& values, double level) {
+    for (size_t i = 1; i < x.size(); ++i)
+        if (values[i - 1] < level && values[i] >= level)
+            return x[i - 1] + (level - values[i - 1]) / (values[i] - values[i - 1]) * (x[i] - x[i - 1]);
+    return std::nan("");
+}
+
+// Area of a spherical cap of angular radius `alpha` on one side of a great circle whose plane
+// passes `delta` (radians, positive towards the centre) from the cap's centre (intersection of
+// two caps, Tovchigrechko & Vakser 2001, with one of angular radius pi/2), over the cap's area.
+double cap_fraction_beyond_plane(double alpha, double delta) {
+    if (delta >= alpha) return 1.0;
+    if (delta <= -alpha) return 0.0;
+    const double gamma = kPi / 2.0 - delta;  // between the cap's centre and the half-space's pole
+    const double area = 2.0 * (kPi - std::acos(std::cos(gamma) / std::sin(alpha)) -
+                               std::cos(alpha) * std::acos(-std::cos(gamma) * std::cos(alpha) /
+                                                           (std::sin(gamma) * std::sin(alpha))));
+    return area / (2.0 * kPi * (1.0 - std::cos(alpha)));
+}
+
 }  // namespace
 
 TEST_CASE("rect light frame: right = normalize(direction x up_hint), up = right x direction") {
@@ -317,6 +380,75 @@ TEST_CASE("disk occluder on the axis of a sphere light: visible = 1 - (1 - cos a
     const double blocked = kPi * 3.0 / (kPi * light_radius * light_radius) * (1.0 - cos_disk * cos_disk);
     check_estimate(estimate_at(embree, light, glm::vec3(0.0f), {0, 1, 0}, 16), unoccluded - blocked,
                    "irradiance under the disk");
+}
+
+TEST_CASE("rendered penumbra of a straight edge under a rect light: linear, centred on the edge, as wide as the light") {
+    // Light width w along x (right = -x): a light point q is seen from ground point x iff the
+    // segment crosses height 1 at x >= 0, i.e. q.x >= -x, so V = clamp(1/2 + x / w, 0, 1): the
+    // 50 % point on the geometric edge, 10 %-90 % over 0.8 w. The radiance is albedo / pi times
+    // Lambert's irradiance of the visible part of the rectangle, x' in [max(-x, -w/2), w/2].
+    for (const float light_width : {0.8f, 1.6f}) {
+        CAPTURE(light_width);
+        const float light_height = 0.5f, intensity = 4.0f;
+        const Light light = downward_rect_light({0.0f, 2.0f, 0.0f}, {light_width, light_height}, intensity);
+        const EdgeProfile profile = render_edge_profile(light);
+        const double radiance = intensity / (light_width * light_height);
+        int penumbra = 0;
+        for (size_t i = 0; i < profile.x.size(); ++i) {
+            const double x = profile.x[i];
+            const double expected = std::clamp(0.5 + x / light_width, 0.0, 1.0);
+            INFO("x = " << x << ": visible " << profile.visible[i] << ", exact " << expected);
+            CHECK(std::abs(profile.visible[i] - expected) <= 0.01);
+            penumbra += expected > 0.0 && expected < 1.0;
+            // Visible part of the light: world x from max(-x, -w/2) to w/2, z within +-h/2.
+            const double x0 = std::max(-x, -0.5 * light_width), x1 = 0.5 * light_width;
+            double exact = 0.0;
+            if (x1 > x0) {
+                const std::vector<glm::dvec3> corners = {{x0, 2.0, -0.5 * light_height}, {x1, 2.0, -0.5 * light_height},
+                                                         {x1, 2.0, 0.5 * light_height}, {x0, 2.0, 0.5 * light_height}};
+                exact = kEdgeAlbedo / kPi * polygon_irradiance(corners, {x, 0.0, 0.0}, {0.0, 1.0, 0.0}, radiance);
+            }
+            const double lit = kEdgeAlbedo / kPi * intensity / 4.0;  // the whole light overhead, roughly
+            CHECK(std::abs(profile.radiance[i] - exact) <= 0.01 * lit);
+        }
+        CHECK(penumbra > 30);
+        // Where and how wide, said directly.
+        CHECK(std::abs(crossing(profile.x, profile.visible, 0.5)) <= 0.01);
+        const double width = crossing(profile.x, profile.visible, 0.9) - crossing(profile.x, profile.visible, 0.1);
+        CHECK(width == doctest::Approx(0.8 * light_width).epsilon(0.03));
+    }
+}
+
+TEST_CASE("rendered penumbra of a straight edge under a sphere light: the spherical cap cut by the edge's plane") {
+    // From ground point x the edge's plane (through the point and the line x = 0 at height 1)
+    // passes sin(delta) = x / (sqrt(1 + x^2) sqrt(4 + x^2)) from the direction to the centre
+    // (0, 2, 0); the visible fraction is the share of the light's cap, angular radius
+    // asin(r / d), beyond that plane: a penumbra over |x| < r / sqrt(1 - r^2).
+    for (const float radius : {0.15f, 0.3f}) {
+        CAPTURE(radius);
+        const EdgeProfile profile = render_edge_profile(sphere_light({0.0f, 2.0f, 0.0f}, radius, 4.0f));
+        int penumbra = 0;
+        std::vector<double> exact;
+        for (size_t i = 0; i < profile.x.size(); ++i) {
+            const double x = profile.x[i];
+            const double distance = std::hypot(x, 2.0);
+            const double alpha = std::asin(radius / distance);
+            const double delta = std::asin(x / (std::sqrt(1.0 + x * x) * distance));
+            const double expected = cap_fraction_beyond_plane(alpha, delta);
+            INFO("x = " << x << ": visible " << profile.visible[i] << ", exact " << expected);
+            CHECK(std::abs(profile.visible[i] - expected) <= 0.01);
+            penumbra += expected > 0.0 && expected < 1.0;
+            exact.push_back(expected);
+        }
+        CHECK(penumbra > 10);
+        CHECK(std::abs(crossing(profile.x, profile.visible, 0.5)) <= 0.01);
+        const auto width = [&](const std::vector<double>& values) {
+            return crossing(profile.x, values, 0.9) - crossing(profile.x, values, 0.1);
+        };
+        CHECK(width(profile.visible) == doctest::Approx(width(exact)).epsilon(0.05));
+        // A small cap is nearly a disk of radius r (in x): 10 %-90 % of a disk's segment area over 1.374 r.
+        CHECK(width(exact) == doctest::Approx(1.374 * radius).epsilon(0.05));
+    }
 }
 
 TEST_CASE("camera: a sphere on the primary ray of a pixel shows up at that pixel") {
@@ -567,7 +699,7 @@ TEST_CASE("alpha-test hook: a filter that discards every other triangle lets ray
     }};
     const EmbreeScene embree(scene, {grid}, options);
 
-    RTCIntersectContext context;
+    RTCIntersectContext context{};
     rtcInitIntersectContext(&context);
     int blocked = 0, passed = 0, hits_on_odd = 0;
     for (size_t t = 0; t < grid.triangle_count(); ++t) {

@@ -31,20 +31,51 @@ std::string version_string(uint32_t v) {
     return fmt::format("{}.{}.{}", VK_API_VERSION_MAJOR(v), VK_API_VERSION_MINOR(v), VK_API_VERSION_PATCH(v));
 }
 
+constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
+
 bool validation_requested() {
     const char* v = std::getenv("CANOPY_VALIDATION");
     return v && std::strcmp(v, "0") != 0 && *v;
 }
 
+void require_validation_layer() {
+    uint32_t count = 0;
+    vkEnumerateInstanceLayerProperties(&count, nullptr);
+    std::vector<VkLayerProperties> layers(count);
+    vkEnumerateInstanceLayerProperties(&count, layers.data());
+    for (const VkLayerProperties& layer : layers)
+        if (std::strcmp(layer.layerName, kValidationLayer) == 0) return;
+    throw GpuError(fmt::format("the Vulkan validation layer {} is not installed: install the Debian package "
+                               "vulkan-validationlayers (scripts/install-deps lists it)",
+                               kValidationLayer));
+}
+
 VKAPI_ATTR VkBool32 VKAPI_CALL on_validation_message(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
                                                      VkDebugUtilsMessageTypeFlagsEXT,
-                                                     const VkDebugUtilsMessengerCallbackDataEXT* data, void*) {
-    if (severity >= VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT)
-        std::cerr << "vulkan validation: " << data->pMessage << "\n";
+                                                     const VkDebugUtilsMessengerCallbackDataEXT* data, void* log) {
+    const std::string message = fmt::format(
+        "{}: {}", severity >= VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT ? "error" : "warning",
+        data->pMessage ? data->pMessage : "(no message)");
+    std::cerr << "vulkan validation " << message << "\n";
+    static_cast<ValidationLog*>(log)->add(message);
     return VK_FALSE;
 }
 
-VkInstance create_instance(bool validation) {
+// Warnings and errors of every kind, delivered to `log`.
+VkDebugUtilsMessengerCreateInfoEXT messenger_info(ValidationLog* log) {
+    VkDebugUtilsMessengerCreateInfoEXT info{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+    info.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+    info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+                       VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
+    info.pfnUserCallback = on_validation_message;
+    info.pUserData = log;
+    return info;
+}
+
+// `log` non-null: with the validation layer, and a messenger that also hears vkCreateInstance
+// and vkDestroyInstance (chained into the create info).
+VkInstance create_instance(ValidationLog* log) {
+    const bool validation = log != nullptr;
     VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
     app.pApplicationName = "canopy";
     app.applicationVersion = VK_MAKE_VERSION(0, 1, 0);
@@ -62,12 +93,14 @@ VkInstance create_instance(bool validation) {
     info.ppEnabledLayerNames = layers.data();
     info.enabledExtensionCount = uint32_t(extensions.size());
     info.ppEnabledExtensionNames = extensions.data();
+    const VkDebugUtilsMessengerCreateInfoEXT instance_messenger = messenger_info(log);
+    if (validation) info.pNext = &instance_messenger;
     VkInstance instance = VK_NULL_HANDLE;
     VkResult result = vkCreateInstance(&info, nullptr, &instance);
     if (result != VK_SUCCESS)
         throw GpuError(fmt::format("cannot create a Vulkan 1.3 instance ({}): is a Vulkan driver installed? "
                                    "Run scripts/install-deps (mesa-vulkan-drivers provides lavapipe){}",
-                                   vk_result_name(result), validation ? "; CANOPY_VALIDATION needs vulkan-validationlayers" : ""));
+                                   vk_result_name(result), validation ? "; the validation layer was enabled" : ""));
     return instance;
 }
 
@@ -99,7 +132,7 @@ DeviceInfo describe(VkPhysicalDevice device, int index) {
 }  // namespace
 
 std::vector<DeviceInfo> GpuContext::list_devices() {
-    VkInstance instance = create_instance(false);
+    VkInstance instance = create_instance(nullptr);
     std::vector<DeviceInfo> infos;
     auto devices = physical_devices(instance);
     for (size_t i = 0; i < devices.size(); ++i) infos.push_back(describe(devices[i], int(i)));
@@ -107,18 +140,33 @@ std::vector<DeviceInfo> GpuContext::list_devices() {
     return infos;
 }
 
-GpuContext::GpuContext(const std::string& selector) {
-    const bool validation = validation_requested();
-    instance_ = create_instance(validation);
-    if (validation) {
-        VkDebugUtilsMessengerCreateInfoEXT info{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
-        info.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
-        info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
-                           VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
-        info.pfnUserCallback = on_validation_message;
+void ValidationLog::add(const std::string& message) {
+    std::lock_guard lock(mutex_);
+    messages_.push_back(message);
+}
+
+std::vector<std::string> ValidationLog::messages() const {
+    std::lock_guard lock(mutex_);
+    return messages_;
+}
+
+size_t ValidationLog::count() const {
+    std::lock_guard lock(mutex_);
+    return messages_.size();
+}
+
+GpuContext::GpuContext(const std::string& selector, Validation validation) {
+    if (validation == Validation::on || validation_requested()) {
+        require_validation_layer();
+        validation_log_ = std::make_shared<ValidationLog>();
+    }
+    instance_ = create_instance(validation_log_.get());
+    if (validation_log_) {
+        const VkDebugUtilsMessengerCreateInfoEXT info = messenger_info(validation_log_.get());
         auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
             vkGetInstanceProcAddr(instance_, "vkCreateDebugUtilsMessengerEXT"));
-        if (create) VK_CHECK(create(instance_, &info, nullptr, &messenger_));
+        if (!create) throw GpuError("the Vulkan validation layer offers no vkCreateDebugUtilsMessengerEXT");
+        VK_CHECK(create(instance_, &info, nullptr, &messenger_));
     }
 
     auto devices = physical_devices(instance_);

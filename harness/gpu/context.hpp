@@ -4,6 +4,8 @@
 #include "gpu/vk_check.hpp"
 
 #include <cstdint>
+#include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -20,15 +22,33 @@ struct DeviceInfo {
     bool is_lavapipe() const { return type == "cpu"; }
 };
 
+// Every warning and error the Vulkan validation layers report through the context's debug-utils
+// messenger, from instance creation to destruction (objects left alive are reported when the
+// device and instance are destroyed, so keep the log past the context to see those).
+class ValidationLog {
+public:
+    void add(const std::string& message);
+    std::vector<std::string> messages() const;
+    size_t count() const;
+
+private:
+    mutable std::mutex mutex_;
+    std::vector<std::string> messages_;
+};
+
 class GpuContext {
 public:
+    // from_environment: the validation layers run when CANOPY_VALIDATION is set (and not "0");
+    // on: they run regardless. Either way a missing layer is a GpuError naming the package.
+    enum class Validation { from_environment, on };
+
     // Every Vulkan device on this machine. Throws GpuError when Vulkan itself is unavailable.
     static std::vector<DeviceInfo> list_devices();
 
     // `selector` is "" (lavapipe if present, else the first device), an index from `canopy
     // devices`, or a case-insensitive substring of a device name. Unknown selectors throw
     // ConfigError listing the devices. Needs Vulkan 1.3 (dynamic rendering, synchronization2).
-    explicit GpuContext(const std::string& selector = "");
+    explicit GpuContext(const std::string& selector = "", Validation validation = Validation::from_environment);
     ~GpuContext();
     GpuContext(const GpuContext&) = delete;
     GpuContext& operator=(const GpuContext&) = delete;
@@ -39,6 +59,8 @@ public:
     VkQueue queue() const { return queue_; }
     uint32_t queue_family() const { return queue_family_; }
     const DeviceInfo& info() const { return info_; }
+    // What the validation layers said so far; null when they are not running.
+    std::shared_ptr<const ValidationLog> validation_log() const { return validation_log_; }
     double timestamp_period_ns() const { return timestamp_period_ns_; }
     uint32_t timestamp_valid_bits() const { return timestamp_valid_bits_; }
     bool storage_write_without_format() const { return storage_write_without_format_; }
@@ -52,6 +74,7 @@ public:
 
 private:
     VkInstance instance_ = VK_NULL_HANDLE;
+    std::shared_ptr<ValidationLog> validation_log_;  // outlives the instance: it hears its destruction
     VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
     VkPhysicalDevice physical_ = VK_NULL_HANDLE;
     VkDevice device_ = VK_NULL_HANDLE;

@@ -111,17 +111,19 @@ EmbreeScene::EmbreeScene(const Scene& scene, const std::vector<TriangleMesh>& me
     extent_ = bounds_.radius();
 
     try {
-        build_embree_scenes(scene);
+        build_embree_scenes(scene, options.device_config);
     } catch (...) {
         release();
         throw;
     }
 }
 
-void EmbreeScene::build_embree_scenes(const Scene& scene) {
-    device_ = rtcNewDevice(nullptr);
-    if (!device_) throw std::runtime_error(fmt::format("Embree: cannot create a device: {}",
-                                                       embree_error_name(rtcGetDeviceError(nullptr))));
+void EmbreeScene::build_embree_scenes(const Scene& scene, const std::string& device_config) {
+    device_ = rtcNewDevice(device_config.empty() ? nullptr : device_config.c_str());
+    if (!device_)
+        throw std::runtime_error(fmt::format("Embree: cannot create a device{}: {}",
+                                             device_config.empty() ? "" : " with config '" + device_config + "'",
+                                             embree_error_name(rtcGetDeviceError(nullptr))));
     bool every_object_casts = true;
     for (const Object& object : scene.objects) every_object_casts = every_object_casts && object.casts_shadows;
 

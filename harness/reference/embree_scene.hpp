@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace canopy {
@@ -30,6 +31,12 @@ using AlphaTest = std::function<bool(uint32_t triangle, float u, float v)>;
 struct EmbreeSceneOptions {
     // Indexed like scene.objects; missing or empty entries are opaque objects.
     std::vector<AlphaTest> alpha_tests;
+    // Embree's device configuration (rtcNewDevice), e.g. "isa=avx2" to force one code path;
+    // empty: Embree picks the best ISA of this CPU. Embree takes its SSE2 path for an ISA name it
+    // does not know, silently: check the packet widths with rtcGetDeviceProperty. Every ISA must
+    // render the same image, so this is not in the reference cache key, and the cache
+    // (run/reference_provider) never builds a scene with it.
+    std::string device_config;
 };
 
 // What one geometry ID stands for.
@@ -47,6 +54,7 @@ public:
     EmbreeScene(const EmbreeScene&) = delete;
     EmbreeScene& operator=(const EmbreeScene&) = delete;
 
+    RTCDevice device() const { return device_; }
     RTCScene visible_scene() const { return visible_scene_; }
     RTCScene shadow_scene() const { return shadow_scene_; }
 
@@ -70,7 +78,7 @@ private:
         std::shared_ptr<const std::vector<uint32_t>> indices;
     };
 
-    void build_embree_scenes(const Scene& scene);
+    void build_embree_scenes(const Scene& scene, const std::string& device_config);
     RTCGeometry create_geometry(const Record& record, const AlphaTest* alpha_test) const;
     void release();
 

@@ -47,7 +47,8 @@ LightEstimate integrate_light(const PreparedLight& light, const SurfacePoint& su
     using namespace shader;
     LightEstimate estimate;
     const glm::vec3 p = surface.position, n = surface.normal;
-    ShadowPacket packet;
+    // Every lane starts as an untraced ray from the shadow-ray origin (shadow_packet.hpp).
+    ShadowPacket packet(surface.origin);
 
     if (light.type == LightType::directional || light.type == LightType::spot) {
         glm::vec3 irradiance;
@@ -67,10 +68,7 @@ LightEstimate integrate_light(const PreparedLight& light, const SurfacePoint& su
         const bool carries = std::max(irradiance.r, std::max(irradiance.g, irradiance.b)) > 0.0f;
         const bool trace = light.casts_shadows && above_horizon && (carries || want_visibility);
         packet.set(0, surface.origin, direction, t_far, trace);
-        if (trace) {
-            packet.clear_from(1);
-            tracer.trace(packet);
-        }
+        if (trace) tracer.trace(packet);
         const float visibility = (above_horizon && !packet.occluded(0)) ? 1.0f : 0.0f;
         estimate.irradiance = irradiance * visibility;
         estimate.visible_fraction = visibility;
@@ -89,8 +87,6 @@ LightEstimate integrate_light(const PreparedLight& light, const SurfacePoint& su
     const glm::vec2 shift = unit_pair(mix_bits(key ^ 0x5bd1e995u));
     const float trace_all_above = (light.casts_shadows && want_visibility) ? 1.0f : 0.0f;
     const glm::vec3 origin = surface.origin;
-    // What every ray of this shading point shares; Embree only writes tfar.
-    for (int lane = 0; lane < ShadowPacket::kWidth; ++lane) packet.set(lane, origin, glm::vec3(0.0f), 0.0f, false);
     AreaLightSamples samples;
     // Sums of (contribution - first contribution): shifted data keeps the variance accurate in float.
     float reference_value = -1.0f;
@@ -102,6 +98,7 @@ LightEstimate integrate_light(const PreparedLight& light, const SurfacePoint& su
         // Branch-free lane loops (bitwise & and |, no short-circuits) so that they vectorise.
         const int casts = light.casts_shadows ? 1 : 0;
         int active = 0;
+        // Every lane gets a direction and length, traced or not; Embree only writes tfar.
         for (int lane = 0; lane < ShadowPacket::kWidth; ++lane) {
             packet.rays.dir_x[lane] = samples.target_x[lane] - origin.x;
             packet.rays.dir_y[lane] = samples.target_y[lane] - origin.y;

@@ -42,13 +42,14 @@ void check_light_representable(const Light& light);
 std::vector<PreparedLight> prepare_lights(const Scene& scene, int area_samples, uint64_t seed);
 
 // A packet's worth of samples towards an area light, structure-of-arrays so it vectorises.
+// Zeroed on construction, so no lane is ever left uninitialised (sample_area_light fills all 16).
 struct alignas(64) AreaLightSamples {
     static constexpr int kWidth = 16;
-    alignas(64) float target_x[kWidth];  // the points on the light the shadow rays go to
-    alignas(64) float target_y[kWidth];
-    alignas(64) float target_z[kWidth];
-    alignas(64) float weight[kWidth];    // contribution / power; 0 where the sample cannot contribute
-    alignas(64) float above_horizon[kWidth];  // 1 where dot(n, direction to the sample) > 0, else 0
+    alignas(64) float target_x[kWidth] = {};  // the points on the light the shadow rays go to
+    alignas(64) float target_y[kWidth] = {};
+    alignas(64) float target_z[kWidth] = {};
+    alignas(64) float weight[kWidth] = {};    // contribution / power; 0 where the sample cannot contribute
+    alignas(64) float above_horizon[kWidth] = {};  // 1 where dot(n, direction to the sample) > 0, else 0
 };
 
 // Samples first .. first + 15 of `set`, taken at a receiver `p` with unit normal `n`, each

@@ -90,7 +90,7 @@ PixelIntegrator::SubpixelResult PixelIntegrator::shade(const Ray& ray, uint64_t 
     SubpixelResult result;
     // Clip to the camera's near and far planes like the rasteriser (planes, not spheres).
     const float forward = glm::dot(ray.direction, camera_forward_);
-    RTCRayHit hit;
+    RTCRayHit hit{};  // every field defined; Embree writes the hit
     hit.ray.org_x = ray.origin.x;
     hit.ray.org_y = ray.origin.y;
     hit.ray.org_z = ray.origin.z;
@@ -105,7 +105,7 @@ PixelIntegrator::SubpixelResult PixelIntegrator::shade(const Ray& ray, uint64_t 
     hit.ray.flags = 0;
     hit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     hit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-    RTCIntersectContext context;
+    RTCIntersectContext context{};
     rtcInitIntersectContext(&context);
     rtcIntersect1(embree_.visible_scene(), &context, &hit);
     if (hit.hit.geomID == RTC_INVALID_GEOMETRY_ID) {

@@ -11,12 +11,21 @@
 
 namespace canopy {
 
+// Every lane of a packet is a well-formed ray from construction on, traced or not: Embree reads
+// the lanes it is told to skip too (its AVX2 path splits a 16-wide packet into two 8-wide ones
+// and asserts that every lane of each half is a valid ray), so a lane of leftover stack data
+// aborts the process on one CPU and passes on another (issue 7).
 struct alignas(64) ShadowPacket {
     static constexpr int kWidth = 16;
 
     RTCRay16 rays;
-    alignas(64) int valid[kWidth];  // -1 = trace this lane, 0 = skip it
+    alignas(64) int valid[kWidth] = {};  // -1 = trace this lane, 0 = skip it
     int active = 0;                 // lanes with valid == -1
+
+    // All lanes start at `origin`, untraced, with an empty segment along +z.
+    explicit ShadowPacket(glm::vec3 origin = glm::vec3(0.0f)) {
+        for (int lane = 0; lane < kWidth; ++lane) set(lane, origin, glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, false);
+    }
 
     // Sets lane `lane` to the segment origin + t * direction, t in [0, t_far]; `trace` false
     // leaves the lane out. After tracing, occluded(lane) tells the result.
@@ -33,13 +42,9 @@ struct alignas(64) ShadowPacket {
         rays.mask[lane] = 0xffffffffu;
         rays.id[lane] = unsigned(lane);
         rays.flags[lane] = 0;
+        active += (trace ? 1 : 0) - (valid[lane] != 0 ? 1 : 0);
         valid[lane] = trace ? -1 : 0;
-        active += trace ? 1 : 0;
     }
-    void clear_from(int lane) {
-        for (; lane < kWidth; ++lane) valid[lane] = 0;
-    }
-    void reset() { active = 0; }
     // Embree sets tfar to -inf on an occluded ray.
     bool occluded(int lane) const { return valid[lane] != 0 && rays.tfar[lane] < 0.0f; }
 };
@@ -60,7 +65,7 @@ public:
 
 private:
     RTCScene scene_;
-    RTCIntersectContext context_;
+    RTCIntersectContext context_{};
     uint64_t rays_ = 0;
 };
 

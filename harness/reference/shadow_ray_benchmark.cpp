@@ -26,7 +26,7 @@ public:
     void trace(ShadowPacket& packet) {
         for (int lane = 0; lane < ShadowPacket::kWidth; ++lane) {
             if (packet.valid[lane] == 0) continue;
-            RTCRay ray;
+            RTCRay ray{};
             ray.org_x = packet.rays.org_x[lane];
             ray.org_y = packet.rays.org_y[lane];
             ray.org_z = packet.rays.org_z[lane];
@@ -75,7 +75,7 @@ double bare_occluded1_rate(RTCScene scene, const std::vector<RTCRay>& rays, int 
     double seconds = 0.0;
     do {
         parallel_for(tasks, threads, [&](size_t task, int) {
-            RTCIntersectContext context;
+            RTCIntersectContext context{};
             rtcInitIntersectContext(&context);
             const size_t begin = task * kRaysPerTask, end = std::min(begin + kRaysPerTask, rays.size());
             uint64_t blocked = 0;

@@ -16,10 +16,15 @@ GpuContext& gpu() {
 
 Image render_technique(const Scene& scene, const std::string& technique,
                        const std::map<std::string, ParamValue>& params, int width, int height) {
+    return render_technique(gpu(), scene, technique, params, width, height);
+}
+
+Image render_technique(GpuContext& context, const Scene& scene, const std::string& technique,
+                       const std::map<std::string, ParamValue>& params, int width, int height) {
     const Technique* t = TechniqueRegistry::instance().find(technique);
     if (!t) throw std::invalid_argument("no technique " + technique);
     const ParamSet resolved = ParamSet::resolve(t->params(), params, {}, SourceLocation{}, technique);
-    FrameRenderer renderer(gpu(), scene, build_scene_meshes(scene), uint32_t(width), uint32_t(height), t->plan(resolved));
+    FrameRenderer renderer(context, scene, build_scene_meshes(scene), uint32_t(width), uint32_t(height), t->plan(resolved));
     renderer.render();
     return renderer.read_color();
 }

@@ -14,8 +14,11 @@ namespace canopy::test {
 
 GpuContext& gpu();
 
-// Renders one frame of `technique` with `params` (the rest at their defaults) over `scene`.
+// Renders one frame of `technique` with `params` (the rest at their defaults) over `scene`, with
+// a FrameRenderer of its own, on `context` (default: gpu()).
 Image render_technique(const Scene& scene, const std::string& technique,
+                       const std::map<std::string, ParamValue>& params, int width, int height);
+Image render_technique(GpuContext& context, const Scene& scene, const std::string& technique,
                        const std::map<std::string, ParamValue>& params, int width, int height);
 
 }  // namespace canopy::test

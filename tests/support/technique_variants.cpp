@@ -1,0 +1,36 @@
+#include "support/technique_variants.hpp"
+
+#include "core/registry.hpp"
+
+namespace canopy::test {
+
+std::vector<TechniqueVariant> technique_variants() {
+    std::vector<TechniqueVariant> all;
+    for (const Technique* t : TechniqueRegistry::instance().all()) all.push_back({t->name(), {}});
+    const std::vector<TechniqueVariant> extra = {
+        {"shadow.hard", {{"depth_format", std::string("d16")}}},
+        {"shadow.pcf", {{"kernel", 5LL}, {"pattern", std::string("poisson")}}},
+        {"shadow.pcf", {{"kernel", 3LL}, {"hardware_2x2", true}}},
+        {"shadow.pcf", {{"kernel", 7LL}, {"receiver_plane", false}, {"depth_format", std::string("d16")}}},
+        {"shadow.pcss", {{"blocker_search", 3LL}, {"kernel", 11LL}}},
+        {"shadow.ssss", {{"kernel", 5LL}, {"lazy", false}}},
+        {"shadow.vsm", {{"precision", std::string("fp16")}, {"bleeding_reduction", 0.3}}},
+        {"shadow.esm", {{"log_space", true}}},
+        {"shadow.esm", {{"precision", std::string("fp16")}, {"exponent", 10.0}}},
+        {"shadow.gauss-cdf", {{"exact_erf", true}, {"filter", 1LL}}},
+        {"shadow.power-cdf", {{"precision", std::string("fp16")}}},
+        {"shadow.evsm", {{"components", std::string("2")}, {"precision", std::string("fp16")}}},
+        {"shadow.msm", {{"precision", std::string("fp16")}, {"moment_bias", 6e-5}}},
+        {"shadow.msm", {{"precision", std::string("unorm16")}, {"moment_bias", 6e-5}}},
+    };
+    all.insert(all.end(), extra.begin(), extra.end());
+    return all;
+}
+
+std::string describe(const TechniqueVariant& variant) {
+    std::string out = variant.technique;
+    for (const auto& [name, value] : variant.params) out += " " + name + "=" + to_string(value);
+    return out;
+}
+
+}  // namespace canopy::test
