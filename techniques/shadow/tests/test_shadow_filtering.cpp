@@ -272,7 +272,9 @@ TEST_CASE("ESM: hand-computed values, linear and log storage") {
     CHECK(esm_visibility(std::exp(c * z_o), 0.5f, c) == doctest::Approx(std::exp(-1.0)).epsilon(1e-5));
     CHECK(esm_visibility_log(c * z_o, 0.5f, c) == doctest::Approx(std::exp(-1.0)).epsilon(1e-6));
     CHECK(esm_visibility_log(c * z_o, 0.3f, c) == 1.0f);  // in front: clamped to 1
-    CHECK(esm_visibility_log(c * z_o, z_o, c) == 1.0f);   // planar receiver: exactly 1 in log storage
+    // Planar receiver: 1 in log storage, up to one ulp where the compiler or GPU fuses
+    // filtered_log - c z_r into one FMA (the stored c z_o was rounded, the fused product is not).
+    CHECK(esm_visibility_log(c * z_o, z_o, c) >= 1.0f - 0x1p-23f);
     CHECK(esm_visibility(std::exp(c * z_o), z_o, c) >= 1.0f - 1e-6f);  // linear: up to exp/log rounding
     // Mixture: 0.5 e^{c 0.2} + 0.5 e^{c 0.6} at z_r = 0.7.
     const double expect = 0.5 * std::exp(10.0 * (0.2 - 0.7)) + 0.5 * std::exp(10.0 * (0.6 - 0.7));
