@@ -31,7 +31,8 @@ struct Bounds {
 };
 
 // Builds the local-space mesh of one object. Throws ConfigError (naming object.where) when a
-// mesh file cannot be read or holds no triangles.
+// mesh file cannot be read, holds no triangles or crashes assimp (files are read in a child
+// process: scene/isolated_mesh_import.hpp).
 TriangleMesh build_object_mesh(const Object& object);
 
 // All objects' meshes, in scene.objects order.
