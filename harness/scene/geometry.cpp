@@ -2,6 +2,7 @@
 
 #include "core/error.hpp"
 #include "scene/isolated_mesh_import.hpp"
+#include "scene/scene_limits.hpp"
 
 #include <fmt/format.h>
 
@@ -150,6 +151,28 @@ TriangleMesh load_mesh_file(const Object& object) {
     }
 }
 
+// Every world-space vertex of every instance inside the coordinate range both renderers
+// compute precisely (scene_limits.hpp), checked in double so that nothing overflows on the way.
+void require_in_scene(const Object& object, const TriangleMesh& mesh) {
+    const double bound = limits::kMaxCoordinate;
+    for (size_t instance = 0; instance < object.instances.size(); ++instance) {
+        const glm::dmat4 matrix(object.instances[instance].matrix());
+        for (const Vertex& vertex : mesh.vertices) {
+            const glm::dvec3 world(matrix * glm::dvec4(glm::dvec3(vertex.position), 1.0));
+            if (std::abs(world.x) <= bound && std::abs(world.y) <= bound && std::abs(world.z) <= bound) continue;
+            throw ConfigError(object.where.file, object.where.line,
+                              fmt::format("object '{}'{} reaches ({:.3g}, {:.3g}, {:.3g}), outside the scene's coordinate "
+                                          "range [-{:g}, {:g}]",
+                                          object.name,
+                                          object.instances.size() > 1 ? fmt::format(" (instance {})", instance + 1) : "",
+                                          world.x, world.y, world.z, bound, bound),
+                              "canopy computes in single precision: keep every coordinate within 1e6 scene units "
+                              "(configs/README.md, \"Limits\"); check the object's translate and scale, and the "
+                              "model's units");
+        }
+    }
+}
+
 }  // namespace
 
 TriangleMesh build_object_mesh(const Object& object) {
@@ -166,7 +189,10 @@ TriangleMesh build_object_mesh(const Object& object) {
 std::vector<TriangleMesh> build_scene_meshes(const Scene& scene) {
     std::vector<TriangleMesh> meshes;
     meshes.reserve(scene.objects.size());
-    for (const Object& object : scene.objects) meshes.push_back(build_object_mesh(object));
+    for (const Object& object : scene.objects) {
+        meshes.push_back(build_object_mesh(object));
+        require_in_scene(object, meshes.back());
+    }
     return meshes;
 }
 
