@@ -1,8 +1,10 @@
 #include "config/experiment_config.hpp"
 
+#include "config/file_name_rules.hpp"
 #include "config/scene_config.hpp"
 #include "config/paper_config.hpp"
 #include "config/toml_reader.hpp"
+#include "scene/scene_limits.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -33,10 +35,17 @@ const char* const kExperimentExample =
 // sphere's diameter: the width penumbra estimates use), e.g. to sweep the light size (Fig 6.9).
 void apply_scene_variant(TomlReader& variant, Scene& scene) {
     scene.name = variant.get_string("name", scene.name);
+    if (const auto problem = file_name_problem(scene.name))
+        throw variant.error("name", fmt::format("the scene variant's name {} cannot be used: {}", printable_name(scene.name),
+                                                *problem),
+                            fmt::format("scene names become file names and case ids: use {}", kFileNameRule));
     if (variant.has("light_size")) {
         const double size = variant.get_float("light_size", 0.0);
-        if (size <= 0.0)
-            throw variant.error("light_size", fmt::format("'light_size' must be positive, got {}", size), "light_size = 0.5");
+        // A rect's side or a sphere's diameter, within the limits of a light's size (scene_limits.hpp).
+        const double min = 2.0 * limits::kMinLightSize, max = limits::kMaxLightSize;
+        if (!(size >= min && size <= max))
+            throw variant.error("light_size", fmt::format("'light_size' must lie in [{}, {}], got {}", min, max, size),
+                                "light_size = 0.5");
         Light* light = nullptr;
         for (Light& l : scene.lights)
             if (l.casts_shadows && !light) light = &l;
@@ -227,6 +236,16 @@ Experiment load_experiment(const std::filesystem::path& file, const TechniqueReg
     experiment.name = section->get_string("name", file.stem().string());
     if (experiment.name.empty())
         throw section->error("name", "the experiment name must not be empty", "name = \"shadow-filtering\"");
+    if (const auto problem = file_name_problem(experiment.name)) {
+        const std::string hint = fmt::format("the experiment's name becomes its output folder's name: use {}", kFileNameRule);
+        if (section->has("name"))
+            throw section->error("name", fmt::format("the experiment name {} cannot be used: {}",
+                                                     printable_name(experiment.name), *problem), hint);
+        throw ConfigError(file, section->line(),
+                          fmt::format("the experiment has no name, and its file name {} cannot be used as one: {}",
+                                      printable_name(experiment.name), *problem),
+                          "add name = \"...\" to [experiment]; " + hint);
+    }
     experiment.description = section->get_string("description", "");
     experiment.resolutions = read_resolutions(*section, experiment.resolutions);
     const long long warmup = section->get_int("warmup", experiment.warmup_frames);
@@ -265,17 +284,6 @@ Experiment load_experiment(const std::filesystem::path& file, const TechniqueReg
 }
 
 namespace {
-
-// Keeps [A-Za-z0-9._-] so ids are safe as file names on every platform.
-std::string sanitise_id(const std::string& text) {
-    std::string safe = text;
-    for (char& c : safe) {
-        const bool allowed = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') ||
-                             c == '.' || c == '_' || c == '-';
-        if (!allowed) c = '-';
-    }
-    return safe;
-}
 
 // The entry's swept parameters in config order; entries built in code may lack param_order.
 std::vector<std::string> ordered_keys(const TechniqueEntry& entry) {
@@ -325,7 +333,7 @@ std::vector<Case> expand_cases(const Experiment& experiment, const TechniqueRegi
                         given[keys[k]] = value;
                         id += fmt::format("_{}-{}", keys[k], to_string(value));
                     }
-                    id = sanitise_id(id);
+                    id = file_name_safe(id);  // scene names are checked; parameter values may hold anything
                     std::string unique_id = id;
                     for (int copy = 2; used_ids.count(unique_id); ++copy) unique_id = fmt::format("{}_{}", id, copy);
                     used_ids.insert(unique_id);

@@ -1,5 +1,6 @@
 #include "config/scene_config.hpp"
 
+#include "config/file_name_rules.hpp"
 #include "config/toml_reader.hpp"
 #include "scene/scene_limits.hpp"
 
@@ -409,6 +410,17 @@ Scene parse_scene(const std::string& text, const std::filesystem::path& file) {
     top.finish();  // a misspelled table name is reported before its absence is
 
     if (scene_section) read_scene_section(*scene_section, scene);
+    if (const auto problem = file_name_problem(scene.name)) {
+        const std::string hint = fmt::format("scene names become file names and case ids: use {}, e.g. name = \"spheres-2\"",
+                                             kFileNameRule);
+        if (scene_section && scene_section->has("name"))
+            throw scene_section->error("name", fmt::format("the scene name {} cannot be used: {}",
+                                                           printable_name(scene.name), *problem), hint);
+        throw ConfigError(file, scene_section ? scene_section->line() : 0,
+                          fmt::format("the scene has no name, and its file name {} cannot be used as one: {}",
+                                      printable_name(scene.name), *problem),
+                          "add [scene] with name = \"...\": " + hint);
+    }
     if (camera_section) read_camera(*camera_section, scene.camera);
 
     if (light_sections.empty())
