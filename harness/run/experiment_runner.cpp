@@ -42,7 +42,7 @@ std::string changed_params(const Technique& technique, const ParamSet& params) {
     std::string out;
     const auto specs = technique.params();
     for (const auto& [name, value] : params.values()) {
-        auto spec = std::find_if(specs.begin(), specs.end(), [&](const ParamSpec& s) { return s.name == name; });
+        auto spec = std::find_if(specs.begin(), specs.end(), [&name = name](const ParamSpec& s) { return s.name == name; });
         if (spec != specs.end() && to_string(spec->default_value) == to_string(value)) continue;
         out += fmt::format("{}{}={}", out.empty() ? "" : " ", name, to_string(value));
     }
