@@ -115,3 +115,32 @@ TEST_CASE("experiment names and scene variant names follow the same rule") {
     REQUIRE(error);
     CHECK(contains(error->hint(), "name = "));
 }
+
+TEST_CASE("case ids stay short enough for file names, and distinct") {
+    // A 100-byte scene name and every parameter of a technique spelled out: the id would exceed
+    // the 255 bytes of a file name, and "<id>.error.png" could not be written.
+    TempFolder folder;
+    folder.write("scene.toml", "[scene]\nname = \"" + std::string(kMaxNameBytes, 's') + "\"\n" + kLight);
+    const TechniqueRegistry& registry = TechniqueRegistry::instance();
+    for (const Technique* technique : registry.all()) {
+        CAPTURE(technique->name());
+        std::string params;
+        for (const ParamSpec& spec : technique->params())
+            params += spec.name + " = " +
+                      (std::holds_alternative<std::string>(spec.default_value) ? "\"" + to_string(spec.default_value) + "\""
+                                                                               : to_string(spec.default_value)) +
+                      "\n";
+        // Two cases differing only in the last parameters' values must keep different ids.
+        const std::filesystem::path file = folder.write(
+            "e.toml", "[experiment]\nname = \"long\"\nscenes = [\"scene.toml\"]\nresolutions = [[8192, 8192], [8191, 8192]]\n"
+                      "[[technique]]\nname = \"" + technique->name() + "\"\n[technique.params]\n" + params);
+        const std::vector<Case> cases = expand_cases(load_experiment(file, registry), registry);
+        REQUIRE(cases.size() == 2);
+        for (const Case& c : cases) {
+            CAPTURE(c.id);
+            CHECK(c.id.size() + std::string(".error.png").size() <= 255);
+            CHECK(!file_name_problem(c.id.substr(0, kMaxNameBytes)));
+        }
+        CHECK(cases[0].id != cases[1].id);
+    }
+}

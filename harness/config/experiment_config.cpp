@@ -285,6 +285,19 @@ Experiment load_experiment(const std::filesystem::path& file, const TechniqueReg
 
 namespace {
 
+// Case ids name files ("<id>.error.png"), and file names hold 255 bytes: a longer id keeps its
+// first bytes (at a UTF-8 character boundary) and ends in a hash of the whole, so it stays
+// readable and distinct.
+constexpr size_t kMaxIdBytes = 200;
+
+std::string bounded_id(const std::string& id) {
+    if (id.size() <= kMaxIdBytes) return id;
+    const std::string hash = fmt::format("_h{:016x}", fnv1a_64(id));
+    size_t keep = kMaxIdBytes - hash.size();
+    while (keep > 0 && (static_cast<unsigned char>(id[keep]) & 0xC0) == 0x80) --keep;
+    return id.substr(0, keep) + hash;
+}
+
 // The entry's swept parameters in config order; entries built in code may lack param_order.
 std::vector<std::string> ordered_keys(const TechniqueEntry& entry) {
     std::vector<std::string> keys;
@@ -333,7 +346,7 @@ std::vector<Case> expand_cases(const Experiment& experiment, const TechniqueRegi
                         given[keys[k]] = value;
                         id += fmt::format("_{}-{}", keys[k], to_string(value));
                     }
-                    id = file_name_safe(id);  // scene names are checked; parameter values may hold anything
+                    id = bounded_id(file_name_safe(id));  // scene names are checked; values may hold anything
                     std::string unique_id = id;
                     for (int copy = 2; used_ids.count(unique_id); ++copy) unique_id = fmt::format("{}_{}", id, copy);
                     used_ids.insert(unique_id);
