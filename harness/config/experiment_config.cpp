@@ -27,6 +27,7 @@ namespace {
 
 constexpr int kMaxResolution = 8192;
 constexpr long long kMaxFrames = 1000000;
+constexpr uint64_t kMaxCases = 100000;
 
 const char* const kExperimentExample =
     "[experiment]\n    scenes = [\"../scenes/spheres.toml\"]\n\n    [[technique]]\n    name = \"shadow.pcf\"";
@@ -191,6 +192,28 @@ TechniqueEntry read_technique(TomlReader& reader, const TechniqueRegistry& regis
     return entry;
 }
 
+// A sweep's cases multiply: a few lists of a few hundred values would take years to run, and
+// memory to expand. Counted without expanding, saturating instead of overflowing.
+void check_case_count(const Experiment& experiment) {
+    const auto times = [](uint64_t a, uint64_t b) { return b != 0 && a > kMaxCases / b ? kMaxCases + 1 : a * b; };
+    const uint64_t per_entry_factor = times(experiment.scenes.size(), experiment.resolutions.size());
+    uint64_t total = 0, largest = 0;
+    const TechniqueEntry* largest_entry = nullptr;
+    for (const TechniqueEntry& entry : experiment.techniques) {
+        uint64_t combinations = 1;
+        for (const auto& [key, values] : entry.sweep) combinations = times(combinations, std::max<size_t>(values.size(), 1));
+        const uint64_t cases = times(combinations, per_entry_factor);
+        total = std::min(total + cases, kMaxCases + 1);
+        if (cases >= largest) largest = cases, largest_entry = &entry;
+    }
+    if (total <= kMaxCases || !largest_entry) return;
+    throw ConfigError(largest_entry->where.file, largest_entry->where.line,
+                      fmt::format("the experiment expands to more than {} cases", kMaxCases),
+                      fmt::format("scenes x resolutions x the product of each [[technique]]'s lists; sweep fewer "
+                                  "values, or split the experiment (this [[technique]] alone gives {}{})",
+                                  largest > kMaxCases ? "more than " : "", std::min(largest, kMaxCases)));
+}
+
 std::string hash_files(const std::string& experiment_bytes, const std::vector<std::filesystem::path>& files) {
     uint64_t hash = fnv1a_64(experiment_bytes);
     for (const std::filesystem::path& file : files) hash = fnv1a_64(read_config_file(file), hash);
@@ -272,6 +295,7 @@ Experiment load_experiment(const std::filesystem::path& file, const TechniqueReg
                           "run `canopy list` to see every technique");
     for (TomlReader& technique_section : technique_sections)
         experiment.techniques.push_back(read_technique(technique_section, registry));
+    check_case_count(experiment);
 
     // Mesh files change the results as much as the configs do.
     for (const Scene& scene : experiment.scenes)
