@@ -157,3 +157,26 @@ TEST_CASE("the child process returns exactly the mesh an in-process import gives
         CHECK(!mesh_defect(isolated));
     }
 }
+
+TEST_CASE("a mesh reader that never finishes is stopped after the time limit") {
+    const ScopedEnvironment limit("CANOPY_MESH_IMPORT_TIMEOUT", "1");
+    SUBCASE("a child that hangs (stopped by the test hook)") {
+        const ScopedEnvironment stop("CANOPY_TEST_MESH_IMPORT_SIGNAL", std::to_string(SIGSTOP));
+        const auto start = std::chrono::steady_clock::now();
+        const auto error = load_error(kAssimpModels / "OBJ/box.obj");
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        REQUIRE(error);
+        INFO(error->formatted());
+        CHECK(error->line() == 7);
+        CHECK(contains(error->what(), "did not finish reading"));
+        CHECK(contains(error->hint(), "CANOPY_MESH_IMPORT_TIMEOUT"));
+        CHECK(seconds < 30.0);
+    }
+    SUBCASE("a PLY header that makes Debian's assimp 5.2.5 loop (found by fuzz_mesh)") {
+        // Whatever a future assimp makes of it, canopy must come back with a clean error.
+        const auto error = load_error(kMeshes / "assimp_loops_forever.ply");
+        REQUIRE(error);
+        INFO(error->formatted());
+        CHECK(error->line() == 7);
+    }
+}

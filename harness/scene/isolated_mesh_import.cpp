@@ -2,11 +2,14 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <chrono>
 #include <csignal>
 #include <cstdlib>
 #include <cstring>
 #include <system_error>
+#include <thread>
 #include <type_traits>
 
 #include <sys/mman.h>
@@ -72,6 +75,35 @@ bool read_all_at(int fd, void* data, size_t size, off_t offset) {
         offset += got;
     }
     return true;
+}
+
+// Some files make assimp loop forever; a child that takes longer than this is killed.
+constexpr const char* kTimeLimitVariable = "CANOPY_MESH_IMPORT_TIMEOUT";
+constexpr double kDefaultTimeLimitSeconds = 300.0;
+
+double import_time_limit_seconds() {
+    if (const char* text = std::getenv(kTimeLimitVariable)) {
+        char* end = nullptr;
+        const double seconds = std::strtod(text, &end);
+        if (end != text && *end == '\0' && seconds > 0.0 && seconds <= 1e6) return seconds;
+    }
+    return kDefaultTimeLimitSeconds;
+}
+
+// Waits for `child` to end, at most `seconds`; false when it is still running. Polls with a
+// growing interval (0.1 ms to 20 ms): a mesh takes milliseconds to seconds, and waitpid has
+// no timeout.
+bool wait_for(pid_t child, int& status, double seconds) {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+    auto interval = std::chrono::microseconds(100);
+    for (;;) {
+        const pid_t ended = waitpid(child, &status, WNOHANG);
+        if (ended == child) return true;
+        if (ended < 0 && errno != EINTR) throw std::system_error(errno, std::generic_category(), "mesh import: waitpid");
+        if (std::chrono::steady_clock::now() >= deadline) return false;
+        std::this_thread::sleep_for(interval);
+        interval = std::min(interval * 2, std::chrono::microseconds(20000));
+    }
 }
 
 // Runs in the child: import, write the answer, and leave without running the parent's
@@ -160,8 +192,17 @@ TriangleMesh import_mesh_file_isolated(const std::filesystem::path& file) {
     if (child == 0) import_in_child(shared.get(), file);
 
     int status = 0;
-    while (waitpid(child, &status, 0) < 0)
-        if (errno != EINTR) throw std::system_error(errno, std::generic_category(), "mesh import: waitpid");
+    const double limit = import_time_limit_seconds();
+    if (!wait_for(child, status, limit)) {
+        kill(child, SIGKILL);
+        while (waitpid(child, &status, 0) < 0 && errno == EINTR) {}
+        throw MeshFileError(fmt::format("assimp did not finish reading '{}' within {:g} s (it may loop forever on "
+                                        "this file)",
+                                        file.string(), limit),
+                            fmt::format("repair or re-export the model; for a model that takes longer to read, set "
+                                        "{} to more seconds",
+                                        kTimeLimitVariable));
+    }
     const std::string hint = "assimp cannot read this file (a bug in assimp, likely triggered by a malformed file); "
                              "repair or re-export the model, or convert it to another format";
     if (WIFSIGNALED(status)) {
