@@ -29,7 +29,8 @@ void check_assimp_mesh(const aiMesh* mesh, unsigned mesh_index, const std::strin
     if (mesh->mNumFaces > 0 && !mesh->mFaces) throw defect("has a face count but no faces");
     for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
         const aiFace& face = mesh->mFaces[f];
-        if (face.mNumIndices > 0 && !face.mIndices) throw defect(fmt::format("face {} has no indices", f));
+        // assimp's triangulation asserts (and aborts) on a face without indices.
+        if (face.mNumIndices == 0 || !face.mIndices) throw defect(fmt::format("face {} has no indices", f));
         for (unsigned k = 0; k < face.mNumIndices; ++k)
             if (face.mIndices[k] >= mesh->mNumVertices)
                 throw defect(fmt::format("face {} uses vertex {}, out of range: the mesh has {} vertices", f, face.mIndices[k],
