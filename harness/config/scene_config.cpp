@@ -65,7 +65,7 @@ void require_positive(TomlReader& reader, std::string_view key, const glm::vec3&
 
 void require_in_range(TomlReader& reader, std::string_view key, const glm::vec3& value, float min, float max) {
     for (int i = 0; i < 3; ++i) {
-        if (value[i] >= float(min) && value[i] <= float(max)) continue;
+        if (value[i] >= min && value[i] <= max) continue;
         throw reader.error(key, fmt::format("{} must lie in [{}, {}] in every component, got [{}, {}, {}]",
                                             reader.describe_key(key), min, max, value.x, value.y, value.z),
                            fmt::format("use values in [{}, {}]", min, max));
