@@ -99,7 +99,11 @@ bool wait_for(pid_t child, int& status, double seconds) {
     for (;;) {
         const pid_t ended = waitpid(child, &status, WNOHANG);
         if (ended == child) return true;
-        if (ended < 0 && errno != EINTR) throw std::system_error(errno, std::generic_category(), "mesh import: waitpid");
+        if (ended < 0 && errno != EINTR) {
+            const int error = errno;
+            kill(child, SIGKILL);
+            throw std::system_error(error, std::generic_category(), "mesh import: waitpid");
+        }
         if (std::chrono::steady_clock::now() >= deadline) return false;
         std::this_thread::sleep_for(interval);
         interval = std::min(interval * 2, std::chrono::microseconds(20000));
