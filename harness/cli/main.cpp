@@ -1,4 +1,5 @@
 // canopy: runs rendering techniques over configured scenes and tabulates time and error.
+#include "cli/default_scene.hpp"
 #include "config/experiment_config.hpp"
 #include "config/scene_config.hpp"
 #include "reference/shadow_ray_benchmark.hpp"
@@ -279,17 +280,21 @@ int main(int argc, char** argv) {
     bench_cmd->require_subcommand(1);
     CLI::App* bench_reference_cmd = bench_cmd->add_subcommand(
         "reference", "Shadow-ray throughput of the reference renderer vs a bare Embree rtcOccluded1 loop, same rays.");
-    scene_path = std::string(CANOPY_SOURCE_DIR) + "/configs/scenes/spheres.toml";
-    bench_reference_cmd->add_option("scene", scene_path, "scene TOML")->capture_default_str();
+    const std::string default_scene_doc =
+        fmt::format("scene TOML (default: {0} in the current directory, else in the checkout the canopy executable "
+                    "was built in, i.e. ../{0} from its folder)",
+                    kDefaultBenchScene);
+    bench_reference_cmd->add_option("scene", scene_path, default_scene_doc);
     add_reference_options(bench_reference_cmd, true);
     ScalingOptions scaling;
-    scaling.scene_file = std::string(CANOPY_SOURCE_DIR) + "/configs/scenes/spheres.toml";
     CLI::App* bench_scaling_cmd = bench_cmd->add_subcommand(
         "scaling", "Time vs kernel width per shadow technique, fitted exponent (separable ~1, K x K ~2).");
-    bench_scaling_cmd->add_option("scene", scaling.scene_file, "scene TOML")->capture_default_str();
-    bench_scaling_cmd->add_option("--width", scaling.width, "image width")->capture_default_str();
-    bench_scaling_cmd->add_option("--height", scaling.height, "image height")->capture_default_str();
-    bench_scaling_cmd->add_option("--measured", scaling.measured, "measured frames per point")->capture_default_str();
+    bench_scaling_cmd->add_option("scene", scaling.scene_file, default_scene_doc);
+    bench_scaling_cmd->add_option("--width", scaling.width, "image width")->capture_default_str()->check(CLI::Range(1, 8192));
+    bench_scaling_cmd->add_option("--height", scaling.height, "image height")->capture_default_str()->check(CLI::Range(1, 8192));
+    bench_scaling_cmd->add_option("--measured", scaling.measured, "measured frames per point")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 1000000));
     bench_scaling_cmd->add_option("--out", out_dir, "also write the Markdown report to this file");
     bench_scaling_cmd->add_option("--device", device, "Vulkan device: index or part of its name (default: lavapipe)");
 
@@ -320,8 +325,13 @@ int main(int argc, char** argv) {
             return run(command, reference_options);
         }
         if (*reference_cmd) return reference(scene_path, out_dir, reference_options);
-        if (*bench_reference_cmd) return bench_reference(scene_path, reference_options);
-        if (*bench_scaling_cmd) return bench_scaling(scaling, device, out_dir);
+        if (*bench_reference_cmd)
+            return bench_reference(scene_path.empty() ? find_default_bench_scene(current_executable()) : fs::path(scene_path),
+                                   reference_options);
+        if (*bench_scaling_cmd) {
+            if (scaling.scene_file.empty()) scaling.scene_file = find_default_bench_scene(current_executable()).string();
+            return bench_scaling(scaling, device, out_dir);
+        }
     } catch (const ConfigError& e) {
         fmt::print(stderr, "{}\n", e.formatted());
         return kExitBadInput;

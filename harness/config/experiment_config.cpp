@@ -1,8 +1,10 @@
 #include "config/experiment_config.hpp"
 
+#include "config/file_name_rules.hpp"
 #include "config/scene_config.hpp"
 #include "config/paper_config.hpp"
 #include "config/toml_reader.hpp"
+#include "scene/scene_limits.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -25,6 +27,7 @@ namespace {
 
 constexpr int kMaxResolution = 8192;
 constexpr long long kMaxFrames = 1000000;
+constexpr uint64_t kMaxCases = 100000;
 
 const char* const kExperimentExample =
     "[experiment]\n    scenes = [\"../scenes/spheres.toml\"]\n\n    [[technique]]\n    name = \"shadow.pcf\"";
@@ -33,10 +36,17 @@ const char* const kExperimentExample =
 // sphere's diameter: the width penumbra estimates use), e.g. to sweep the light size (Fig 6.9).
 void apply_scene_variant(TomlReader& variant, Scene& scene) {
     scene.name = variant.get_string("name", scene.name);
+    if (const auto problem = file_name_problem(scene.name))
+        throw variant.error("name", fmt::format("the scene variant's name {} cannot be used: {}", printable_name(scene.name),
+                                                *problem),
+                            fmt::format("scene names become file names and case ids: use {}", kFileNameRule));
     if (variant.has("light_size")) {
         const double size = variant.get_float("light_size", 0.0);
-        if (size <= 0.0)
-            throw variant.error("light_size", fmt::format("'light_size' must be positive, got {}", size), "light_size = 0.5");
+        // A rect's side or a sphere's diameter, within the limits of a light's size (scene_limits.hpp).
+        const double min = 2.0 * limits::kMinLightSize, max = limits::kMaxLightSize;
+        if (!(size >= min && size <= max))
+            throw variant.error("light_size", fmt::format("'light_size' must lie in [{}, {}], got {}", min, max, size),
+                                "light_size = 0.5");
         Light* light = nullptr;
         for (Light& l : scene.lights)
             if (l.casts_shadows && !light) light = &l;
@@ -182,6 +192,28 @@ TechniqueEntry read_technique(TomlReader& reader, const TechniqueRegistry& regis
     return entry;
 }
 
+// A sweep's cases multiply: a few lists of a few hundred values would take years to run, and
+// memory to expand. Counted without expanding, saturating instead of overflowing.
+void check_case_count(const Experiment& experiment) {
+    const auto times = [](uint64_t a, uint64_t b) { return b != 0 && a > kMaxCases / b ? kMaxCases + 1 : a * b; };
+    const uint64_t per_entry_factor = times(experiment.scenes.size(), experiment.resolutions.size());
+    uint64_t total = 0, largest = 0;
+    const TechniqueEntry* largest_entry = nullptr;
+    for (const TechniqueEntry& entry : experiment.techniques) {
+        uint64_t combinations = 1;
+        for (const auto& [key, values] : entry.sweep) combinations = times(combinations, std::max<size_t>(values.size(), 1));
+        const uint64_t cases = times(combinations, per_entry_factor);
+        total = std::min(total + cases, kMaxCases + 1);
+        if (cases >= largest) largest = cases, largest_entry = &entry;
+    }
+    if (total <= kMaxCases || !largest_entry) return;
+    throw ConfigError(largest_entry->where.file, largest_entry->where.line,
+                      fmt::format("the experiment expands to more than {} cases", kMaxCases),
+                      fmt::format("scenes x resolutions x the product of each [[technique]]'s lists; sweep fewer "
+                                  "values, or split the experiment (this [[technique]] alone gives {}{})",
+                                  largest > kMaxCases ? "more than " : "", std::min(largest, kMaxCases)));
+}
+
 std::string hash_files(const std::string& experiment_bytes, const std::vector<std::filesystem::path>& files) {
     uint64_t hash = fnv1a_64(experiment_bytes);
     for (const std::filesystem::path& file : files) hash = fnv1a_64(read_config_file(file), hash);
@@ -227,6 +259,16 @@ Experiment load_experiment(const std::filesystem::path& file, const TechniqueReg
     experiment.name = section->get_string("name", file.stem().string());
     if (experiment.name.empty())
         throw section->error("name", "the experiment name must not be empty", "name = \"shadow-filtering\"");
+    if (const auto problem = file_name_problem(experiment.name)) {
+        const std::string hint = fmt::format("the experiment's name becomes its output folder's name: use {}", kFileNameRule);
+        if (section->has("name"))
+            throw section->error("name", fmt::format("the experiment name {} cannot be used: {}",
+                                                     printable_name(experiment.name), *problem), hint);
+        throw ConfigError(file, section->line(),
+                          fmt::format("the experiment has no name, and its file name {} cannot be used as one: {}",
+                                      printable_name(experiment.name), *problem),
+                          "add name = \"...\" to [experiment]; " + hint);
+    }
     experiment.description = section->get_string("description", "");
     experiment.resolutions = read_resolutions(*section, experiment.resolutions);
     const long long warmup = section->get_int("warmup", experiment.warmup_frames);
@@ -253,6 +295,7 @@ Experiment load_experiment(const std::filesystem::path& file, const TechniqueReg
                           "run `canopy list` to see every technique");
     for (TomlReader& technique_section : technique_sections)
         experiment.techniques.push_back(read_technique(technique_section, registry));
+    check_case_count(experiment);
 
     // Mesh files change the results as much as the configs do.
     for (const Scene& scene : experiment.scenes)
@@ -266,15 +309,17 @@ Experiment load_experiment(const std::filesystem::path& file, const TechniqueReg
 
 namespace {
 
-// Keeps [A-Za-z0-9._-] so ids are safe as file names on every platform.
-std::string sanitise_id(const std::string& text) {
-    std::string safe = text;
-    for (char& c : safe) {
-        const bool allowed = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') ||
-                             c == '.' || c == '_' || c == '-';
-        if (!allowed) c = '-';
-    }
-    return safe;
+// Case ids name files ("<id>.error.png"), and file names hold 255 bytes: a longer id keeps its
+// first bytes (at a UTF-8 character boundary) and ends in a hash of the whole, so it stays
+// readable and distinct.
+constexpr size_t kMaxIdBytes = 200;
+
+std::string bounded_id(const std::string& id) {
+    if (id.size() <= kMaxIdBytes) return id;
+    const std::string hash = fmt::format("_h{:016x}", fnv1a_64(id));
+    size_t keep = kMaxIdBytes - hash.size();
+    while (keep > 0 && (static_cast<unsigned char>(id[keep]) & 0xC0) == 0x80) --keep;
+    return id.substr(0, keep) + hash;
 }
 
 // The entry's swept parameters in config order; entries built in code may lack param_order.
@@ -324,7 +369,7 @@ std::vector<Case> expand_cases(const Experiment& experiment, const TechniqueRegi
                         given[keys[k]] = value;
                         id += fmt::format("_{}-{}", keys[k], to_string(value));
                     }
-                    id = sanitise_id(id);
+                    id = bounded_id(file_name_safe(id));  // scene names are checked; values may hold anything
                     std::string unique_id = id;
                     for (int copy = 2; used_ids.count(unique_id); ++copy) unique_id = fmt::format("{}_{}", id, copy);
                     used_ids.insert(unique_id);

@@ -1,6 +1,8 @@
 #include "config/scene_config.hpp"
 
+#include "config/file_name_rules.hpp"
 #include "config/toml_reader.hpp"
+#include "scene/scene_limits.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -79,24 +81,72 @@ void require_non_negative(TomlReader& reader, std::string_view key, const glm::v
     }
 }
 
+// A value in [min, max]; `why` says what the range protects, for the hint.
+void require_between(TomlReader& reader, std::string_view key, float value, double min, double max,
+                     const std::string& why) {
+    if (value >= float(min) && value <= float(max)) return;  // as floats: near = 1e-6 is allowed
+    throw reader.error(key, fmt::format("{} must lie in [{}, {}], got {}", reader.describe_key(key), min, max, value),
+                       why);
+}
+
+void require_between(TomlReader& reader, std::string_view key, const glm::vec3& value, double min, double max,
+                     const std::string& why) {
+    for (int i = 0; i < 3; ++i) {
+        if (value[i] >= float(min) && value[i] <= float(max)) continue;
+        throw reader.error(key, fmt::format("{} must lie in [{}, {}] in every component, got [{}, {}, {}]",
+                                            reader.describe_key(key), min, max, value.x, value.y, value.z),
+                           why);
+    }
+}
+
+// A position inside the cube of side 2 * limits::kMaxCoordinate around the origin.
+void require_in_scene(TomlReader& reader, std::string_view key, const glm::vec3& value) {
+    const double bound = limits::kMaxCoordinate;
+    for (int i = 0; i < 3; ++i) {
+        if (std::abs(value[i]) <= float(bound)) continue;
+        throw reader.error(key, fmt::format("{} = [{}, {}, {}] lies outside the scene's coordinate range [-{}, {}]",
+                                            reader.describe_key(key), value.x, value.y, value.z, bound, bound),
+                           "canopy computes in single precision: keep every coordinate within 1e6 scene units "
+                           "(configs/README.md, \"Limits\"); move the scene closer to the origin or change its units");
+    }
+}
+
+// A direction read as given and normalised in double precision (a float length of huge
+// components would overflow); an error when it is (nearly) the zero vector.
+glm::vec3 read_direction(TomlReader& reader, std::string_view key, const glm::vec3& fallback,
+                         const std::string& zero_message, const std::string& zero_hint) {
+    const glm::dvec3 direction(reader.get_vec3(key, fallback, Broadcast::forbidden));
+    const double length = glm::length(direction);
+    if (!(length >= 1e-6)) throw reader.error(key, zero_message, zero_hint);
+    return glm::vec3(direction / length);
+}
+
 bool nearly_parallel(const glm::vec3& a, const glm::vec3& b) {
     return std::abs(glm::dot(glm::normalize(a), glm::normalize(b))) > 0.9999f;
 }
+
+const std::string kLightRangeWhy =
+    "within this range the reference's single-precision sums stay finite (configs/README.md, \"Limits\")";
 
 void read_scene_section(TomlReader& reader, Scene& scene) {
     scene.name = reader.get_string("name", scene.name);
     if (scene.name.empty()) throw reader.error("name", "the scene name must not be empty", "name = \"spheres\"");
     scene.ambient = reader.get_vec3("ambient", scene.ambient);
     require_non_negative(reader, "ambient", scene.ambient);
+    require_between(reader, "ambient", scene.ambient, 0.0, limits::kMaxRadiance, kLightRangeWhy);
     scene.background = reader.get_vec3("background", scene.background);
     require_non_negative(reader, "background", scene.background);
+    require_between(reader, "background", scene.background, 0.0, limits::kMaxRadiance, kLightRangeWhy);
     reader.finish();
 }
 
 void read_camera(TomlReader& reader, Camera& camera) {
     camera.position = reader.get_vec3("position", camera.position, Broadcast::forbidden);
+    require_in_scene(reader, "position", camera.position);
     camera.target = reader.get_vec3("target", camera.target, Broadcast::forbidden);
-    camera.up = reader.get_vec3("up", camera.up, Broadcast::forbidden);
+    require_in_scene(reader, "target", camera.target);
+    camera.up = read_direction(reader, "up", camera.up, "the camera's 'up' is the zero vector",
+                               "use an up vector that is not along target - position, e.g. up = [0, 1, 0]");
     camera.fov_y_degrees = float(reader.get_float("fov", camera.fov_y_degrees));
     camera.near_plane = float(reader.get_float("near", camera.near_plane));
     camera.far_plane = float(reader.get_float("far", camera.far_plane));
@@ -105,7 +155,10 @@ void read_camera(TomlReader& reader, Camera& camera) {
     if (!(camera.fov_y_degrees > 0.0f && camera.fov_y_degrees < 179.0f))
         throw reader.error("fov", fmt::format("'fov' in [camera] must lie in (0, 179) degrees, got {}", camera.fov_y_degrees),
                            "fov is the vertical field of view in degrees, e.g. fov = 45");
-    require_positive(reader, "near", camera.near_plane);
+    require_between(reader, "near", camera.near_plane, limits::kMinNear, limits::kMaxFar,
+                    "near is the near clip distance in scene units, e.g. near = 0.1");
+    require_between(reader, "far", camera.far_plane, limits::kMinNear, limits::kMaxFar,
+                    "far is the far clip distance; 1e7 reaches every corner of the scene's coordinate range");
     if (!(camera.far_plane > camera.near_plane))
         throw reader.error(reader.has("far") ? "far" : "near",
                            fmt::format("'far' ({}) must be greater than 'near' ({}) in [camera]", camera.far_plane,
@@ -156,25 +209,32 @@ Light read_light(TomlReader& reader) {
         return true;
     };
 
-    if (applies("position")) light.position = reader.get_vec3("position", light.position, Broadcast::forbidden);
-    if (applies("direction")) {
-        const glm::vec3 direction = reader.get_vec3("direction", light.direction, Broadcast::forbidden);
-        if (glm::length(direction) < 1e-6f)
-            throw reader.error("direction", fmt::format("{} must not be the zero vector", reader.describe_key("direction")),
-                               "give the direction the light travels in, e.g. direction = [0, -1, 0]");
-        light.direction = glm::normalize(direction);
+    if (applies("position")) {
+        light.position = reader.get_vec3("position", light.position, Broadcast::forbidden);
+        require_in_scene(reader, "position", light.position);
     }
+    if (applies("direction"))
+        light.direction = read_direction(reader, "direction", light.direction,
+                                         fmt::format("{} must not be the zero vector", reader.describe_key("direction")),
+                                         "give the direction the light travels in, e.g. direction = [0, -1, 0]");
     light.color = reader.get_vec3("color", light.color);
     require_non_negative(reader, "color", light.color);
+    require_between(reader, "color", light.color, 0.0, limits::kMaxColor, kLightRangeWhy + "; set the power with 'intensity'");
     light.intensity = float(reader.get_float("intensity", light.intensity));
     require_non_negative(reader, "intensity", light.intensity);
+    require_between(reader, "intensity", light.intensity, 0.0, limits::kMaxIntensity, kLightRangeWhy);
     if (applies("size")) {
         light.rect_size = reader.get_vec2("size", light.rect_size, Broadcast::forbidden);
         require_positive(reader, "size", light.rect_size);
+        for (int i = 0; i < 2; ++i)
+            require_between(reader, "size", light.rect_size[i], limits::kMinLightSize, limits::kMaxLightSize,
+                            kLightRangeWhy + " (radiance is intensity / area)");
     }
     if (applies("radius")) {
         light.sphere_radius = float(reader.get_float("radius", light.sphere_radius));
         require_positive(reader, "radius", light.sphere_radius);
+        require_between(reader, "radius", light.sphere_radius, limits::kMinLightSize, limits::kMaxLightSize,
+                        kLightRangeWhy + " (radiance is intensity / area)");
     }
     if (applies("angle")) {
         light.spot_angle_degrees = float(reader.get_float("angle", light.spot_angle_degrees));
@@ -184,9 +244,10 @@ Light read_light(TomlReader& reader) {
                                "angle is the cone's half-angle in degrees, e.g. angle = 30");
     }
     if (applies("up")) {
-        light.rect_up_hint = reader.get_vec3("up", light.rect_up_hint, Broadcast::forbidden);
         const std::string up_hint = "'up' orients the rectangle's height axis; choose one not along 'direction', "
                                     "e.g. up = [0, 0, 1] for a light facing down";
+        light.rect_up_hint = read_direction(reader, "up", light.rect_up_hint,
+                                            fmt::format("'up' in {} is the zero vector", reader.context()), up_hint);
         if (!reader.has("up") && nearly_parallel(light.rect_up_hint, light.direction))
             throw reader.error("direction",
                                fmt::format("{} is parallel to the default 'up' [0, 0, 1]", reader.describe_key("direction")),
@@ -203,12 +264,33 @@ Light read_light(TomlReader& reader) {
 Transform read_transform(TomlReader& reader) {
     Transform transform;
     transform.translate = reader.get_vec3("translate", transform.translate, Broadcast::forbidden);
+    require_in_scene(reader, "translate", transform.translate);
     transform.rotate_degrees = reader.get_vec3("rotate", transform.rotate_degrees, Broadcast::forbidden);
     transform.scale = reader.get_vec3("scale", transform.scale);
     if (transform.scale.x == 0.0f || transform.scale.y == 0.0f || transform.scale.z == 0.0f)
         throw reader.error("scale", fmt::format("{} must not be zero in any component", reader.describe_key("scale")),
                            "a zero scale flattens the object away; use e.g. scale = 1");
+    for (int i = 0; i < 3; ++i) {
+        const float magnitude = std::abs(transform.scale[i]);
+        if (magnitude >= float(limits::kMinScale) && magnitude <= float(limits::kMaxScale)) continue;
+        const glm::vec3& s = transform.scale;
+        throw reader.error("scale",
+                           fmt::format("{} = [{}, {}, {}]: every component's magnitude must lie in [{}, {}]",
+                                       reader.describe_key("scale"), s.x, s.y, s.z, limits::kMinScale, limits::kMaxScale),
+                           "a negative component mirrors the object; for models in other units (millimetres: "
+                           "scale = 0.001) stay within this range, or convert the model");
+    }
     return transform;
+}
+
+// An instance's whole transform must keep some volume: two small scales multiply.
+void require_volume(TomlReader& reader, const Transform& transform) {
+    const double determinant = glm::determinant(glm::dmat3(glm::mat3(transform.matrix())));
+    if (std::abs(determinant) >= limits::kMinVolumeScale) return;
+    throw reader.error("scale",
+                       fmt::format("{} and its object's transform together scale volumes by {:.3g}, below {}",
+                                   reader.context(), determinant, limits::kMinVolumeScale),
+                       "the object would be flat; use larger scales on the object or the instance");
 }
 
 struct ShapeKeyUse {
@@ -270,11 +352,21 @@ Object read_object(TomlReader& reader, size_t index, const std::filesystem::path
             if (path.is_relative()) path = config_folder / path;
             object.mesh_file = std::filesystem::absolute(path).lexically_normal();
             std::error_code ignored;
-            if (!std::filesystem::is_regular_file(object.mesh_file, ignored))
+            const auto status = std::filesystem::status(object.mesh_file, ignored);
+            const std::string looked = fmt::format("relative paths are resolved against the scene config's folder, {}",
+                                                   config_folder.string());
+            if (!std::filesystem::exists(status))
                 throw reader.error("file", fmt::format("mesh file '{}' not found (looked for {})", file,
                                                        object.mesh_file.string()),
-                                   fmt::format("relative paths are resolved against the scene config's folder, {}",
-                                               config_folder.string()));
+                                   looked);
+            if (std::filesystem::is_directory(status))
+                throw reader.error("file", fmt::format("mesh file '{}' is a directory ({}), not a model file", file,
+                                                       object.mesh_file.string()),
+                                   "name the model file inside it, e.g. file = \"meshes/model.glb\"");
+            if (!std::filesystem::is_regular_file(status))
+                throw reader.error("file", fmt::format("mesh file '{}' is not a regular file ({})", file,
+                                                       object.mesh_file.string()),
+                                   "name a model file (glTF/GLB, OBJ, PLY, ...), not a device, pipe or socket");
             break;
         }
     }
@@ -294,6 +386,7 @@ Object read_object(TomlReader& reader, size_t index, const std::filesystem::path
     for (TomlReader& instance_reader : instance_readers) {
         Transform copy = own;
         copy.outer = read_transform(instance_reader).matrix();  // world = instance * object
+        require_volume(instance_reader, copy);
         instance_reader.finish();
         object.instances.push_back(copy);
     }
@@ -317,6 +410,17 @@ Scene parse_scene(const std::string& text, const std::filesystem::path& file) {
     top.finish();  // a misspelled table name is reported before its absence is
 
     if (scene_section) read_scene_section(*scene_section, scene);
+    if (const auto problem = file_name_problem(scene.name)) {
+        const std::string hint = fmt::format("scene names become file names and case ids: use {}, e.g. name = \"spheres-2\"",
+                                             kFileNameRule);
+        if (scene_section && scene_section->has("name"))
+            throw scene_section->error("name", fmt::format("the scene name {} cannot be used: {}",
+                                                           printable_name(scene.name), *problem), hint);
+        throw ConfigError(file, scene_section ? scene_section->line() : 0,
+                          fmt::format("the scene has no name, and its file name {} cannot be used as one: {}",
+                                      printable_name(scene.name), *problem),
+                          "add [scene] with name = \"...\": " + hint);
+    }
     if (camera_section) read_camera(*camera_section, scene.camera);
 
     if (light_sections.empty())

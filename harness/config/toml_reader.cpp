@@ -7,6 +7,7 @@
 #include <cmath>
 #include <fstream>
 #include <iterator>
+#include <limits>
 
 namespace canopy {
 
@@ -130,6 +131,11 @@ double TomlReader::number_from(std::string_view key, const toml::node& node, con
     else throw wrong_type(key, node, expected, example);
     if (!std::isfinite(value))
         throw error_at(node, fmt::format("{} must be a finite number, got {}", key_in_context(key, context_), value),
+                       fmt::format("write it as: {} = {}", key, example));
+    // Scenes are computed in single precision: 1e39 would silently become infinity.
+    if (std::abs(value) > double(std::numeric_limits<float>::max()))
+        throw error_at(node, fmt::format("{} = {} does not fit a single-precision float (at most {:.3g} in magnitude)",
+                                         key_in_context(key, context_), value, std::numeric_limits<float>::max()),
                        fmt::format("write it as: {} = {}", key, example));
     return value;
 }

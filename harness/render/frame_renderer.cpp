@@ -56,51 +56,93 @@ FrameUniforms make_uniforms(const Scene& scene, uint32_t width, uint32_t height,
 
 }  // namespace
 
-std::optional<std::string> unsupported_reason(const GpuContext& gpu, const Scene& scene, const FramePlan& plan) {
+namespace {
+
+// Hints by cause: what the user can change so that the case runs.
+std::string scene_hint(const SourceLocation& where, const std::string& change) {
+    if (where.file.empty()) return change;
+    return where.line > 0 ? fmt::format("{} ({}:{})", change, where.file.string(), where.line)
+                          : fmt::format("{} ({})", change, where.file.string());
+}
+
+std::string device_hint() {
+    return "pick another device with --device (`canopy devices` lists them), or another format parameter of the "
+           "technique if it has one";
+}
+
+}  // namespace
+
+std::optional<Unsupported> check_supported(const GpuContext& gpu, const Scene& scene, const FramePlan& plan) {
+    const auto needs_area_light = [&] {
+        return Unsupported{fmt::format("scene '{}': this technique needs an area light (rect or sphere) with a size",
+                                       scene.name),
+                           scene_hint(scene.shadow_light()->where,
+                                      "give the shadow light a size: type = \"rect\" with size = [w, h], or "
+                                      "type = \"sphere\" with radius = r")};
+    };
+    const auto no_shadow_light = [&] {
+        return Unsupported{fmt::format("scene '{}' has no shadow-casting light (casts_shadows = false)", scene.name),
+                           scene_hint(scene.lights.front().where, "set casts_shadows = true on the scene's light")};
+    };
     if (scene.lights.size() != 1)
-        return fmt::format("scene '{}' has {} lights; the raster lit pass shades exactly one light", scene.name,
-                           scene.lights.size());
+        return Unsupported{fmt::format("scene '{}' has {} lights; the raster lit pass shades exactly one light",
+                                       scene.name, scene.lights.size()),
+                           scene_hint({scene.file, 0}, "keep one [[light]] in the scene")};
     if (plan.shadow_map) {
         const Light* light = scene.shadow_light();
-        if (!light) return fmt::format("scene '{}' has no shadow-casting light (casts_shadows = false)", scene.name);
-        if (plan.needs_area_light && !light->is_area())
-            return fmt::format("scene '{}': this technique needs an area light (rect or sphere) with a size", scene.name);
+        if (!light) return no_shadow_light();
+        if (plan.needs_area_light && !light->is_area()) return needs_area_light();
         const VkFormat format = vk_format(plan.shadow_map->format);
         const VkFormatFeatureFlags2 features = gpu.format_features(format);
         const char* name = to_string(plan.shadow_map->format);
         if (!(features & VK_FORMAT_FEATURE_2_DEPTH_STENCIL_ATTACHMENT_BIT) || !(features & VK_FORMAT_FEATURE_2_SAMPLED_IMAGE_BIT))
-            return fmt::format("device '{}' cannot render to and sample depth format {}", gpu.info().name, name);
+            return Unsupported{fmt::format("device '{}' cannot render to and sample depth format {}", gpu.info().name, name),
+                               device_hint()};
         if (plan.shadow_map->compare_sampler && !(features & VK_FORMAT_FEATURE_2_SAMPLED_IMAGE_DEPTH_COMPARISON_BIT))
-            return fmt::format("device '{}' has no depth-compare sampling for {} (needed by hardware PCF)",
-                               gpu.info().name, name);
+            return Unsupported{fmt::format("device '{}' has no depth-compare sampling for {} (needed by hardware PCF)",
+                                           gpu.info().name, name),
+                               device_hint()};
     }
     if (plan.moment_map) {
         const Light* light = scene.shadow_light();
-        if (!light) return fmt::format("scene '{}' has no shadow-casting light (casts_shadows = false)", scene.name);
+        if (!light) return no_shadow_light();
+        if (plan.needs_area_light && !light->is_area()) return needs_area_light();
         const char* name = to_string(plan.moment_map->format);
         const VkFormatFeatureFlags2 features = gpu.format_features(vk_format(plan.moment_map->format));
         if (!(features & VK_FORMAT_FEATURE_2_COLOR_ATTACHMENT_BIT))
-            return fmt::format("device '{}' cannot render to moment format {}", gpu.info().name, name);
+            return Unsupported{fmt::format("device '{}' cannot render to moment format {}", gpu.info().name, name),
+                               device_hint()};
         if (!(features & VK_FORMAT_FEATURE_2_SAMPLED_IMAGE_FILTER_LINEAR_BIT))
-            return fmt::format("device '{}' cannot filter moment format {} linearly", gpu.info().name, name);
+            return Unsupported{fmt::format("device '{}' cannot filter moment format {} linearly", gpu.info().name, name),
+                               device_hint()};
         if (!plan.moment_map->prefilter.empty()) {
             if (!(features & VK_FORMAT_FEATURE_2_STORAGE_IMAGE_BIT))
-                return fmt::format("device '{}' cannot write moment format {} from compute shaders", gpu.info().name, name);
+                return Unsupported{fmt::format("device '{}' cannot write moment format {} from compute shaders",
+                                               gpu.info().name, name),
+                                   device_hint()};
             if (!gpu.storage_write_without_format())
-                return fmt::format("device '{}' lacks shaderStorageImageWriteWithoutFormat (needed by prefilters)",
-                                   gpu.info().name);
+                return Unsupported{fmt::format("device '{}' lacks shaderStorageImageWriteWithoutFormat (needed by prefilters)",
+                                               gpu.info().name),
+                                   device_hint()};
         }
-        if (plan.needs_area_light && !light->is_area())
-            return fmt::format("scene '{}': this technique needs an area light (rect or sphere) with a size", scene.name);
     }
-    if (plan.screen_shadow && !plan.shadow_map) return std::string("a screen-shadow pass needs a depth shadow map");
+    if (plan.screen_shadow && !plan.shadow_map)
+        return Unsupported{"a screen-shadow pass needs a depth shadow map",
+                           "the technique's plan is inconsistent: a bug in the technique, please report it"};
     const bool compute = (plan.shadow_map && !plan.shadow_map->coarse_filters.empty()) ||
                          (plan.screen_shadow && !plan.screen_shadow->filters.empty());
     if (compute && !gpu.storage_write_without_format())
-        return fmt::format("device '{}' lacks shaderStorageImageWriteWithoutFormat (needed by filter passes)", gpu.info().name);
+        return Unsupported{fmt::format("device '{}' lacks shaderStorageImageWriteWithoutFormat (needed by filter passes)",
+                                       gpu.info().name),
+                           device_hint()};
     const VkFormatFeatureFlags2 color = gpu.format_features(LitPass::kColorFormat);
     if (!(color & VK_FORMAT_FEATURE_2_COLOR_ATTACHMENT_BIT))
-        return fmt::format("device '{}' cannot render to RGBA32F", gpu.info().name);
+        return Unsupported{fmt::format("device '{}' cannot render to RGBA32F", gpu.info().name), device_hint()};
+    return std::nullopt;
+}
+
+std::optional<std::string> unsupported_reason(const GpuContext& gpu, const Scene& scene, const FramePlan& plan) {
+    if (auto unsupported = check_supported(gpu, scene, plan)) return std::move(unsupported->reason);
     return std::nullopt;
 }
 

@@ -31,7 +31,14 @@ struct MemoryUse {
     uint64_t scene_bytes = 0;      // vertex and index buffers
 };
 
+// Why a plan cannot run on a device or scene, and what the user can change so that it can.
+struct Unsupported {
+    std::string reason;  // "scene 'spheres': this technique needs an area light ..."
+    std::string hint;    // fits the cause: the scene's light for a scene, --device for a device
+};
+
 // Why `plan` cannot run on this device or scene, or nullopt when it can.
+std::optional<Unsupported> check_supported(const GpuContext& gpu, const Scene& scene, const FramePlan& plan);
 std::optional<std::string> unsupported_reason(const GpuContext& gpu, const Scene& scene, const FramePlan& plan);
 
 class FrameRenderer {

@@ -27,6 +27,11 @@ GpuScene::GpuScene(const GpuContext& gpu, MemoryLedger& ledger, const Scene& sce
             triangles_ += mesh.triangle_count();
         }
     }
+    // A scene without triangles (no objects) draws nothing: Vulkan has no empty buffers.
+    if (all_indices.empty()) {
+        draws_.clear();
+        return;
+    }
     vertices_ = upload_buffer(gpu, ledger, "scene", all_vertices.data(), all_vertices.size() * sizeof(Vertex),
                               VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
     indices_ = upload_buffer(gpu, ledger, "scene", all_indices.data(), all_indices.size() * sizeof(uint32_t),
@@ -34,6 +39,7 @@ GpuScene::GpuScene(const GpuContext& gpu, MemoryLedger& ledger, const Scene& sce
 }
 
 void GpuScene::draw(VkCommandBuffer commands, VkPipelineLayout layout, bool casters_only) const {
+    if (draws_.empty()) return;
     VkBuffer vertex_buffer = vertices_.handle();
     VkDeviceSize offset = 0;
     vkCmdBindVertexBuffers(commands, 0, 1, &vertex_buffer, &offset);

@@ -26,7 +26,10 @@ std::array<glm::vec3, 8> corners(const Bounds& b) {
 
 }  // namespace
 
-LightView compute_light_view(const Light& light, const Bounds& bounds, uint32_t resolution) {
+LightView compute_light_view(const Light& light, const Bounds& scene_bounds, uint32_t resolution) {
+    // An empty scene casts no shadow; any small box keeps the fit below finite.
+    Bounds bounds = scene_bounds;
+    if (bounds.empty()) bounds.extend(glm::vec3(0.0f));
     LightView lv;
     const float radius = std::max(bounds.radius(), 1e-3f);
     const glm::vec3 center = bounds.center();

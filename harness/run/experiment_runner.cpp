@@ -90,17 +90,35 @@ PreparedExperiment prepare_experiment(const Experiment& experiment, const Techni
     prepared.experiment = &experiment;
     prepared.cases = expand_cases(experiment, registry);
     for (const Scene& scene : experiment.scenes) prepared.meshes.push_back(build_scene_meshes(scene));
+
+    // Every case that cannot run, so one attempt shows them all.
+    struct Refused {
+        const Case* c;
+        Unsupported why;
+    };
+    std::vector<Refused> refused;
     for (const Case& c : prepared.cases) {
         const Technique* technique = registry.find(c.technique);
-        const FramePlan plan = technique->plan(c.params);
-        if (auto reason = unsupported_reason(gpu, experiment.scenes[c.scene_index], plan)) {
-            const TechniqueEntry* entry = entry_for(experiment, c.technique);
-            throw ConfigError(experiment.file, entry ? entry->where.line : 0,
-                              fmt::format("case {} cannot run: {}", c.id, *reason),
-                              "change the technique's parameters or the scene, or pick another device with --device");
-        }
+        if (auto why = check_supported(gpu, experiment.scenes[c.scene_index], technique->plan(c.params)))
+            refused.push_back({&c, std::move(*why)});
     }
-    return prepared;
+    if (refused.empty()) return prepared;
+
+    constexpr size_t kListed = 20;  // more lines than this would scroll the cause off the screen
+    std::string message = refused.size() == 1
+                              ? "1 case cannot run:"
+                              : fmt::format("{} of {} cases cannot run:", refused.size(), prepared.cases.size());
+    std::vector<std::string> hints;
+    for (size_t i = 0; i < refused.size(); ++i) {
+        const Refused& r = refused[i];
+        if (i < kListed) message += fmt::format("\n    {}: {}", r.c->id, r.why.reason);
+        if (std::find(hints.begin(), hints.end(), r.why.hint) == hints.end()) hints.push_back(r.why.hint);
+    }
+    if (refused.size() > kListed) message += fmt::format("\n    ... and {} more", refused.size() - kListed);
+    std::string hint;
+    for (const std::string& h : hints) hint += (hint.empty() ? "" : "\n  hint: ") + h;
+    const TechniqueEntry* entry = entry_for(experiment, refused.front().c->technique);
+    throw ConfigError(experiment.file, entry ? entry->where.line : 0, message, hint);
 }
 
 CaseResult measure_case(const Case& c, const Scene& scene, const std::vector<TriangleMesh>& meshes,

@@ -1,10 +1,9 @@
 #include "scene/geometry.hpp"
 
 #include "core/error.hpp"
+#include "scene/isolated_mesh_import.hpp"
+#include "scene/scene_limits.hpp"
 
-#include <assimp/Importer.hpp>
-#include <assimp/postprocess.h>
-#include <assimp/scene.h>
 #include <fmt/format.h>
 
 #include <cmath>
@@ -128,8 +127,6 @@ TriangleMesh build_cylinder(float radius, float height, int segments) {
     return mesh;
 }
 
-bool is_finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-
 TriangleMesh load_mesh_file(const Object& object) {
     const std::filesystem::path& file = object.mesh_file;
     const auto error = [&](const std::string& message, const std::string& hint) {
@@ -137,62 +134,43 @@ TriangleMesh load_mesh_file(const Object& object) {
                            fmt::format("object '{}': {}", object.name, message), hint);
     };
     std::error_code ignored;
-    if (!std::filesystem::is_regular_file(file, ignored))
+    const auto status = std::filesystem::status(file, ignored);
+    if (!std::filesystem::exists(status))
         throw error(fmt::format("mesh file '{}' does not exist", file.string()),
                     "`file` is resolved relative to the scene config's folder");
-
-    Assimp::Importer importer;
-    const aiScene* scene = importer.ReadFile(file.string(), aiProcess_Triangulate | aiProcess_GenSmoothNormals |
-                                                                aiProcess_PreTransformVertices |
-                                                                aiProcess_JoinIdenticalVertices);
-    if (!scene || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !scene->mRootNode)
-        throw error(fmt::format("cannot read mesh file '{}': {}", file.string(), importer.GetErrorString()),
-                    "assimp reads glTF/GLB, OBJ, PLY, FBX, STL and more; check that the file is complete");
-
-    TriangleMesh merged;
-    for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
-        const aiMesh* mesh = scene->mMeshes[m];
-        if (!(mesh->mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) continue;  // points and lines
-        const uint32_t base = uint32_t(merged.vertices.size());
-        for (unsigned v = 0; v < mesh->mNumVertices; ++v) {
-            const aiVector3D& p = mesh->mVertices[v];
-            glm::vec3 normal(0.0f);
-            if (mesh->HasNormals()) normal = glm::vec3(mesh->mNormals[v].x, mesh->mNormals[v].y, mesh->mNormals[v].z);
-            const glm::vec3 position(p.x, p.y, p.z);
-            if (!is_finite(position))
-                throw error(fmt::format("mesh file '{}' has a vertex with a non-finite position", file.string()),
-                            "repair or re-export the model");
-            merged.vertices.push_back({position, normal});
-        }
-        for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
-            const aiFace& face = mesh->mFaces[f];
-            if (face.mNumIndices != 3) continue;
-            add_triangle(merged, base + face.mIndices[0], base + face.mIndices[1], base + face.mIndices[2]);
-        }
+    if (std::filesystem::is_directory(status))
+        throw error(fmt::format("mesh file '{}' is a directory, not a model file", file.string()),
+                    "name the model file inside it");
+    if (!std::filesystem::is_regular_file(status))
+        throw error(fmt::format("mesh file '{}' is not a regular file", file.string()),
+                    "name a model file (glTF/GLB, OBJ, PLY, ...), not a device, pipe or socket");
+    try {
+        return import_mesh_file_isolated(file);
+    } catch (const MeshFileError& failure) {
+        throw error(failure.what(), failure.hint());
     }
-    if (merged.triangle_count() == 0)
-        throw error(fmt::format("mesh file '{}' contains no triangles", file.string()),
-                    "point clouds and line sets cannot be rendered; use a model with faces");
+}
 
-    // Some files carry zero or non-finite normals; fall back to the area-weighted face normals.
-    std::vector<glm::vec3> face_normal_sum(merged.vertices.size(), glm::vec3(0.0f));
-    for (size_t t = 0; t < merged.indices.size(); t += 3) {
-        const uint32_t a = merged.indices[t], b = merged.indices[t + 1], c = merged.indices[t + 2];
-        const glm::vec3 n = glm::cross(merged.vertices[b].position - merged.vertices[a].position,
-                                       merged.vertices[c].position - merged.vertices[a].position);
-        for (uint32_t i : {a, b, c}) face_normal_sum[i] += n;
-    }
-    for (size_t i = 0; i < merged.vertices.size(); ++i) {
-        glm::vec3& normal = merged.vertices[i].normal;
-        const float length = glm::length(normal);
-        if (std::isfinite(length) && length > 1e-12f) {
-            normal /= length;
-        } else {
-            const float fallback_length = glm::length(face_normal_sum[i]);
-            normal = fallback_length > 0.0f ? face_normal_sum[i] / fallback_length : glm::vec3(0, 1, 0);
+// Every world-space vertex of every instance inside the coordinate range both renderers
+// compute precisely (scene_limits.hpp), checked in double so that nothing overflows on the way.
+void require_in_scene(const Object& object, const TriangleMesh& mesh) {
+    const double bound = limits::kMaxCoordinate;
+    for (size_t instance = 0; instance < object.instances.size(); ++instance) {
+        const glm::dmat4 matrix(object.instances[instance].matrix());
+        for (const Vertex& vertex : mesh.vertices) {
+            const glm::dvec3 world(matrix * glm::dvec4(glm::dvec3(vertex.position), 1.0));
+            if (std::abs(world.x) <= bound && std::abs(world.y) <= bound && std::abs(world.z) <= bound) continue;
+            throw ConfigError(object.where.file, object.where.line,
+                              fmt::format("object '{}'{} reaches ({:.3g}, {:.3g}, {:.3g}), outside the scene's coordinate "
+                                          "range [-{:g}, {:g}]",
+                                          object.name,
+                                          object.instances.size() > 1 ? fmt::format(" (instance {})", instance + 1) : "",
+                                          world.x, world.y, world.z, bound, bound),
+                              "canopy computes in single precision: keep every coordinate within 1e6 scene units "
+                              "(configs/README.md, \"Limits\"); check the object's translate and scale, and the "
+                              "model's units");
         }
     }
-    return merged;
 }
 
 }  // namespace
@@ -211,7 +189,10 @@ TriangleMesh build_object_mesh(const Object& object) {
 std::vector<TriangleMesh> build_scene_meshes(const Scene& scene) {
     std::vector<TriangleMesh> meshes;
     meshes.reserve(scene.objects.size());
-    for (const Object& object : scene.objects) meshes.push_back(build_object_mesh(object));
+    for (const Object& object : scene.objects) {
+        meshes.push_back(build_object_mesh(object));
+        require_in_scene(object, meshes.back());
+    }
     return meshes;
 }
 

@@ -31,10 +31,12 @@ struct Bounds {
 };
 
 // Builds the local-space mesh of one object. Throws ConfigError (naming object.where) when a
-// mesh file cannot be read or holds no triangles.
+// mesh file cannot be read, holds no triangles or crashes assimp (files are read in a child
+// process: scene/isolated_mesh_import.hpp).
 TriangleMesh build_object_mesh(const Object& object);
 
-// All objects' meshes, in scene.objects order.
+// All objects' meshes, in scene.objects order. Throws ConfigError (naming the object) when an
+// instance places a vertex outside the scene's coordinate range (scene/scene_limits.hpp).
 std::vector<TriangleMesh> build_scene_meshes(const Scene& scene);
 
 // World-space bounds of every instance of every object.

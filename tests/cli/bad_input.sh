@@ -1,0 +1,129 @@
+#!/usr/bin/env bash
+# Inputs that crashed canopy, wrote outside its run folder or failed late (issue 7, section 4):
+# each must exit 2 with file:line and nothing written, or (an empty scene) complete normally.
+# Usage: bad_input.sh CANOPY DATA_DIR CASE
+set -uo pipefail
+canopy=$1 data=$2 case=$3
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+fail() { echo "FAIL: $*"; exit 1; }
+mkdir -p "$work/scenes" "$work/experiments"
+
+# scene SCENE_NAME LIGHT_LINES OBJECT_LINES: writes scenes/SCENE_NAME.toml.
+scene() {
+  printf '[camera]\nposition = [0, 4, 6]\n\n[[light]]\n%b\n\n[[object]]\nshape = "plane"\n\n%b\n' "$2" "$3" >"$work/scenes/$1.toml"
+}
+# experiment NAME SCENE [TECHNIQUE_LINES]: writes experiments/NAME.toml over ../scenes/SCENE.toml.
+experiment() {
+  printf '[experiment]\nscenes = ["../scenes/%s.toml"]\nresolutions = [[32, 24]]\nwarmup = 0\nrepetitions = 1\n\n%b\n' \
+    "$2" "${3:-[[technique]]\nname = \"shadow.hard\"}" >"$work/experiments/$1.toml"
+}
+# expect_refused EXPERIMENT REGEX: exit 2, the message matches, and no output folder.
+expect_refused() {
+  "$canopy" run "$work/experiments/$1.toml" --out "$work/out" --no-cache >"$work/stdout" 2>"$work/stderr"
+  local rc=$?
+  cat "$work/stderr"
+  [ $rc -eq 2 ] || fail "$1: exit code $rc, expected 2"
+  grep -Eq -- "$2" "$work/stderr" || fail "$1: message does not match '$2'"
+  [ ! -e "$work/out" ] || fail "$1: an output folder was created for a bad input"
+}
+directional='type = "directional"\nintensity = 2'
+box='[[object]]\nshape = "box"\ntranslate = [0, 1, 0]'
+
+case $case in
+  empty_scene)
+    # Before: segfault on a zero-size vertex buffer, after results.json was written.
+    printf '[scene]\nname = "empty"\nbackground = 0.5\n\n[[light]]\ntype = "directional"\n' >"$work/scenes/empty.toml"
+    experiment empty empty
+    "$canopy" run "$work/experiments/empty.toml" --out "$work/out" --no-cache --no-progress >"$work/stdout" 2>"$work/stderr" \
+      || fail "run of an empty scene failed: $(cat "$work/stderr")"
+    python3 -c "import json,sys; j=json.load(open('$work/out/results.json')); sys.exit(0 if j['status']=='complete' and len(j['cases'])==1 else 1)" \
+      || fail "results.json is not a complete record of one case"
+    [ -s "$work/out/images/empty_32x24_shadow.hard.png" ] || fail "missing the case image"
+    [ -s "$work/out/images/reference_empty_32x24.png" ] || fail "missing the reference image" ;;
+  bad_ply)
+    # Before: heap corruption inside assimp (free(): invalid next size).
+    scene ply "$directional" "[[object]]\nshape = \"mesh\"\nfile = \"$data/bad_input/meshes/face_index_out_of_range.ply\""
+    experiment ply ply
+    expect_refused ply 'scenes/ply\.toml:11: error: .*face_index_out_of_range\.ply.*out of range' ;;
+  assimp_crash)
+    # A crash inside assimp (simulated by the test hook) is a config error, not a crash of canopy.
+    scene crash "$directional" '[[object]]\nshape = "mesh"\nfile = "/usr/share/assimp/models/OBJ/box.obj"'
+    experiment crash crash
+    CANOPY_TEST_MESH_IMPORT_SIGNAL=11 expect_refused crash 'scenes/crash\.toml:11: error: .*assimp crashed while reading .*box\.obj.*signal 11' ;;
+  scene_name)
+    # Before: the reference images were written three folders above the run folder.
+    printf '[scene]\nname = "../../../x"\n\n[[light]]\ntype = "directional"\n\n[[object]]\nshape = "box"\n' >"$work/scenes/escape.toml"
+    experiment escape escape
+    expect_refused escape 'scenes/escape\.toml:2: error: the scene name .*\.\.' 
+    [ -z "$(find "$work" -name 'x_*')" ] || fail "files named after the scene were written"
+    "$canopy" reference "$work/scenes/escape.toml" --out "$work/ref/a/b" --width 8 --height 8 --no-cache 2>"$work/stderr"
+    [ $? -eq 2 ] || fail "canopy reference accepted the name"
+    [ ! -e "$work/ref" ] || fail "canopy reference wrote something"
+    # A name in another script is fine and keeps readable file names.
+    printf '[scene]\nname = "forêt_森"\n\n[[light]]\ntype = "directional"\n\n[[object]]\nshape = "box"\n' >"$work/scenes/forest.toml"
+    "$canopy" reference "$work/scenes/forest.toml" --out "$work/ref" --width 8 --height 8 --light-samples 1 --pixel-samples 1 --no-cache >/dev/null \
+      || fail "canopy reference refused a unicode name"
+    [ -s "$work/ref/forêt_森_8x8.png" ] || fail "the unicode name's image is missing" ;;
+  mesh_dir)
+    # Before: "not found".
+    scene folder "$directional" "[[object]]\nshape = \"mesh\"\nfile = \"$data/bad_input/meshes/a_folder.obj\""
+    experiment folder folder
+    expect_refused folder 'scenes/folder\.toml:13: error: .*a_folder\.obj.* is a directory' ;;
+  float_limits)
+    # Before: failed at reference time after files were written, or a PSNR of -696 dB.
+    scene huge 'type = "directional"\nintensity = 1e39' "$box"
+    experiment huge huge
+    expect_refused huge 'scenes/huge\.toml:6: error: .*intensity.*single-precision'
+    scene bright 'type = "directional"\nintensity = 3e38' "$box"
+    experiment bright bright
+    expect_refused bright 'scenes/bright\.toml:6: error: .*intensity.* must lie in \[0, 1000000\]'
+    scene tiny "$directional" "$box\nscale = 1e-30"
+    experiment tiny tiny
+    expect_refused tiny 'scenes/tiny\.toml:14: error: .*scale.*\[0\.001, 1000\]'
+    scene far "$directional" '[[object]]\nshape = "box"\ntranslate = [1e30, 0, 0]'
+    experiment far far
+    expect_refused far 'scenes/far\.toml:13: error: .*translate.*coordinate range' ;;
+  refused_cases)
+    # Before: only the first refused case, and "pick another device" for a missing area light.
+    scene point "$directional" "$box"
+    experiment point point '[[technique]]\nname = "shadow.pcss"\n[technique.params]\nkernel = [3, 5, 7]\n\n[[technique]]\nname = "shadow.ssss"'
+    expect_refused point 'experiments/point\.toml:7: error: 4 of 4 cases cannot run'
+    [ "$(grep -c 'needs an area light' "$work/stderr")" -eq 4 ] || fail "not every refused case is listed"
+    grep -q 'hint: give the shadow light a size' "$work/stderr" || fail "the hint does not fit a missing area light"
+    ! grep -q -- '--device' "$work/stderr" || fail "the hint suggests another device for a scene problem" ;;
+  bench_ranges)
+    # Before: segfault, out of device memory, a table of zeros with R² 1.000.
+    for args in "scaling --width 0" "scaling --width -5" "scaling --height 9000" "scaling --measured 0" \
+                "scaling --measured -1" "reference --width 0" "reference --light-samples 0" "reference --pixel-samples 2000"; do
+      # shellcheck disable=SC2086
+      "$canopy" bench $args >"$work/stdout" 2>"$work/stderr"
+      rc=$?
+      cat "$work/stderr"
+      [ $rc -eq 2 ] || fail "bench $args: exit code $rc, expected 2"
+      grep -Eq 'not in range [0-9]+ to [0-9]+' "$work/stderr" || fail "bench $args: the message gives no valid range"
+    done ;;
+  bench_default_scene)
+    # Before: an absolute path of the build machine's checkout was compiled into the binary.
+    "$canopy" bench reference --help >"$work/help" || fail "bench reference --help failed"
+    grep -q "configs/scenes/spheres.toml in the current directory" "$work/help" || fail "--help does not say where the default scene is looked for"
+    # From any folder, the scene of the checkout the binary was built in (build/canopy -> ../configs).
+    (cd "$work" && "$canopy" bench reference --width 8 --height 8 --light-samples 1 --pixel-samples 1 >"$work/stdout" 2>"$work/stderr") \
+      || fail "bench reference did not find the default scene: $(cat "$work/stderr")"
+    grep -q "on spheres at 8x8" "$work/stderr" || fail "bench reference did not use spheres.toml"
+    # A binary outside a checkout, run outside a checkout: the scene is required.
+    mkdir -p "$work/elsewhere"
+    cp "$canopy" "$work/elsewhere/canopy"
+    (cd "$work/elsewhere" && ./canopy bench reference >"$work/stdout" 2>"$work/stderr"); rc=$?
+    cat "$work/stderr"
+    [ $rc -eq 2 ] || fail "exit code $rc without a scene, expected 2"
+    grep -q "no scene given" "$work/stderr" || fail "the message does not say a scene is needed"
+    # The current directory's configs/ comes first.
+    mkdir -p "$work/elsewhere/configs/scenes"
+    printf '[scene]\nname = "local"\n[[light]]\ntype = "directional"\n[[object]]\nshape = "box"\n' >"$work/elsewhere/configs/scenes/spheres.toml"
+    (cd "$work/elsewhere" && ./canopy bench reference --width 8 --height 8 --light-samples 1 --pixel-samples 1 >/dev/null 2>"$work/stderr") \
+      || fail "bench reference failed with configs/ in the current directory"
+    grep -q "on local at 8x8" "$work/stderr" || fail "the current directory's configs/ was not used" ;;
+  *) fail "unknown case $case" ;;
+esac
+echo "ok: $case"

@@ -1,0 +1,132 @@
+// Scenes the raster path used to crash on, and experiments whose cases cannot run: an empty
+// scene renders its background, and every refused case is listed with a hint that fits why.
+#include "config/experiment_config.hpp"
+#include "config/scene_config.hpp"
+#include "core/registry.hpp"
+#include "render/frame_renderer.hpp"
+#include "run/experiment_runner.hpp"
+#include "support/test_gpu.hpp"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <fstream>
+#include <functional>
+#include <optional>
+#include <random>
+
+using namespace canopy;
+
+namespace {
+
+struct TempFolder {
+    std::filesystem::path path;
+    TempFolder() {
+        path = std::filesystem::temp_directory_path() / ("canopy_test_refusals_" + std::to_string(std::random_device()()));
+        std::filesystem::create_directories(path);
+    }
+    ~TempFolder() {
+        std::error_code ignored;
+        std::filesystem::remove_all(path, ignored);
+    }
+    std::filesystem::path write(const std::string& name, const std::string& text) const {
+        std::ofstream(path / name, std::ios::binary) << text;
+        return path / name;
+    }
+};
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+size_t count(const std::string& text, const std::string& part) {
+    size_t n = 0;
+    for (size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + part.size())) ++n;
+    return n;
+}
+
+std::optional<ConfigError> prepare_error(const Experiment& experiment) {
+    try {
+        prepare_experiment(experiment, TechniqueRegistry::instance(), test::gpu());
+    } catch (const ConfigError& error) {
+        return error;
+    }
+    return std::nullopt;
+}
+
+}  // namespace
+
+TEST_CASE("a scene with no objects renders its background with every kind of shadow map") {
+    // Before: a segfault on the zero-size vertex buffer.
+    const Scene scene = parse_scene("[scene]\nbackground = [0.25, 0.5, 1]\n[[light]]\ntype = \"sphere\"\n", "empty.toml");
+    for (const char* technique : {"shadow.hard", "shadow.pcss", "shadow.vsm", "shadow.ssss"}) {
+        CAPTURE(technique);
+        const Image image = test::render_technique(scene, technique, {}, 32, 24);
+        REQUIRE(image.width == 32);
+        bool background = true;
+        for (int y = 0; y < image.height; ++y)
+            for (int x = 0; x < image.width; ++x) {
+                const float* p = &image.pixels[(size_t(y) * size_t(image.width) + size_t(x)) * 4];
+                background = background && p[0] == 0.25f && p[1] == 0.5f && p[2] == 1.0f;
+            }
+        CHECK(background);
+    }
+}
+
+TEST_CASE("every refused case is listed, one line each, with a hint that fits the cause") {
+    TempFolder folder;
+    folder.write("point.toml", "[scene]\nname = \"point\"\n[[light]]\ntype = \"spot\"\n[[object]]\nshape = \"box\"\n");
+    folder.write("dark.toml",
+                 "[scene]\nname = \"dark\"\n[[light]]\ntype = \"sphere\"\ncasts_shadows = false\n[[object]]\nshape = \"box\"\n");
+    folder.write("area.toml", "[scene]\nname = \"area\"\n[[light]]\ntype = \"sphere\"\n[[object]]\nshape = \"box\"\n");
+    const std::filesystem::path file = folder.write(
+        "e.toml", "[experiment]\nscenes = [\"area.toml\", \"point.toml\", \"dark.toml\"]\nresolutions = [[16, 16], [32, 32]]\n"
+                  "[[technique]]\nname = \"shadow.hard\"\n"
+                  "[[technique]]\nname = \"shadow.pcss\"\n[technique.params]\nkernel = [3, 5]\n");
+    const Experiment experiment = load_experiment(file, TechniqueRegistry::instance());
+    const auto error = prepare_error(experiment);
+    REQUIRE(error);
+    const std::string message = error->what(), hint = error->hint();
+    INFO(error->formatted());
+    // point: 2 resolutions x 2 PCSS kernels need an area light; dark: all 6 cases lack a shadow light.
+    CHECK(contains(message, "10 of 18 cases cannot run"));
+    CHECK(count(message, "\n    ") == 10);
+    CHECK(count(message, "needs an area light") == 4);
+    CHECK(count(message, "no shadow-casting light") == 6);
+    CHECK(contains(message, "point_32x32_shadow.pcss_kernel-5"));
+    CHECK(!contains(message, "area_"));
+    // One hint per cause, each pointing at the light to change, none at the device.
+    CHECK(contains(hint, "give the shadow light a size"));
+    CHECK(contains(hint, "point.toml:3"));
+    CHECK(contains(hint, "casts_shadows = true"));
+    CHECK(contains(hint, "dark.toml:3"));
+    CHECK(!contains(hint, "--device"));
+    CHECK(error->line() == 6);  // the first refused case's [[technique]] (PCSS on point.toml)
+}
+
+TEST_CASE("a long list of refused cases is capped") {
+    TempFolder folder;
+    folder.write("point.toml", "[scene]\nname = \"point\"\n[[light]]\ntype = \"directional\"\n[[object]]\nshape = \"box\"\n");
+    const std::filesystem::path file = folder.write(
+        "e.toml", "[experiment]\nscenes = [\"point.toml\"]\n"
+                  "[[technique]]\nname = \"shadow.pcss\"\n[technique.params]\nkernel = [1, 3, 5, 7, 9, 11, 13, 15]\n"
+                  "blocker_search = [1, 2, 3]\n");
+    const Experiment experiment = load_experiment(file, TechniqueRegistry::instance());
+    const auto error = prepare_error(experiment);
+    REQUIRE(error);
+    INFO(error->formatted());
+    CHECK(contains(error->what(), "24 of 24 cases cannot run"));
+    CHECK(count(error->what(), "needs an area light") == 20);
+    CHECK(contains(error->what(), "... and 4 more"));
+}
+
+TEST_CASE("check_supported: a missing area light and a missing shadow light have scene hints") {
+    const Technique& pcss = *TechniqueRegistry::instance().find("shadow.pcss");
+    const FramePlan plan = pcss.plan(ParamSet::resolve(pcss.params(), {}, {}, {}, "shadow.pcss"));
+    Scene scene = parse_scene("[[light]]\ntype = \"directional\"\n", "s.toml");
+    auto unsupported = check_supported(test::gpu(), scene, plan);
+    REQUIRE(unsupported);
+    CHECK(contains(unsupported->hint, "rect"));
+    CHECK(contains(unsupported->hint, "s.toml:1"));
+    CHECK(unsupported_reason(test::gpu(), scene, plan) == unsupported->reason);
+    scene.lights[0].type = LightType::sphere;
+    CHECK(!check_supported(test::gpu(), scene, plan));
+}
