@@ -224,7 +224,7 @@ case $case in
   list_and_version)
     "$canopy" --version >"$work/version" || fail "--version failed"
     cat "$work/version"
-    grep -Eq "^canopy [0-9]+\.[0-9]+\.[0-9]+ \((Release|Debug|RelWithDebInfo|MinSizeRel|)[ ]?build, commit ([0-9a-f]{40}|unknown)\)$" \
+    grep -Eq "^canopy [0-9]+\.[0-9]+\.[0-9]+ \(([A-Za-z]+ )?build, commit ([0-9a-f]{40}|unknown)\)$" \
       "$work/version" || fail "--version prints no version"
     "$canopy" run --help >"$work/help" || fail "run --help failed"
     grep -q -- "--resume" "$work/help" && grep -q -- "--force" "$work/help" || fail "run --help lacks --resume or --force"

@@ -76,7 +76,8 @@ CANOPY_FN ivec2 ssss_coarse_texel(ivec2 shadow_texel, int block, ivec2 coarse_si
 // sum of the weights used. Offsets are clamped to +-1e6 pixels (beyond any image; fetches clamp to
 // the edge), so a huge sigma (eq 6.2 near d_blocker = 0) cannot overflow the int.
 CANOPY_FN int ssss_tap_offset(int i, int taps, float sigma) {
-    float spacing = taps > 1 ? max(6.0f * sigma / float(taps - 1), 1.0f) : 0.0f;
+    // Spacing capped (an infinite sigma would make the centre tap 0 * inf = NaN).
+    float spacing = taps > 1 ? clamp(6.0f * sigma / float(taps - 1), 1.0f, 2e6f) : 0.0f;
     float offset = clamp((float(i) - 0.5f * float(taps - 1)) * spacing, -1e6f, 1e6f);
     return int(sign(offset) * floor(abs(offset) + 0.5f));
 }
