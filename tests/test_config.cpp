@@ -6,17 +6,18 @@
 #include "core/error.hpp"
 #include "core/param.hpp"
 #include "core/registry.hpp"
+#include "support/config_error_of.hpp"
+#include "support/temp_folder.hpp"
+#include "support/text_search.hpp"
 
 #include <doctest/doctest.h>
 
-#include <atomic>
 #include <cmath>
-#include <fstream>
-#include <functional>
 #include <optional>
-#include <random>
 
 using namespace canopy;
+using test::config_error_of;
+using test::contains;
 
 namespace {
 
@@ -40,40 +41,6 @@ public:
 };
 
 const RegisterTechnique<FakeTechnique> registered_fake;
-
-// Runs `action` and returns the ConfigError it throws (or nothing if it did not throw one).
-std::optional<ConfigError> config_error_of(const std::function<void()>& action) {
-    try {
-        action();
-    } catch (const ConfigError& error) {
-        return error;
-    }
-    return std::nullopt;
-}
-
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
-
-// A fresh folder for tests that write files; removed when the test ends.
-struct TempFolder {
-    std::filesystem::path path;
-    TempFolder() {
-        static std::atomic<int> counter{0};
-        std::random_device random;
-        path = std::filesystem::temp_directory_path() /
-               ("canopy_test_config_" + std::to_string(random()) + "_" + std::to_string(counter++));
-        std::filesystem::create_directories(path);
-    }
-    ~TempFolder() {
-        std::error_code ignored;
-        std::filesystem::remove_all(path, ignored);
-    }
-    std::filesystem::path write(const std::string& name, const std::string& text) const {
-        const std::filesystem::path file = path / name;
-        std::filesystem::create_directories(file.parent_path());
-        std::ofstream(file, std::ios::binary) << text;
-        return file;
-    }
-};
 
 const std::vector<ParamSpec> kFakeSpecs = FakeTechnique().params();
 
@@ -453,7 +420,7 @@ TEST_CASE("errors in a scene used by an experiment carry the scene file's locati
 }
 
 TEST_CASE("experiment value checks") {
-    TempFolder folder;
+    test::TempFolder folder;
     folder.write("scene.toml", "[[light]]\ntype = \"directional\"\n");
     auto error_line = [&](const std::string& text) {
         const std::filesystem::path file = folder.write("experiment.toml", text);
@@ -479,7 +446,7 @@ TEST_CASE("experiment value checks") {
 }
 
 TEST_CASE("identical cases get distinct ids") {
-    TempFolder folder;
+    test::TempFolder folder;
     folder.write("room.toml", "[scene]\nname = \"room\"\n[[light]]\ntype = \"directional\"\n");
     const std::filesystem::path file = folder.write(
         "experiment.toml",
@@ -498,7 +465,7 @@ TEST_CASE("identical cases get distinct ids") {
 }
 
 TEST_CASE("case ids keep names in any script readable") {
-    TempFolder folder;
+    test::TempFolder folder;
     folder.write("room.toml", "[scene]\nname = \"forêt_森\"\n[[light]]\ntype = \"directional\"\n");
     const std::filesystem::path file = folder.write(
         "experiment.toml", "[experiment]\nscenes = [\"room.toml\"]\n[[technique]]\nname = \"test.fake\"\n");
@@ -509,7 +476,7 @@ TEST_CASE("case ids keep names in any script readable") {
 }
 
 TEST_CASE("the config hash changes when a scene file changes") {
-    TempFolder folder;
+    test::TempFolder folder;
     const std::string scene_text = "[[light]]\ntype = \"directional\"\n";
     folder.write("scenes/room.toml", scene_text);
     const std::filesystem::path file = folder.write(

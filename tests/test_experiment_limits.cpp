@@ -3,11 +3,9 @@
 #include "config/experiment_config.hpp"
 #include "core/error.hpp"
 #include "core/registry.hpp"
+#include "support/temp_folder.hpp"
 
 #include <doctest/doctest.h>
-
-#include <fstream>
-#include <random>
 
 using namespace canopy;
 
@@ -22,16 +20,15 @@ std::string values(int count) {
 }  // namespace
 
 TEST_CASE("a sweep of more than 100000 cases is refused at its [[technique]]") {
-    const std::filesystem::path folder =
-        std::filesystem::temp_directory_path() / ("canopy_test_sweep_" + std::to_string(std::random_device()()));
-    std::filesystem::create_directories(folder);
-    std::ofstream(folder / "scene.toml") << "[[light]]\ntype = \"directional\"\n";
+    const test::TempFolder folder("canopy-test-sweep");
+    folder.write("scene.toml", "[[light]]\ntype = \"directional\"\n");
     const auto load = [&](const std::string& params) {
-        std::ofstream(folder / "e.toml") << "[experiment]\nscenes = [\"scene.toml\"]\nresolutions = [[8, 8], [16, 16]]\n"
-                                            "[[technique]]\nname = \"shadow.hard\"\n"
-                                            "[[technique]]\nname = \"shadow.pcf\"\n[technique.params]\n"
-                                         << params;
-        return load_experiment(folder / "e.toml", TechniqueRegistry::instance());
+        const std::filesystem::path file =
+            folder.write("e.toml", "[experiment]\nscenes = [\"scene.toml\"]\nresolutions = [[8, 8], [16, 16]]\n"
+                                   "[[technique]]\nname = \"shadow.hard\"\n"
+                                   "[[technique]]\nname = \"shadow.pcf\"\n[technique.params]\n" +
+                                       params);
+        return load_experiment(file, TechniqueRegistry::instance());
     };
     // 2 resolutions x (1 + 1000 x 50) = 100002 cases.
     try {
@@ -53,5 +50,4 @@ TEST_CASE("a sweep of more than 100000 cases is refused at its [[technique]]") {
         return list;
     }() + "]\n");
     CHECK(experiment.techniques.size() == 2);
-    std::filesystem::remove_all(folder);
 }

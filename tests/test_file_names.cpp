@@ -6,44 +6,17 @@
 #include "config/scene_config.hpp"
 #include "core/error.hpp"
 #include "core/registry.hpp"
+#include "support/config_error_of.hpp"
+#include "support/temp_folder.hpp"
+#include "support/text_search.hpp"
 
 #include <doctest/doctest.h>
 
-#include <fstream>
-#include <functional>
-#include <optional>
-#include <random>
-
 using namespace canopy;
+using test::config_error_of;
+using test::contains;
 
 namespace {
-
-std::optional<ConfigError> error_of(const std::function<void()>& action) {
-    try {
-        action();
-    } catch (const ConfigError& error) {
-        return error;
-    }
-    return std::nullopt;
-}
-
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
-
-struct TempFolder {
-    std::filesystem::path path;
-    TempFolder() {
-        path = std::filesystem::temp_directory_path() / ("canopy_test_names_" + std::to_string(std::random_device()()));
-        std::filesystem::create_directories(path);
-    }
-    ~TempFolder() {
-        std::error_code ignored;
-        std::filesystem::remove_all(path, ignored);
-    }
-    std::filesystem::path write(const std::string& name, const std::string& text) const {
-        std::ofstream(path / name, std::ios::binary) << text;
-        return path / name;
-    }
-};
 
 const std::string kLight = "[[light]]\ntype = \"directional\"\n";
 
@@ -78,7 +51,7 @@ TEST_CASE("printable_name escapes control characters for messages") {
 
 TEST_CASE("a scene name such as ../../../x is refused at its line") {
     // Before: the reference's images were written outside the run folder.
-    const auto error = error_of([] { parse_scene("[scene]\nname = \"../../../x\"\n" + kLight, "s.toml"); });
+    const auto error = config_error_of([] { parse_scene("[scene]\nname = \"../../../x\"\n" + kLight, "s.toml"); });
     REQUIRE(error);
     INFO(error->formatted());
     CHECK(error->line() == 2);
@@ -87,7 +60,7 @@ TEST_CASE("a scene name such as ../../../x is refused at its line") {
 }
 
 TEST_CASE("a scene without a name whose file name cannot be one is told to add a name") {
-    const auto error = error_of([] { parse_scene(kLight, "my scene.toml"); });
+    const auto error = config_error_of([] { parse_scene(kLight, "my scene.toml"); });
     REQUIRE(error);
     INFO(error->formatted());
     CHECK(contains(error->what(), "'my scene'"));
@@ -95,11 +68,11 @@ TEST_CASE("a scene without a name whose file name cannot be one is told to add a
 }
 
 TEST_CASE("experiment names and scene variant names follow the same rule") {
-    TempFolder folder;
+    test::TempFolder folder;
     folder.write("scene.toml", "[scene]\nname = \"room\"\n" + kLight);
     const std::string technique = "\n[[technique]]\nname = \"shadow.hard\"\n";
     const auto line_of = [&](const std::string& text) {
-        const auto error = error_of([&] { load_experiment(folder.write("e.toml", text), TechniqueRegistry::instance()); });
+        const auto error = config_error_of([&] { load_experiment(folder.write("e.toml", text), TechniqueRegistry::instance()); });
         if (error) INFO(error->formatted());
         return error ? error->line() : -1;
     };
@@ -108,7 +81,7 @@ TEST_CASE("experiment names and scene variant names follow the same rule") {
     CHECK(line_of("[experiment]\nname = \"ok\"\nscenes = [{ file = \"scene.toml\", name = \"forêt\" }]\n" + technique) == -1);
 
     // A file name that cannot be an experiment name, with no name key.
-    const auto error = error_of([&] {
+    const auto error = config_error_of([&] {
         load_experiment(folder.write(".hidden.toml", "[experiment]\nscenes = [\"scene.toml\"]\n" + technique),
                         TechniqueRegistry::instance());
     });
@@ -119,7 +92,7 @@ TEST_CASE("experiment names and scene variant names follow the same rule") {
 TEST_CASE("case ids stay short enough for file names, and distinct") {
     // A 100-byte scene name and every parameter of a technique spelled out: the id would exceed
     // the 255 bytes of a file name, and "<id>.error.png" could not be written.
-    TempFolder folder;
+    test::TempFolder folder;
     folder.write("scene.toml", "[scene]\nname = \"" + std::string(kMaxNameBytes, 's') + "\"\n" + kLight);
     const TechniqueRegistry& registry = TechniqueRegistry::instance();
     for (const Technique* technique : registry.all()) {

@@ -4,6 +4,8 @@
 #include "scene/geometry.hpp"
 #include "scene/isolated_mesh_import.hpp"
 #include "scene/mesh_import.hpp"
+#include "support/config_error_of.hpp"
+#include "support/text_search.hpp"
 
 #include <doctest/doctest.h>
 
@@ -14,6 +16,7 @@
 #include <string>
 
 using namespace canopy;
+using test::contains;
 
 namespace {
 
@@ -30,15 +33,8 @@ Object mesh_object(const std::filesystem::path& file) {
 }
 
 std::optional<ConfigError> load_error(const std::filesystem::path& file) {
-    try {
-        build_object_mesh(mesh_object(file));
-    } catch (const ConfigError& error) {
-        return error;
-    }
-    return std::nullopt;
+    return test::config_error_of([&] { build_object_mesh(mesh_object(file)); });
 }
-
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 // Sets an environment variable for one scope.
 struct ScopedEnvironment {

@@ -2,6 +2,8 @@
 #include "config/experiment_config.hpp"
 #include "report/image_files.hpp"
 #include "run/experiment_runner.hpp"
+#include "support/temp_folder.hpp"
+#include "support/test_gpu.hpp"
 
 #include <doctest/doctest.h>
 #include <nlohmann/json.hpp>
@@ -27,12 +29,12 @@ std::string read_text(const fs::path& path) {
 TEST_CASE("canopy run writes JSON, CSV, Markdown, EXR and PNG for every case") {
     const TechniqueRegistry& registry = TechniqueRegistry::instance();
     const Experiment experiment = load_experiment(std::string(CANOPY_TEST_DATA) + "/experiments/tiny.toml", registry);
-    GpuContext gpu;
+    const GpuContext& gpu = test::gpu();
     const PreparedExperiment prepared = prepare_experiment(experiment, registry, gpu);
     REQUIRE(prepared.cases.size() == 3);
 
-    const fs::path out = fs::temp_directory_path() / "canopy-test-outputs";
-    fs::remove_all(out);
+    const test::TempFolder folder("canopy-test-outputs");
+    const fs::path out = folder.path() / "run";
     RunOptions options;
     options.out_dir = out;
     options.quick = true;
@@ -93,18 +95,15 @@ TEST_CASE("canopy run writes JSON, CSV, Markdown, EXR and PNG for every case") {
     CHECK(csv.find(",rmse,psnr_db,") != std::string::npos);
 
     // A second run finds the reference in the cache.
-    const fs::path again = fs::temp_directory_path() / "canopy-test-outputs-again";
-    fs::remove_all(again);
+    const fs::path again = folder.path() / "again";
     RunOptions second = options;
     second.out_dir = again;
     const RunRecord cached = run_experiment(prepared, registry, gpu, second);
     REQUIRE(cached.references.size() == 1);
     CHECK(cached.references[0].from_cache);
     CHECK(cached.cases[0].image_error->rmse == doctest::Approx(record.cases[0].image_error->rmse));
-    fs::remove_all(again);
 
     // Atomic writes leave no temporary files behind.
     for (const auto& entry : fs::recursive_directory_iterator(out))
         CHECK_MESSAGE(entry.path().filename().string().find(".tmp") == std::string::npos, entry.path().string());
-    fs::remove_all(out);
 }

@@ -1,12 +1,12 @@
 // The [paper] table of an experiment: parsing with file:line errors, and claim verdicts.
 #include "config/experiment_config.hpp"
 #include "report/paper_report.hpp"
+#include "support/temp_folder.hpp"
 
 #include <doctest/doctest.h>
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 
 using namespace canopy;
 namespace fs = std::filesystem;
@@ -14,14 +14,11 @@ namespace fs = std::filesystem;
 namespace {
 
 fs::path write_experiment(const std::string& name, const std::string& paper_section) {
-    const fs::path dir = fs::temp_directory_path() / "canopy-test-paper";
-    fs::create_directories(dir);
-    const fs::path file = dir / name;
-    std::ofstream(file) << "[experiment]\nscenes = [\"" << CANOPY_TEST_DATA << "/scenes/tiny.toml\"]\n"
-                        << "[[technique]]\nname = \"shadow.hard\"\n[[technique]]\nname = \"shadow.pcf\"\n"
-                        << "[technique.params]\nkernel = [3, 5]\n"
-                        << paper_section;
-    return file;
+    static const test::TempFolder folder("canopy-test-paper");  // this process's, removed at exit
+    return folder.write(name, "[experiment]\nscenes = [\"" + std::string(CANOPY_TEST_DATA) + "/scenes/tiny.toml\"]\n"
+                              "[[technique]]\nname = \"shadow.hard\"\n[[technique]]\nname = \"shadow.pcf\"\n"
+                              "[technique.params]\nkernel = [3, 5]\n" +
+                                  paper_section);
 }
 
 const std::string kPaper = R"(

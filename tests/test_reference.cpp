@@ -10,6 +10,7 @@
 #include "scene/camera.hpp"
 #include "scene/geometry.hpp"
 #include "shading.h"
+#include "support/temp_folder.hpp"
 
 #include <doctest/doctest.h>
 #include <fmt/format.h>
@@ -20,7 +21,6 @@
 #include <filesystem>
 #include <functional>
 #include <numeric>
-#include <random>
 
 using namespace canopy;
 
@@ -179,19 +179,6 @@ Scene spheres_scene(LightType light_type) {
 bool same_pixels(const Image& a, const Image& b) {
     return a.width == b.width && a.height == b.height && a.pixels == b.pixels;
 }
-
-struct TemporaryFolder {
-    std::filesystem::path path;
-    TemporaryFolder() {
-        std::random_device device;
-        path = std::filesystem::temp_directory_path() / fmt::format("canopy-test-reference-{:08x}", device());
-        std::filesystem::create_directories(path);
-    }
-    ~TemporaryFolder() {
-        std::error_code ignored;
-        std::filesystem::remove_all(path, ignored);
-    }
-};
 
 // The rendered penumbra of a straight edge, through the whole renderer (camera rays, hit points,
 // shadow-ray origins, the visibility and radiance images): the occluder is the half-plane x < 0
@@ -838,8 +825,8 @@ TEST_CASE("cache files: store then load round-trips every pixel and the statisti
     settings.pixel_samples = 1;
     const ReferenceImages images = render_reference(scene, meshes, 20, 12, settings);
     const std::string key = reference_cache_key(scene, meshes, 20, 12, settings);
-    const TemporaryFolder folder;
-    const std::filesystem::path dir = folder.path / "cache";
+    const test::TempFolder folder("canopy-test-reference");
+    const std::filesystem::path dir = folder.path() / "cache";
     CHECK_FALSE(load_cached_reference(dir, key).has_value());
     store_reference(dir, key, images);
     for (const char* name : {"radiance", "variance", "visibility"})

@@ -7,10 +7,10 @@
 // Debian's Embree keeps its assertions, and an uninitialised ray lane trips one on the 8-wide
 // AVX2 path (issue 7) even on an AVX-512 machine: the process aborts. Each ISA is its own test
 // case, so its own ctest entry and process, and the light type is captured, so an abort names both.
-#include "config/scene_config.hpp"
 #include "reference/embree_scene.hpp"
 #include "reference/reference_renderer.hpp"
 #include "scene/geometry.hpp"
+#include "support/tiny_scene.hpp"
 
 #include <doctest/doctest.h>
 
@@ -48,10 +48,10 @@ const char* light_name(LightType type) {
     return "?";
 }
 
-// tests/data/scenes/tiny.toml (a box over a floor) under one light of `type`, placed off-axis so
-// that the shadow falls across the floor and some shadow rays graze the box's edges.
+// The tiny scene (a box over a floor) under one light of `type`, placed off-axis so that the
+// shadow falls across the floor and some shadow rays graze the box's edges.
 Scene tiny_scene_lit_by(LightType type) {
-    Scene scene = load_scene(std::string(CANOPY_TEST_DATA) + "/scenes/tiny.toml");
+    Scene scene = test::tiny_scene();
     Light& light = scene.lights.front();
     light.type = type;
     light.position = glm::vec3(0.7f, 4.0f, 0.4f);

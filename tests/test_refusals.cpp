@@ -5,51 +5,23 @@
 #include "core/registry.hpp"
 #include "render/frame_renderer.hpp"
 #include "run/experiment_runner.hpp"
+#include "support/config_error_of.hpp"
+#include "support/temp_folder.hpp"
 #include "support/test_gpu.hpp"
+#include "support/text_search.hpp"
 
 #include <doctest/doctest.h>
 
-#include <cmath>
-#include <fstream>
-#include <functional>
 #include <optional>
-#include <random>
 
 using namespace canopy;
+using test::contains;
+using test::occurrences;
 
 namespace {
 
-struct TempFolder {
-    std::filesystem::path path;
-    TempFolder() {
-        path = std::filesystem::temp_directory_path() / ("canopy_test_refusals_" + std::to_string(std::random_device()()));
-        std::filesystem::create_directories(path);
-    }
-    ~TempFolder() {
-        std::error_code ignored;
-        std::filesystem::remove_all(path, ignored);
-    }
-    std::filesystem::path write(const std::string& name, const std::string& text) const {
-        std::ofstream(path / name, std::ios::binary) << text;
-        return path / name;
-    }
-};
-
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
-
-size_t count(const std::string& text, const std::string& part) {
-    size_t n = 0;
-    for (size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + part.size())) ++n;
-    return n;
-}
-
 std::optional<ConfigError> prepare_error(const Experiment& experiment) {
-    try {
-        prepare_experiment(experiment, TechniqueRegistry::instance(), test::gpu());
-    } catch (const ConfigError& error) {
-        return error;
-    }
-    return std::nullopt;
+    return test::config_error_of([&] { prepare_experiment(experiment, TechniqueRegistry::instance(), test::gpu()); });
 }
 
 }  // namespace
@@ -72,7 +44,7 @@ TEST_CASE("a scene with no objects renders its background with every kind of sha
 }
 
 TEST_CASE("every refused case is listed, one line each, with a hint that fits the cause") {
-    TempFolder folder;
+    test::TempFolder folder;
     folder.write("point.toml", "[scene]\nname = \"point\"\n[[light]]\ntype = \"spot\"\n[[object]]\nshape = \"box\"\n");
     folder.write("dark.toml",
                  "[scene]\nname = \"dark\"\n[[light]]\ntype = \"sphere\"\ncasts_shadows = false\n[[object]]\nshape = \"box\"\n");
@@ -88,9 +60,9 @@ TEST_CASE("every refused case is listed, one line each, with a hint that fits th
     INFO(error->formatted());
     // point: 2 resolutions x 2 PCSS kernels need an area light; dark: all 6 cases lack a shadow light.
     CHECK(contains(message, "10 of 18 cases cannot run"));
-    CHECK(count(message, "\n    ") == 10);
-    CHECK(count(message, "needs an area light") == 4);
-    CHECK(count(message, "no shadow-casting light") == 6);
+    CHECK(occurrences(message, "\n    ") == 10);
+    CHECK(occurrences(message, "needs an area light") == 4);
+    CHECK(occurrences(message, "no shadow-casting light") == 6);
     CHECK(contains(message, "point_32x32_shadow.pcss_kernel-5"));
     CHECK(!contains(message, "area_"));
     // One hint per cause, each pointing at the light to change, none at the device.
@@ -103,7 +75,7 @@ TEST_CASE("every refused case is listed, one line each, with a hint that fits th
 }
 
 TEST_CASE("a long list of refused cases is capped") {
-    TempFolder folder;
+    test::TempFolder folder;
     folder.write("point.toml", "[scene]\nname = \"point\"\n[[light]]\ntype = \"directional\"\n[[object]]\nshape = \"box\"\n");
     const std::filesystem::path file = folder.write(
         "e.toml", "[experiment]\nscenes = [\"point.toml\"]\n"
@@ -114,7 +86,7 @@ TEST_CASE("a long list of refused cases is capped") {
     REQUIRE(error);
     INFO(error->formatted());
     CHECK(contains(error->what(), "24 of 24 cases cannot run"));
-    CHECK(count(error->what(), "needs an area light") == 20);
+    CHECK(occurrences(error->what(), "needs an area light") == 20);
     CHECK(contains(error->what(), "... and 4 more"));
 }
 

@@ -1,18 +1,17 @@
 // Integration on the Vulkan device (lavapipe by default): every shadow technique, in several
 // settings and under every light type, darkens the floor under an occluder, lights the open
 // floor exactly as the shading model says, and renders identically twice.
-#include "config/scene_config.hpp"
-#include "core/registry.hpp"
 #include "render/frame_renderer.hpp"
 #include "scene/camera.hpp"
 #include "shading.h"
 #include "support/technique_variants.hpp"
+#include "support/test_gpu.hpp"
+#include "support/tiny_scene.hpp"
 
 #include <doctest/doctest.h>
 
 #include <cmath>
 #include <cstring>
-#include <memory>
 
 using namespace canopy;
 
@@ -20,19 +19,8 @@ namespace {
 
 constexpr int kWidth = 96, kHeight = 64;
 
-GpuContext& gpu() {
-    static GpuContext context;
-    return context;
-}
-
-Scene tiny_scene() { return load_scene(std::string(CANOPY_TEST_DATA) + "/scenes/tiny.toml"); }
-
-Image render(const Scene& scene, const std::string& technique, std::map<std::string, ParamValue> given = {}) {
-    const Technique& t = *TechniqueRegistry::instance().find(technique);
-    const ParamSet params = ParamSet::resolve(t.params(), given, {}, SourceLocation{}, technique);
-    FrameRenderer renderer(gpu(), scene, build_scene_meshes(scene), kWidth, kHeight, t.plan(params));
-    renderer.render();
-    return renderer.read_color();
+Image render(const Scene& scene, const std::string& technique, const std::map<std::string, ParamValue>& given = {}) {
+    return test::render_technique(scene, technique, given, kWidth, kHeight);
 }
 
 // Mean luminance of a 3x3 block around the pixel that shows world point p.
@@ -50,22 +38,10 @@ void check_all_finite(const Image& image) {
     CHECK_MESSAGE(bad == 0, "non-finite channel values: ", bad);
 }
 
-// The tiny scene under a small rect light straight above, so every technique applies.
-Scene tiny_scene_with_rect_light() {
-    Scene scene = tiny_scene();
-    Light& light = scene.lights.front();
-    light.type = LightType::rect;
-    light.position = glm::vec3(0.0f, 4.0f, 0.0f);
-    light.direction = glm::vec3(0.0f, -1.0f, 0.0f);
-    light.rect_size = glm::vec2(0.2f);
-    light.intensity = 30.0f;
-    return scene;
-}
-
 }  // namespace
 
 TEST_CASE("under the occluder is dark and the open floor is lit exactly as Lambert says") {
-    const Scene scene = tiny_scene_with_rect_light();
+    const Scene scene = test::tiny_scene_under_rect_light();
     const Light& light = scene.lights.front();
     const glm::vec3 under_occluder(0.0f, 0.0f, 0.0f), open_floor(-1.8f, 0.0f, 1.5f);
     // Raster techniques light with the rect light's centre: the shading model's point_irradiance.
@@ -89,7 +65,7 @@ TEST_CASE("under the occluder is dark and the open floor is lit exactly as Lambe
 
 TEST_CASE("every light type casts the occluder's shadow") {
     for (LightType type : {LightType::spot, LightType::rect, LightType::sphere}) {
-        Scene scene = tiny_scene();
+        Scene scene = test::tiny_scene();
         Light& light = scene.lights.front();
         light.type = type;
         light.position = glm::vec3(0.0f, 4.0f, 0.0f);
@@ -122,7 +98,7 @@ TEST_CASE("the same configuration renders identical images: any renderer, any or
     // second round goes in reverse order, so memory a technique might read before writing it
     // held another technique's data rather than its own last image; and it renders two frames,
     // as runs keep the last of several (a technique must carry no state from frame to frame).
-    const Scene scene = tiny_scene_with_rect_light();
+    const Scene scene = test::tiny_scene_under_rect_light();
     const std::vector<test::TechniqueVariant> all = test::technique_variants();
     std::vector<Image> first;
     for (const test::TechniqueVariant& v : all) first.push_back(render(scene, v.technique, v.params));
@@ -134,9 +110,8 @@ TEST_CASE("the same configuration renders identical images: any renderer, any or
         const test::TechniqueVariant& v = all[i];
         const std::string name = test::describe(v);
         CAPTURE(name);
-        const Technique& t = *TechniqueRegistry::instance().find(v.technique);
-        FrameRenderer renderer(gpu(), scene, build_scene_meshes(scene), kWidth, kHeight,
-                               t.plan(ParamSet::resolve(t.params(), v.params, {}, SourceLocation{}, v.technique)));
+        FrameRenderer renderer(test::gpu(), scene, build_scene_meshes(scene), kWidth, kHeight,
+                               test::technique_plan(v.technique, v.params));
         renderer.render();
         const Image frame1 = renderer.read_color();
         renderer.render();
@@ -151,11 +126,10 @@ TEST_CASE("the same configuration renders identical images: any renderer, any or
 }
 
 TEST_CASE("memory is reported per technique: the shadow map is the technique's") {
-    const Scene scene = tiny_scene();
-    const Technique& hard = *TechniqueRegistry::instance().find("shadow.hard");
+    const Scene scene = test::tiny_scene();
     for (long long resolution : {256LL, 1024LL}) {
-        const ParamSet params = ParamSet::resolve(hard.params(), {{"resolution", resolution}}, {}, {}, "shadow.hard");
-        FrameRenderer renderer(gpu(), scene, build_scene_meshes(scene), kWidth, kHeight, hard.plan(params));
+        FrameRenderer renderer(test::gpu(), scene, build_scene_meshes(scene), kWidth, kHeight,
+                               test::technique_plan("shadow.hard", {{"resolution", resolution}}));
         const MemoryUse m = renderer.memory();
         CHECK(m.technique_bytes >= uint64_t(resolution * resolution * 4));   // D32F texels
         CHECK(m.technique_bytes < uint64_t(resolution * resolution * 4 * 2));
@@ -170,11 +144,9 @@ TEST_CASE("memory is reported per technique: the shadow map is the technique's")
 }
 
 TEST_CASE("a scene without a shadow-casting light is refused with a reason") {
-    Scene scene = tiny_scene();
+    Scene scene = test::tiny_scene();
     scene.lights.front().casts_shadows = false;
-    const Technique& hard = *TechniqueRegistry::instance().find("shadow.hard");
-    const FramePlan plan = hard.plan(ParamSet::resolve(hard.params(), {}, {}, {}, "shadow.hard"));
-    const auto reason = unsupported_reason(gpu(), scene, plan);
+    const auto reason = unsupported_reason(test::gpu(), scene, test::technique_plan("shadow.hard"));
     REQUIRE(reason.has_value());
     CHECK(reason->find("shadow-casting") != std::string::npos);
 }

@@ -11,6 +11,7 @@
 #include "run/output_folder.hpp"
 #include "run/recorded_path.hpp"
 #include "run/run_identity.hpp"
+#include "support/temp_folder.hpp"
 
 #include <doctest/doctest.h>
 #include <nlohmann/json.hpp>
@@ -19,18 +20,11 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
-#include <unistd.h>
 
 using namespace canopy;
 namespace fs = std::filesystem;
 
 namespace {
-
-fs::path fresh_folder(const std::string& name) {
-    const fs::path dir = fs::temp_directory_path() / ("canopy-test-folder-" + name + "-" + std::to_string(getpid()));
-    fs::remove_all(dir);
-    return dir;
-}
 
 Experiment tiny_experiment() {
     Experiment e;
@@ -145,7 +139,8 @@ TEST_CASE("a run's identity: what differs is named, field by field") {
 }
 
 TEST_CASE("results.json reads back exactly: every field, NaN, infinity, every digit") {
-    const fs::path dir = fresh_folder("roundtrip");
+    const test::TempFolder folder;
+    const fs::path dir = folder.path() / "roundtrip";
     fs::create_directories(dir);
     const RunRecord run = awkward_record(identity());
     write_json_report(dir / "results.json", run);
@@ -162,22 +157,22 @@ TEST_CASE("results.json reads back exactly: every field, NaN, infinity, every di
     CHECK(std::get<long long>(back.cases[0].params[1].second) == 3);
     CHECK(std::get<double>(back.cases[0].params[3].second) == 1.0);
     CHECK(identity_differences(back.identity, identity()).empty());
-    fs::remove_all(dir);
 }
 
 TEST_CASE("results.json of another version or no results.json at all are refused with the reason") {
-    const fs::path dir = fresh_folder("version");
+    const test::TempFolder folder;
+    const fs::path dir = folder.path() / "version";
     fs::create_directories(dir);
     write_text_atomically(dir / "results.json", R"({"canopy_results_version": 1, "cases": []})");
     CHECK_THROWS_WITH(read_json_report(dir / "results.json"),
                       doctest::Contains("results version 1, this canopy reads version 2"));
     write_text_atomically(dir / "results.json", "{ not json");
     CHECK_THROWS_WITH(read_json_report(dir / "results.json"), doctest::Contains("not a canopy results.json"));
-    fs::remove_all(dir);
 }
 
 TEST_CASE("an output folder: new or empty starts, the same run continues, anything else is refused") {
-    const fs::path dir = fresh_folder("plan");
+    const test::TempFolder folder;
+    const fs::path dir = folder.path() / "plan";
     // New, then empty: a fresh run; --resume there has nothing to continue.
     CHECK_FALSE(plan_output_folder(dir, identity(), false, false).previous);
     CHECK_THROWS_WITH_AS(plan_output_folder(dir, identity(), false, true), doctest::Contains("nothing to resume"),
@@ -219,11 +214,11 @@ TEST_CASE("an output folder: new or empty starts, the same run continues, anythi
     // A file is no folder.
     CHECK_THROWS_WITH_AS(plan_output_folder(dir / "notes.txt", identity(), false, false),
                          doctest::Contains("names a file"), ConfigError);
-    fs::remove_all(dir);
 }
 
 TEST_CASE("committed results are refused without --force, even when empty or new") {
-    const fs::path root = fresh_folder("committed");
+    const test::TempFolder folder;
+    const fs::path root = folder.path() / "committed";
     for (const fs::path& dir : {root / "results" / "paper" / "G-T7.1", root / "results" / "baselines" / "x" / "y",
                                 root / "results" / "paper"}) {
         CAPTURE(dir.string());
@@ -239,7 +234,8 @@ TEST_CASE("committed results are refused without --force, even when empty or new
 }
 
 TEST_CASE("replacing a run removes canopy's files only; a killed run's temporary files are cleaned") {
-    const fs::path dir = fresh_folder("replace");
+    const test::TempFolder folder;
+    const fs::path dir = folder.path() / "replace";
     fs::create_directories(dir / "images");
     for (const char* name : {"results.json", "results.csv", "results.md", "paper.md", "notes.txt", "images/a.exr",
                              "images/a.error.png", "images/.a.tmp123.png", ".results.tmp9.json", "images/keep.txt"})
@@ -252,7 +248,6 @@ TEST_CASE("replacing a run removes canopy's files only; a killed run's temporary
     CHECK(fs::exists(dir / "notes.txt"));
     CHECK(fs::exists(dir / "images/keep.txt"));
     CHECK_FALSE(fs::exists(dir / "images/a.exr"));
-    fs::remove_all(dir);
 }
 
 TEST_CASE("paths in results are relative to the checkout, not the machine's folders") {

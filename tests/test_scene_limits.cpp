@@ -5,28 +5,18 @@
 #include "core/error.hpp"
 #include "scene/geometry.hpp"
 #include "scene/scene_limits.hpp"
+#include "support/config_error_of.hpp"
+#include "support/text_search.hpp"
 
 #include <doctest/doctest.h>
 
 #include <cmath>
-#include <fstream>
-#include <functional>
-#include <optional>
 
 using namespace canopy;
+using test::config_error_of;
+using test::contains;
 
 namespace {
-
-std::optional<ConfigError> error_of(const std::function<void()>& action) {
-    try {
-        action();
-    } catch (const ConfigError& error) {
-        return error;
-    }
-    return std::nullopt;
-}
-
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 const std::string kLight = "[[light]]\ntype = \"directional\"\n";  // lines 1-2
 const std::string kBox = "[[object]]\nshape = \"box\"\n";
@@ -34,7 +24,7 @@ const std::string kBox = "[[object]]\nshape = \"box\"\n";
 // The line of the error parse_scene raises for `text`, -1 when it loads; the message must
 // mention `words`.
 int error_line(const std::string& text, const std::string& words = "") {
-    const auto error = error_of([&] { parse_scene(text, "s.toml"); });
+    const auto error = config_error_of([&] { parse_scene(text, "s.toml"); });
     if (!error) return -1;
     INFO(error->formatted());
     CHECK(contains(error->what(), words));
@@ -103,7 +93,7 @@ TEST_CASE("every world-space vertex must lie in the coordinate range, whatever p
     // Each transform is legal, but instance · object puts the box at 1.5e6.
     const Scene far = parse_scene(kLight + kBox + "translate = [1e6, 0, 0]\ninstances = [{ translate = [5e5, 0, 0] }]\n",
                                   "s.toml");
-    const auto error = error_of([&] { build_scene_meshes(far); });
+    const auto error = config_error_of([&] { build_scene_meshes(far); });
     REQUIRE(error);
     INFO(error->formatted());
     CHECK(error->line() == 3);  // the [[object]]
@@ -111,11 +101,11 @@ TEST_CASE("every world-space vertex must lie in the coordinate range, whatever p
 
     // A large plane reaching past the bound.
     const Scene wide = parse_scene(kLight + "[[object]]\nshape = \"plane\"\nsize = [3e6, 1]\n", "s.toml");
-    CHECK(error_of([&] { build_scene_meshes(wide); }));
+    CHECK(config_error_of([&] { build_scene_meshes(wide); }));
 
     // Right up to the bound is fine.
     const Scene edge = parse_scene(kLight + kBox + "translate = [999999.5, 0, 0]\n", "s.toml");
-    CHECK(!error_of([&] { build_scene_meshes(edge); }));
+    CHECK(!config_error_of([&] { build_scene_meshes(edge); }));
 }
 
 TEST_CASE("a scene with no objects loads (it renders its background)") {
@@ -126,7 +116,7 @@ TEST_CASE("a scene with no objects loads (it renders its background)") {
 
 TEST_CASE("a mesh file key that names a directory says it is a directory") {
     const std::filesystem::path folder = std::filesystem::path(CANOPY_TEST_DATA) / "bad_input/meshes";
-    const auto error = error_of([&] {
+    const auto error = config_error_of([&] {
         parse_scene(kLight + "[[object]]\nshape = \"mesh\"\nfile = \"a_folder.obj\"\n", folder / "s.toml");
     });
     REQUIRE(error);

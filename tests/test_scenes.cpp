@@ -6,6 +6,7 @@
 #include "config/scene_config.hpp"
 #include "core/registry.hpp"
 #include "render/frame_renderer.hpp"
+#include "support/test_gpu.hpp"
 
 #include <doctest/doctest.h>
 
@@ -17,14 +18,9 @@ namespace {
 
 constexpr int kWidth = 160, kHeight = 90;
 
-GpuContext& gpu() {
-    static GpuContext context;
-    return context;
-}
-
+// With `meshes` built once per scene: the committed scenes' models take a while to load.
 Image render(const Scene& scene, const std::vector<TriangleMesh>& meshes, const Technique& t) {
-    const ParamSet params = ParamSet::resolve(t.params(), {}, {}, {}, t.name());
-    FrameRenderer renderer(gpu(), scene, meshes, kWidth, kHeight, t.plan(params));
+    FrameRenderer renderer(test::gpu(), scene, meshes, kWidth, kHeight, test::technique_plan(t.name()));
     renderer.render();
     return renderer.read_color();
 }

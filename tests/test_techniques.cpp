@@ -1,11 +1,10 @@
-// The registry and what each technique plans, without rendering.
-#include "core/error.hpp"
+// The technique registry: every technique is found by name, documents itself and plans with its
+// defaults, without rendering (what the shadow techniques plan: techniques/shadow/tests).
 #include "core/registry.hpp"
-#include "../techniques/shadow/common/poisson_disk.hpp"
 
 #include <doctest/doctest.h>
 
-#include <cmath>
+#include <algorithm>
 
 using namespace canopy;
 
@@ -39,44 +38,4 @@ TEST_CASE("every technique's defaults resolve and every parameter is documented"
         REQUIRE(plan.forward_fragment_spirv.size() > 5);
         CHECK(plan.forward_fragment_spirv[0] == 0x07230203u);  // SPIR-V magic number
     }
-}
-
-TEST_CASE("shadow-map parameters reach the plan") {
-    const Technique& hard = *TechniqueRegistry::instance().find("shadow.hard");
-    const FramePlan plan = hard.plan(resolve(hard, {{"resolution", 512LL}, {"depth_format", std::string("d16")}}));
-    REQUIRE(plan.shadow_map.has_value());
-    CHECK(plan.shadow_map->resolution == 512);
-    CHECK(plan.shadow_map->format == DepthFormat::d16);
-    CHECK_FALSE(plan.shadow_map->compare_sampler);
-}
-
-TEST_CASE("PCF plans k*k samples and its Poisson tables fit the uniform block for every kernel") {
-    const Technique& pcf = *TechniqueRegistry::instance().find("shadow.pcf");
-    for (long long k = 1; k <= 11; ++k) {
-        CAPTURE(k);
-        const FramePlan grid = pcf.plan(resolve(pcf, {{"kernel", k}}));
-        CHECK(grid.shader_params.values[5] == float(k * k));
-        CHECK(grid.shader_params.offsets.empty());
-        const FramePlan poisson = pcf.plan(resolve(pcf, {{"kernel", k}, {"pattern", std::string("poisson")}}));
-        CHECK(poisson.shader_params.offsets.size() == size_t(k * k));
-        CHECK(poisson.shader_params.offsets.size() <= ShaderParams::kMaxOffsets);
-    }
-    const FramePlan hardware = pcf.plan(resolve(pcf, {{"hardware_2x2", true}}));
-    CHECK(hardware.shadow_map->compare_sampler);
-    CHECK_THROWS_AS(resolve(pcf, {{"kernel", 12LL}}), ConfigError);
-}
-
-TEST_CASE("Poisson disk: inside the unit disk, deterministic, well spread") {
-    const auto a = poisson_disk(25, 7);
-    const auto b = poisson_disk(25, 7);
-    REQUIRE(a.size() == 25);
-    CHECK(a == b);
-    float min_distance = 10.0f;
-    for (size_t i = 0; i < a.size(); ++i) {
-        CHECK(a[i][0] * a[i][0] + a[i][1] * a[i][1] <= 1.0f + 1e-6f);
-        for (size_t j = 0; j < i; ++j)
-            min_distance = std::min(min_distance, std::hypot(a[i][0] - a[j][0], a[i][1] - a[j][1]));
-    }
-    // Uniform random points would typically have pairs closer than 0.05; the ideal spacing is ~0.35.
-    CHECK(min_distance > 0.2f);
 }

@@ -2,14 +2,13 @@
 // installed by scripts/install-deps) watch every registered technique and its tested variants
 // render the test scene: not one warning or error, from instance creation to destruction. The
 // layer is required: without it these tests fail and say what to install.
-#include "config/scene_config.hpp"
 #include "gpu/context.hpp"
 #include "support/technique_variants.hpp"
 #include "support/test_gpu.hpp"
+#include "support/tiny_scene.hpp"
 
 #include <doctest/doctest.h>
 
-#include <cstdlib>
 #include <memory>
 #include <string>
 
@@ -18,23 +17,6 @@ using namespace canopy;
 namespace {
 
 constexpr int kWidth = 64, kHeight = 48;
-
-std::string device_selector() {
-    const char* device = std::getenv("CANOPY_TEST_DEVICE");
-    return device ? device : "";
-}
-
-// tests/data/scenes/tiny.toml under a small rect light, so that every technique applies.
-Scene tiny_scene_with_rect_light() {
-    Scene scene = load_scene(std::string(CANOPY_TEST_DATA) + "/scenes/tiny.toml");
-    Light& light = scene.lights.front();
-    light.type = LightType::rect;
-    light.position = glm::vec3(0.3f, 4.0f, 0.2f);
-    light.direction = glm::vec3(0.0f, -1.0f, 0.0f);
-    light.rect_size = glm::vec2(0.3f);
-    light.intensity = 30.0f;
-    return scene;
-}
 
 std::string joined(const std::vector<std::string>& messages) {
     std::string out;
@@ -48,10 +30,10 @@ TEST_CASE("every technique renders without a single validation warning or error"
     std::shared_ptr<const ValidationLog> log;
     size_t rendered = 0;
     {
-        GpuContext context(device_selector(), GpuContext::Validation::on);
+        GpuContext context(test::device_selector(), GpuContext::Validation::on);
         log = context.validation_log();
         REQUIRE(log != nullptr);
-        const Scene scene = tiny_scene_with_rect_light();
+        const Scene scene = test::tiny_scene_under_rect_light(0.3f, glm::vec3(0.3f, 4.0f, 0.2f));
         for (const test::TechniqueVariant& variant : test::technique_variants()) {
             const std::string name = test::describe(variant);
             CAPTURE(name);
@@ -73,7 +55,7 @@ TEST_CASE("the validation log hears a misuse, including one reported at destruct
     // the device is destroyed, after every render is over.
     std::shared_ptr<const ValidationLog> log;
     {
-        GpuContext context(device_selector(), GpuContext::Validation::on);
+        GpuContext context(test::device_selector(), GpuContext::Validation::on);
         log = context.validation_log();
         VkSemaphoreCreateInfo info{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
         VkSemaphore leaked = VK_NULL_HANDLE;
@@ -91,7 +73,7 @@ TEST_CASE("without the validation layer, asking for it fails and names the packa
     setenv("VK_LAYER_PATH", "/nonexistent-canopy-test", 1);
     std::string error;
     try {
-        GpuContext context(device_selector(), GpuContext::Validation::on);
+        GpuContext context(test::device_selector(), GpuContext::Validation::on);
     } catch (const GpuError& e) {
         error = e.what();
     }

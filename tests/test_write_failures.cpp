@@ -4,6 +4,7 @@
 #include "core/image.hpp"
 #include "report/atomic_file.hpp"
 #include "report/image_files.hpp"
+#include "support/temp_folder.hpp"
 
 #include <doctest/doctest.h>
 
@@ -15,19 +16,11 @@
 #include <sstream>
 #include <string>
 #include <sys/resource.h>
-#include <unistd.h>
 
 using namespace canopy;
 namespace fs = std::filesystem;
 
 namespace {
-
-fs::path fresh_folder(const std::string& name) {
-    const fs::path dir = fs::temp_directory_path() / ("canopy-test-" + name + "-" + std::to_string(getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
 
 std::string read_text(const fs::path& path) {
     std::ifstream in(path, std::ios::binary);
@@ -65,7 +58,9 @@ private:
 }  // namespace
 
 TEST_CASE("a written file replaces the old one whole, and no temporary file stays") {
-    const fs::path dir = fresh_folder("atomic");
+    const test::TempFolder folder;
+    const fs::path dir = folder.path() / "atomic";
+    fs::create_directories(dir);
     write_text_atomically(dir / "results.json", "first");
     write_text_atomically(dir / "results.json", "second");
     CHECK(read_text(dir / "results.json") == "second");
@@ -74,11 +69,12 @@ TEST_CASE("a written file replaces the old one whole, and no temporary file stay
     CHECK(is_temporary_file(temporary_path(dir / "images" / "a.error.png")));
     CHECK_FALSE(is_temporary_file(dir / "results.json"));
     CHECK_FALSE(is_temporary_file(dir / "tiny_96x64_shadow.pcf_kernel-3.exr"));
-    fs::remove_all(dir);
 }
 
 TEST_CASE("a write into a missing folder names the file and the system's reason") {
-    const fs::path dir = fresh_folder("missing");
+    const test::TempFolder folder;
+    const fs::path dir = folder.path() / "missing";
+    fs::create_directories(dir);
     const fs::path target = dir / "gone" / "results.json";
     try {
         write_text_atomically(target, "x");
@@ -98,11 +94,12 @@ TEST_CASE("a write into a missing folder names the file and the system's reason"
             CHECK(std::string(e.what()).find(std::strerror(ENOENT)) != std::string::npos);
         }
     }
-    fs::remove_all(dir);
 }
 
 TEST_CASE("a file that does not fit fails with the system's reason and keeps the previous version") {
-    const fs::path dir = fresh_folder("full");
+    const test::TempFolder folder;
+    const fs::path dir = folder.path() / "full";
+    fs::create_directories(dir);
     write_text_atomically(dir / "results.json", "the previous record");
     Image image(64, 64);
     for (size_t i = 0; i < image.pixels.size(); ++i) image.pixels[i] = float(i % 97) / 97.0f;
@@ -125,5 +122,4 @@ TEST_CASE("a file that does not fit fails with the system's reason and keeps the
     CHECK(read_text(dir / "results.json") == "the previous record");
     CHECK_FALSE(fs::exists(dir / "image.exr"));
     CHECK(temporary_files(dir) == 0);
-    fs::remove_all(dir);
 }

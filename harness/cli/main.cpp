@@ -267,9 +267,9 @@ int main(int argc, char** argv) {
                     "a FLIP map with colour bars, plus the reference images. The reference's sample counts come from the\n"
                     "experiment's [reference] table; references are cached by content.\n"
                     "Output folder: a new or empty one starts a run; one holding a run of the same experiment, config\n"
-                    "(content hash), options (--quick, --images, --no-reference), device and build continues it, keeping\n"
-                    "its finished cases; anything else, and results/paper/ or results/baselines/, is refused (exit 2)\n"
-                    "unless --force. One canopy process at a time writes into a folder.");
+                    "(content hash), options (--quick, --images, --no-reference), device, build and thread count\n"
+                    "continues it, keeping its finished cases; anything else, and results/paper/ or results/baselines/,\n"
+                    "is refused (exit 2) unless --force. One canopy process at a time writes into a folder.");
 
     CLI::App* reference_cmd = app.add_subcommand("reference", "Ray-trace the ground-truth image of a scene with Embree.");
     reference_cmd->add_option("scene", scene_path, "scene TOML, e.g. configs/scenes/spheres.toml")->required();

@@ -1,5 +1,5 @@
 // What a FramePlan asks of the scene and the device, in words, for `canopy list`. The checks
-// themselves are in unsupported_reason (render/frame_renderer.hpp), run before anything is written.
+// themselves are check_supported (render/frame_renderer.hpp), run before anything is written.
 #pragma once
 
 #include "core/technique.hpp"

@@ -56,11 +56,7 @@ void draw_text(Image& image, int x, int y, std::string_view text, const std::arr
             for (int column = 0; column < kGlyphWidth; ++column) {
                 const int px = left + column, py = y + row;
                 if (px < 0 || py < 0 || px >= image.width || py >= image.height || !glyph_pixel(text[i], column, row)) continue;
-                float* p = image.at(px, py);
-                p[0] = rgb[0];
-                p[1] = rgb[1];
-                p[2] = rgb[2];
-                p[3] = 1.0f;
+                image.set_opaque(px, py, rgb);
             }
     }
 }

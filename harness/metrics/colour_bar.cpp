@@ -15,14 +15,6 @@ constexpr int kGap = 4, kBarWidth = 10, kLabelGap = 3, kMargin = 3;
 constexpr int kMinHeight = 32;     // room for two labels
 constexpr int kMiddleLabelFrom = 48;  // room for three
 
-void fill(Image& image, int x, int y, const std::array<float, 3>& rgb) {
-    float* p = image.at(x, y);
-    p[0] = rgb[0];
-    p[1] = rgb[1];
-    p[2] = rgb[2];
-    p[3] = 1.0f;
-}
-
 }  // namespace
 
 std::string colour_bar_label(double value) { return value == 0.0 ? "0" : fmt::format("{:.3g}", value); }
@@ -52,11 +44,11 @@ Image with_colour_bar(const Image& heatmap, const std::array<ColormapEntry, 256>
     // A grey frame, so the dark end of magma stays visible on the black panel.
     const std::array<float, 3> grey = {0.5f, 0.5f, 0.5f};
     for (int y = l.bar_top - 1; y <= l.bar_bottom + 1; ++y)
-        for (int x = l.bar_left - 1; x <= l.bar_right + 1; ++x) fill(out, x, y, grey);
+        for (int x = l.bar_left - 1; x <= l.bar_right + 1; ++x) out.set_opaque(x, y, grey);
     const int span = l.bar_bottom - l.bar_top;
     for (int y = l.bar_top; y <= l.bar_bottom; ++y) {
         const ColormapEntry colour = map_to_color(colormap, float(double(l.bar_bottom - y) / double(span)));
-        for (int x = l.bar_left; x <= l.bar_right; ++x) fill(out, x, y, colour);
+        for (int x = l.bar_left; x <= l.bar_right; ++x) out.set_opaque(x, y, colour);
     }
     const std::array<float, 3> white = {1.0f, 1.0f, 1.0f};
     auto label = [&](int tick_y, const std::string& text) {

@@ -10,18 +10,6 @@
 
 namespace canopy {
 
-namespace {
-
-void set_pixel(Image& image, int x, int y, const ColormapEntry& rgb) {
-    float* p = image.at(x, y);
-    p[0] = rgb[0];
-    p[1] = rgb[1];
-    p[2] = rgb[2];
-    p[3] = 1.0f;
-}
-
-}  // namespace
-
 Image absolute_error_heatmap(const Image& test, const Image& reference, double max_value) {
     require_same_size(test, reference, "absolute error heatmap");
     if (!(max_value > 0.0))
@@ -31,11 +19,11 @@ Image absolute_error_heatmap(const Image& test, const Image& reference, double m
     for (int y = 0; y < test.height; ++y) {
         for (int x = 0; x < test.width; ++x) {
             if (!pixel_is_finite(test, x, y) || !pixel_is_finite(reference, x, y)) {
-                set_pixel(heatmap, x, y, invalid);
+                heatmap.set_opaque(x, y, invalid);
                 continue;
             }
             const double difference = std::abs(double(test.luminance(x, y)) - double(reference.luminance(x, y)));
-            set_pixel(heatmap, x, y, map_to_color(viridis_colormap(), float(difference / max_value)));
+            heatmap.set_opaque(x, y, map_to_color(viridis_colormap(), float(difference / max_value)));
         }
     }
     return heatmap;
@@ -50,7 +38,7 @@ Image flip_heatmap(const std::vector<float>& flip_map, int width, int height) {
     for (int y = 0; y < height; ++y) {
         for (int x = 0; x < width; ++x) {
             const float value = flip_map[size_t(y) * size_t(width) + size_t(x)];
-            set_pixel(heatmap, x, y, std::isnan(value) ? invalid : map_to_color(magma_colormap(), value));
+            heatmap.set_opaque(x, y, std::isnan(value) ? invalid : map_to_color(magma_colormap(), value));
         }
     }
     return heatmap;

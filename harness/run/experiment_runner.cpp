@@ -257,8 +257,6 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
                 if (options.show_progress) progress.kept_case(i, label);
                 continue;
             }
-            const auto start = std::chrono::steady_clock::now();
-
             // The reference first, so a case's record is complete when it is written.
             const ReferenceEntry* reference = nullptr;
             if (run.reference_enabled) {
@@ -308,6 +306,9 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
                 }
             }
 
+            // The case's time leaves its reference out: Progress estimates the time left from case
+            // times and reference times separately (a reference is obtained once per scene and size).
+            const auto start = std::chrono::steady_clock::now();
             if (options.show_progress) progress.start_case(i, label);
             CaseResult result;
             Image image;

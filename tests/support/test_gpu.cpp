@@ -9,9 +9,20 @@
 
 namespace canopy::test {
 
+std::string device_selector() {
+    const char* device = std::getenv("CANOPY_TEST_DEVICE");
+    return device ? device : "";
+}
+
 GpuContext& gpu() {
-    static GpuContext context(std::getenv("CANOPY_TEST_DEVICE") ? std::getenv("CANOPY_TEST_DEVICE") : "");
+    static GpuContext context(device_selector());
     return context;
+}
+
+FramePlan technique_plan(const std::string& technique, const std::map<std::string, ParamValue>& params) {
+    const Technique* t = TechniqueRegistry::instance().find(technique);
+    if (!t) throw std::invalid_argument("no technique " + technique);
+    return t->plan(ParamSet::resolve(t->params(), params, {}, SourceLocation{}, technique));
 }
 
 Image render_technique(const Scene& scene, const std::string& technique,
@@ -21,10 +32,8 @@ Image render_technique(const Scene& scene, const std::string& technique,
 
 Image render_technique(GpuContext& context, const Scene& scene, const std::string& technique,
                        const std::map<std::string, ParamValue>& params, int width, int height) {
-    const Technique* t = TechniqueRegistry::instance().find(technique);
-    if (!t) throw std::invalid_argument("no technique " + technique);
-    const ParamSet resolved = ParamSet::resolve(t->params(), params, {}, SourceLocation{}, technique);
-    FrameRenderer renderer(context, scene, build_scene_meshes(scene), uint32_t(width), uint32_t(height), t->plan(resolved));
+    FrameRenderer renderer(context, scene, build_scene_meshes(scene), uint32_t(width), uint32_t(height),
+                           technique_plan(technique, params));
     renderer.render();
     return renderer.read_color();
 }

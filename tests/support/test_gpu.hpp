@@ -4,6 +4,7 @@
 
 #include "core/image.hpp"
 #include "core/param.hpp"
+#include "core/technique.hpp"
 #include "gpu/context.hpp"
 #include "scene/scene.hpp"
 
@@ -12,7 +13,13 @@
 
 namespace canopy::test {
 
+// The device selector tests use: CANOPY_TEST_DEVICE, or "" (lavapipe).
+std::string device_selector();
+
 GpuContext& gpu();
+
+// The plan of registered `technique` with `params`, the rest at their defaults.
+FramePlan technique_plan(const std::string& technique, const std::map<std::string, ParamValue>& params = {});
 
 // Renders one frame of `technique` with `params` (the rest at their defaults) over `scene`, with
 // a FrameRenderer of its own, on `context` (default: gpu()).

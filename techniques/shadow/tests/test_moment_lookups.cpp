@@ -1,8 +1,8 @@
 // Lookups of prefiltered moment maps on the device: where a LINEAR sampler would blend the wrong
 // quantity, the lit pass fetches the four texels (bilinear_texels.glsl) and blends them itself.
 // Checked through whole renders, so the shaders the techniques run are what is tested.
-#include "config/scene_config.hpp"
 #include "support/test_gpu.hpp"
+#include "support/tiny_scene.hpp"
 
 #include <doctest/doctest.h>
 
@@ -15,18 +15,6 @@ using namespace canopy;
 namespace {
 
 constexpr int kWidth = 192, kHeight = 128;
-
-// The integration scene (a box over a floor) under a small rect light straight above.
-Scene box_under_rect_light() {
-    Scene scene = load_scene(std::string(CANOPY_TEST_DATA) + "/scenes/tiny.toml");
-    Light& light = scene.lights.front();
-    light.type = LightType::rect;
-    light.position = glm::vec3(0.0f, 4.0f, 0.0f);
-    light.direction = glm::vec3(0.0f, -1.0f, 0.0f);
-    light.rect_size = glm::vec2(0.2f);
-    light.intensity = 30.0f;
-    return scene;
-}
 
 struct Difference {
     float largest = 0.0f;
@@ -51,7 +39,7 @@ Difference compare(const Image& a, const Image& b, float threshold) {
 // lookup that blends the logs instead darkens every texel-to-texel transition of the penumbra
 // (a geometric mean): at c = 40 by up to ~0.2 in luminance here.
 TEST_CASE("ESM: log-space storage renders what linear storage renders") {
-    const Scene scene = box_under_rect_light();
+    const Scene scene = test::tiny_scene_under_rect_light();
     for (long long resolution : {128LL, 512LL}) {
         for (double c : {10.0, 40.0}) {
             const std::map<std::string, ParamValue> base{{"resolution", resolution}, {"exponent", c}, {"filter", 5LL}};

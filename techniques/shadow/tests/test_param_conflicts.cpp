@@ -5,50 +5,32 @@
 #include "core/error.hpp"
 #include "core/registry.hpp"
 #include "shadow_filtering.h"
+#include "support/config_error_of.hpp"
+#include "support/temp_folder.hpp"
+#include "support/text_search.hpp"
 
 #include <doctest/doctest.h>
 
-#include <atomic>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <optional>
-#include <random>
 #include <string>
 
 using namespace canopy;
+using test::contains;
 
 namespace {
 
-// An experiment file (and the scene it names) in a fresh folder, removed afterwards.
-struct ExperimentFile {
-    std::filesystem::path folder, path;
-    explicit ExperimentFile(const std::string& technique_block) {
-        static std::atomic<int> counter{0};
-        folder = std::filesystem::temp_directory_path() /
-                 ("canopy_test_conflicts_" + std::to_string(std::random_device{}()) + "_" + std::to_string(counter++));
-        std::filesystem::create_directories(folder);
-        std::ofstream(folder / "room.toml") << "[scene]\nname = \"room\"\n[[light]]\ntype = \"directional\"\n";
-        path = folder / "experiment.toml";
-        std::ofstream(path) << "[experiment]\nscenes = [\"room.toml\"]\n" << technique_block;
-    }
-    ~ExperimentFile() {
-        std::error_code ignored;
-        std::filesystem::remove_all(folder, ignored);
-    }
-};
-
+// The error expanding the cases of an experiment with `technique_block` over a one-light scene
+// raises, or nothing. The experiment file's lines: 1 [experiment], 2 scenes, then the block.
 std::optional<ConfigError> expansion_error(const std::string& technique_block) {
-    const ExperimentFile file(technique_block);
-    try {
-        expand_cases(load_experiment(file.path, TechniqueRegistry::instance()), TechniqueRegistry::instance());
-    } catch (const ConfigError& error) {
-        return error;
-    }
-    return std::nullopt;
+    const test::TempFolder folder("canopy-test-conflicts");
+    folder.write("room.toml", "[scene]\nname = \"room\"\n[[light]]\ntype = \"directional\"\n");
+    const std::filesystem::path file =
+        folder.write("experiment.toml", "[experiment]\nscenes = [\"room.toml\"]\n" + technique_block);
+    return test::config_error_of(
+        [&] { expand_cases(load_experiment(file, TechniqueRegistry::instance()), TechniqueRegistry::instance()); });
 }
-
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 }  // namespace
 

@@ -7,8 +7,6 @@
 //    rejection (6.2.3), lazy shadowing (6.3.2) and the mask of pixels it leaves alone (6.2.2).
 // Synthetic inputs run through the technique's own passes (its FramePlan's FilterPasses) in a
 // FilterChain; the expected values come from ssss_filter.h, the header those shaders include.
-#include "config/scene_config.hpp"
-#include "core/registry.hpp"
 #include "render/filter_chain.hpp"
 #include "render/frame_renderer.hpp"
 #include "render/frame_uniforms.hpp"
@@ -17,6 +15,7 @@
 #include "scene/camera.hpp"
 #include "scene/geometry.hpp"
 #include "support/test_gpu.hpp"
+#include "support/tiny_scene.hpp"
 
 #include "shading.h"
 #include "../ssss/ssss_filter.h"
@@ -85,8 +84,7 @@ Image run_passes(const Texture& source, VkFormat format, const std::vector<Filte
 
 // shadow.ssss's plan for `given` parameters (the rest at their defaults).
 FramePlan ssss_plan(const std::map<std::string, ParamValue>& given = {}) {
-    const Technique& t = *TechniqueRegistry::instance().find("shadow.ssss");
-    return t.plan(ParamSet::resolve(t.params(), given, {}, {}, "shadow.ssss"));
+    return test::technique_plan("shadow.ssss", given);
 }
 
 // The frame a rect light of width `light_width` (mean side) gives the coarse passes: a
@@ -102,19 +100,6 @@ FrameUniforms coarse_frame(float light_width, float near_plane, float far_plane,
 
 // ---------------------------------------------------------------------------------------------
 // Scenes.
-
-// The integration scene (a 1 x 0.5 x 1 box, bottom at y = 1, over a floor at y = 0), lit by a
-// square rect light of side `light_side` at y = 4 facing down.
-Scene box_under_rect_light(float light_side) {
-    Scene scene = load_scene(std::string(CANOPY_TEST_DATA) + "/scenes/tiny.toml");
-    Light& light = scene.lights.front();
-    light.type = LightType::rect;
-    light.position = glm::vec3(0.0f, 4.0f, 0.0f);
-    light.direction = glm::vec3(0.0f, -1.0f, 0.0f);
-    light.rect_size = glm::vec2(light_side);
-    light.intensity = 30.0f;
-    return scene;
-}
 
 struct Rendered {
     Image coarse, screen, color;
@@ -258,7 +243,7 @@ TEST_CASE("SSSS dilation in a render: the coarse map's blocker region grows with
     const int block = 4;  // the default coarse_block
     std::vector<int> widths, radii;
     for (float side : {0.2f, 0.4f, 0.8f}) {
-        const Scene scene = box_under_rect_light(side);
+        const Scene scene = test::tiny_scene_under_rect_light(side);
         const Rendered r = render_ssss(scene, 32, 32, {}, true);
         // The middle row of coarse texels: those nearer than the floor hold the box's top.
         int covered = 0;
@@ -309,7 +294,7 @@ TEST_CASE("SSSS sigma from eq 6.2, in numbers and as the screen pass writes it")
     // their own distance to the camera and the camera's focal length.
     const int width = 96, height = 64;
     const float side = 0.2f;
-    const Scene scene = box_under_rect_light(side);
+    const Scene scene = test::tiny_scene_under_rect_light(side);
     const Rendered r = render_ssss(scene, width, height, {}, true);
     const float focal = 0.5f * float(height) / std::tan(0.5f * glm::radians(scene.camera.fov_y_degrees));
     const glm::mat4 view = view_matrix(scene.camera);
