@@ -23,7 +23,7 @@ std::string CaseLabels::parameters(const Case& c) const {
     const std::vector<ParamSpec> specs = technique ? technique->params() : std::vector<ParamSpec>{};
     std::string out;
     for (const auto& [name, value] : c.params.values()) {
-        const auto spec = std::find_if(specs.begin(), specs.end(), [&](const ParamSpec& s) { return s.name == name; });
+        const auto spec = std::find_if(specs.begin(), specs.end(), [&name = name](const ParamSpec& s) { return s.name == name; });
         const bool is_default = spec != specs.end() && to_string(spec->default_value) == to_string(value);
         if (is_default && !swept(c.technique, name)) continue;
         out += fmt::format("{}{}={}", out.empty() ? "" : " ", name, to_string(value));
