@@ -357,6 +357,7 @@ std::vector<Case> expand_cases(const Experiment& experiment, const TechniqueRegi
                                       fmt::format("unknown technique '{}'", entry.name),
                                       "run `canopy list` to see every technique");
                 const std::vector<std::string> keys = ordered_keys(entry);
+                const std::vector<ParamSpec> specs = technique->params();
 
                 // Odometer over the sweep: the first key varies slowest.
                 std::vector<size_t> choice(keys.size(), 0);
@@ -378,7 +379,7 @@ std::vector<Case> expand_cases(const Experiment& experiment, const TechniqueRegi
                     run_case.scene_index = scene_index;
                     run_case.resolution = resolution;
                     run_case.technique = entry.name;
-                    run_case.params = resolve_params(*technique, given, entry.param_lines, entry.where);  // + conflicts
+                    run_case.params = resolve_params(*technique, specs, given, entry.param_lines, entry.where);  // + conflicts
                     run_case.id = std::move(unique_id);
                     cases.push_back(std::move(run_case));
                 } while (advance(choice, keys, entry));

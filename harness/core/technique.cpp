@@ -36,9 +36,10 @@ uint32_t bytes_per_texel(MomentFormat format) {
 
 std::optional<ParamConflict> Technique::conflict(const ParamSet&) const { return std::nullopt; }
 
-ParamSet resolve_params(const Technique& technique, const std::map<std::string, ParamValue>& given,
-                        const std::map<std::string, int>& given_lines, const SourceLocation& where) {
-    ParamSet params = ParamSet::resolve(technique.params(), given, given_lines, where, technique.name());
+ParamSet resolve_params(const Technique& technique, const std::vector<ParamSpec>& specs,
+                        const std::map<std::string, ParamValue>& given, const std::map<std::string, int>& given_lines,
+                        const SourceLocation& where) {
+    ParamSet params = ParamSet::resolve(specs, given, given_lines, where, technique.name());
     const std::optional<ParamConflict> conflict = technique.conflict(params);
     if (!conflict) return params;
     SourceLocation location = where;

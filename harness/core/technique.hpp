@@ -115,10 +115,12 @@ public:
     virtual std::optional<ParamConflict> conflict(const ParamSet& params) const;
 };
 
-// ParamSet::resolve with `technique`'s specs, then its conflict check: a refused combination
-// throws ConfigError at the line of the first conflicting parameter the config gives (else at
-// `where`), with the technique's hint.
-ParamSet resolve_params(const Technique& technique, const std::map<std::string, ParamValue>& given,
-                        const std::map<std::string, int>& given_lines, const SourceLocation& where);
+// ParamSet::resolve with `technique`'s specs (`specs`: technique.params(), built once by a caller
+// resolving many cases), then its conflict check: a refused combination throws ConfigError at the
+// line of the first conflicting parameter the config gives (else at `where`), with the
+// technique's hint.
+ParamSet resolve_params(const Technique& technique, const std::vector<ParamSpec>& specs,
+                        const std::map<std::string, ParamValue>& given, const std::map<std::string, int>& given_lines,
+                        const SourceLocation& where);
 
 }  // namespace canopy
