@@ -450,10 +450,11 @@ CANOPY_FN float pcss_penumbra_width(float d_receiver, float d_blocker, float w_l
     return clamp(w_light, 0.0f, 1e20f) * (gap / blocker);
 }
 
-// Eq 6.2: the penumbra width of eq 6.1 divided by the distance to the observer, for a filter
-// applied in screen space (a kernel shrinks with distance).
-CANOPY_FN float ssss_screen_penumbra_width(float d_receiver, float d_blocker, float w_light, float d_observer) {
-    return pcss_penumbra_width(d_receiver, d_blocker, w_light) / max(d_observer, 1e-6f);
+// Eq 6.2: the penumbra width of eq 6.1 divided by the distance to the observer (its depth along
+// the view axis, see ssss_sigma_pixels), for a filter applied in screen space (a kernel shrinks
+// with distance).
+CANOPY_FN float ssss_screen_penumbra_width(float d_receiver, float d_blocker, float w_light, float view_depth) {
+    return pcss_penumbra_width(d_receiver, d_blocker, w_light) / max(view_depth, 1e-6f);
 }
 
 CANOPY_END_NAMESPACE

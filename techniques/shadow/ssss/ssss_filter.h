@@ -17,11 +17,14 @@ CANOPY_CONST float SSSS_PENUMBRA_WIDTH_IN_SIGMAS = 2.563f;
 // Below this sigma (pixels) a Gaussian changes nothing visible: the pixel is not blurred.
 CANOPY_CONST float SSSS_MIN_SIGMA = 0.25f;
 
-// Eq 6.2 as the Gaussian's sigma in pixels: w = (d_r - d_b) w_light / (d_b d_observer) is a
-// width per unit of distance to the observer, i.e. an angle; times the focal length in pixels it
-// is pixels, and divided by 2.563 the sigma whose 10-90 % rise spans it.
-CANOPY_FN float ssss_sigma_pixels(float d_receiver, float d_blocker, float w_light, float d_observer, float focal_pixels) {
-    return ssss_screen_penumbra_width(d_receiver, d_blocker, w_light, d_observer) * max(focal_pixels, 0.0f) /
+// Eq 6.2 as the Gaussian's sigma in pixels: w = (d_r - d_b) w_light / (d_b Z) is a width per
+// unit of depth; times the focal length in pixels it is pixels, and divided by 2.563 the sigma
+// whose 10-90 % rise spans it. Z is the paper's "distance of the observer to the point (Z)"
+// (MRT3), taken as the receiver's depth along the camera's axis: the perspective divides by it,
+// so a width w at depth Z spans w f / Z pixels anywhere in the image. (The Euclidean distance
+// would draw penumbrae off the view axis narrower by the cosine of their angle to the axis.)
+CANOPY_FN float ssss_sigma_pixels(float d_receiver, float d_blocker, float w_light, float view_depth, float focal_pixels) {
+    return ssss_screen_penumbra_width(d_receiver, d_blocker, w_light, view_depth) * max(focal_pixels, 0.0f) /
            SSSS_PENUMBRA_WIDTH_IN_SIGMAS;
 }
 

@@ -32,7 +32,8 @@ vec4 screen_shadow_data(vec3 p, vec3 n) {
 
     float near_plane = frame.shadow_depth_range.x;
     float d_blocker = near_plane + coarse * (frame.shadow_depth_range.y - near_plane);
-    float sigma = ssss_sigma_pixels(l.view_depth, d_blocker, light_width(), d_observer, frame.viewport.z);  // eq 6.2
+    float view_depth = -(frame.view * vec4(p, 1.0)).z;  // eq 6.2's Z: depth along the camera's axis
+    float sigma = ssss_sigma_pixels(l.view_depth, d_blocker, light_width(), view_depth, frame.viewport.z);  // eq 6.2
     vec3 view_normal = normalize(mat3(frame.view) * n);
     return vec4(hard, ssss_anisotropic_sigma(sigma, view_normal), d_observer);
 }

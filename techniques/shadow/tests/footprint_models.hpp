@@ -75,7 +75,7 @@ inline double pcss_model(const EdgeScene& e, const ProfileSample& s, double ligh
 
 // shadow.ssss: the hard shadow blurred in screen space by a separable Gaussian, K taps over
 // +-3 sigma along image x, then K along image y over the first pass's result, every pixel with
-// its own sigma: eq 6.2 at its own distance to the observer, with the slab's depth as the
+// its own sigma: eq 6.2 at its own depth along the view axis, with the slab's depth as the
 // (coarse) blocker depth and the width taken as the Gaussian's 10-90 % rise (2.563 sigma). The
 // camera looks straight down, so the floor's view normal is the view axis and the kernel is
 // round (no anisotropic shrink). Each tap reads a whole pixel, clamped to the image, at least one
@@ -83,8 +83,7 @@ inline double pcss_model(const EdgeScene& e, const ProfileSample& s, double ligh
 // pixels with sigma below 0.25 are left as they are. Every tap lies on the floor, the centre's
 // tangent plane, so the depth test keeps them all; the coarse map's dilation is assumed to reach
 // the whole penumbra. The profile is the mean over the middle half of the image across it, as
-// profile_from_image takes it: where the camera is low, rows off the centre see the floor from
-// farther away (a narrower sigma) and the second pass mixes them in.
+// profile_from_image takes it.
 inline Profile ssss_model(const EdgeScene& e, const Profile& at, double light_width, int kernel) {
     const int width = e.image_width, height = e.image_height;
     std::vector<double> hard(size_t(width) * height), sigma(hard.size());
@@ -95,7 +94,8 @@ inline Profile ssss_model(const EdgeScene& e, const Profile& at, double light_wi
             const glm::dvec3 p = origin + direction * (-origin.y / direction.y);  // on the floor
             const size_t i = size_t(y) * width + size_t(x);
             hard[i] = nearest_lit(e, edge_t(e, glm::vec3(p)));
-            sigma[i] = eq61_width(e, light_width) / glm::length(p - origin) * e.focal_pixels / 2.563;  // eq 6.2, pixels
+            const glm::dvec3 forward = glm::normalize(glm::dvec3(e.scene.camera.target - e.scene.camera.position));
+            sigma[i] = eq61_width(e, light_width) / glm::dot(p - origin, forward) * e.focal_pixels / 2.563;  // eq 6.2 at depth Z, pixels
         }
     // One pass over `in` along (dx, dy).
     auto pass = [&](const std::vector<double>& in, int dx, int dy) {

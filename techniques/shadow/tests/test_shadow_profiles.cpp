@@ -246,10 +246,9 @@ TEST_CASE("shadow.ssss: a wide penumbra seen from close by keeps its width (taps
     // depth test keeps them; a test against the centre's own distance drops them (without lazy
     // shadowing: 10-90 % width 13.7 texels, 50 % 8 texels into the shadow) or, in the second
     // pass, puts hard shadows in their place (edge along z: 17.7 texels instead of the model's
-    // 30.5). The model blurs every pixel with its own sigma: seen from this close, eq 6.2's
-    // sigma shrinks by up to a sixth across the strip's breadth and the second pass mixes those rows in.
-    // (Eq 6.2's width itself, 39 texels, is not reached: it divides by the distance to the
-    // observer, not the view depth, so off the view axis the floor's penumbra is drawn narrower.)
+    // 30.5). Eq 6.2 divides by the floor's depth along the view axis, the same for every pixel
+    // here, so the penumbra keeps eq 6.1's width on the floor (dividing by the Euclidean
+    // distance instead drew it 22 % narrower: 30.5 texels against 39).
     const float size = 1.2f;
     for (bool across_z : {false, true}) {
         const EdgeScene e = area_light_edge(LightType::rect, size, 0.5f, 1024, across_z, 0.25f);
@@ -261,6 +260,7 @@ TEST_CASE("shadow.ssss: a wide penumbra seen from close by keeps its width (taps
             const Profile want = ssss_model(e, got, size, 11);
             const EdgeMeasure m = check_against_model(what + (lazy ? "" : " lazy=false"), got, want).got;
             CHECK(std::abs(m.centre - e.boundary) <= kCentreTexels + 1.5 * pixel);
+            CHECK(m.width == doctest::Approx(eq61_width(e, size) / e.texel_floor).epsilon(0.15));  // eq 6.1 on the floor
         }
     }
 }

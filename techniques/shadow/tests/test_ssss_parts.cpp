@@ -306,7 +306,8 @@ TEST_CASE("SSSS sigma from eq 6.2, in numbers and as the screen pass writes it")
         const Ray ray = primary_ray(scene.camera, width, height, float(x) + 0.5f, float(y) + 0.5f);
         const glm::vec3 p = ray.origin + ray.direction * (-ray.origin.y / ray.direction.y);  // on the floor
         const float d_observer = glm::length(p - scene.camera.position);
-        const float sigma = sh::ssss_sigma_pixels(4.0f, 2.5f, side, d_observer, focal);
+        const float view_depth = -(view * glm::vec4(p, 1.0f)).z;  // eq 6.2's Z
+        const float sigma = sh::ssss_sigma_pixels(4.0f, 2.5f, side, view_depth, focal);
         const glm::vec2 expect = sh::ssss_anisotropic_sigma(sigma, floor_normal_view);
         const float* data = r.screen.at(x, y);
         CAPTURE(x);
