@@ -107,10 +107,15 @@ int reference(const fs::path& scene_file, const std::string& out, const Referenc
     write_png_srgb(dir / (stem + ".png"), entry.images.radiance);
     write_exr(dir / (stem + ".variance.exr"), entry.images.variance);
     write_exr(dir / (stem + ".visibility.exr"), entry.images.visibility);
+    write_exr(dir / (stem + ".pixel_visibility.exr"), entry.pixel_visibility.visibility);
     fmt::print("reference {} {}x{}: {} light x {} pixel samples, {} shadow rays, {:.2f} s{}\n", scene.name, o.width,
                o.height, o.settings.light_samples, o.settings.pixel_samples, entry.images.shadow_rays,
                entry.images.seconds, entry.from_cache ? " (from cache, key " + entry.key + ")" : "");
-    fmt::print("images: {}/{}.{{exr,png,variance.exr,visibility.exr}}\n", fs::absolute(dir).string(), stem);
+    fmt::print("pixel-centre visibility: {} light samples, {} shadow rays, {:.2f} s{}\n",
+               provider.pixel_visibility_settings().light_samples, entry.pixel_visibility.shadow_rays,
+               entry.pixel_visibility.seconds, entry.pixel_visibility_from_cache ? " (from cache, key " + entry.pixel_visibility_key + ")" : "");
+    fmt::print("images: {}/{}.{{exr,png,variance.exr,visibility.exr,pixel_visibility.exr}}\n", fs::absolute(dir).string(),
+               stem);
     return kExitOk;
 }
 
