@@ -16,8 +16,10 @@
 
 namespace canopy {
 
-// Light samples per pixel for area lights: 32 x 32 strata, so V is within about 1e-3 of the truth
-// on a straight edge and the umbra (V <= 1e-3) is decided by whether any sample is seen.
+// Light samples per pixel for area lights: 32 x 32 strata. Across a straight edge's penumbra V is
+// within 1.4e-3 RMS (6e-3 at most) of the closed form, an order below the techniques' visibility
+// errors; the umbra (V <= 1e-3) is where no sample sees the light; the umbra, penumbra and lit
+// classes change at 0.03 % of the pixels between 256 and 1024 samples (tests/test_pixel_visibility.cpp).
 inline constexpr int kPixelVisibilitySamples = 1024;
 
 struct PixelVisibilitySettings {
