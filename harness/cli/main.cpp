@@ -268,8 +268,11 @@ int main(int argc, char** argv) {
     add_reference_options(run_cmd, false);
     run_cmd->footer("Writes results.json (every sample, statistics, parameters, environment, errors), results.csv,\n"
                     "results.md (every column; stdout gets a compact table), paper.md for experiments with a [paper]\n"
-                    "table, and in images/ per case an EXR (linear float), a PNG (sRGB), an absolute-error heat map and\n"
-                    "a FLIP map with colour bars, plus the reference images. The reference's sample counts come from the\n"
+                    "table, and in images/ per case an EXR (linear float), a PNG (sRGB), the technique's pixel-centre\n"
+                    "visibility (EXR), an absolute-error heat map and a FLIP map with colour bars, plus the reference\n"
+                    "images. Errors: whole-image (RMSE, PSNR, SSIM, FLIP: how far the image is from the truth) and\n"
+                    "technique-isolated (visibility RMSE/MAE: how wrong the technique's shadow is, at the same pixel\n"
+                    "centres as a 1024-light-sample reference). The reference's sample counts come from the\n"
                     "experiment's [reference] table; references are cached by content.\n"
                     "Output folder: a new or empty one starts a run; one holding a run of the same experiment, config\n"
                     "(content hash), options (--quick, --images, --no-reference), device, build and thread count\n"
