@@ -38,6 +38,7 @@ public:
         };
     }
     FramePlan plan(const ParamSet&) const override { return {}; }
+    ErrorColumns error_columns() const override { return {}; }
 };
 
 const RegisterTechnique<FakeTechnique> registered_fake;

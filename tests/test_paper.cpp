@@ -72,6 +72,7 @@ CaseResult fake_case(const std::string& technique, long long kernel, double gpu_
     c.gpu_frame.stats.count = 20;
     ImageMetrics m{};
     m.penumbra_rmse = penumbra_rmse;
+    m.columns = {.visibility = true, .shadow_regions = true};  // the shadow family's
     c.image_error = m;
     return c;
 }

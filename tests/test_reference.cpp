@@ -10,6 +10,7 @@
 #include "scene/camera.hpp"
 #include "scene/geometry.hpp"
 #include "shading.h"
+#include "support/closed_forms.hpp"
 #include "support/temp_folder.hpp"
 
 #include <doctest/doctest.h>
@@ -23,6 +24,7 @@
 #include <numeric>
 
 using namespace canopy;
+using test::polygon_irradiance;
 
 namespace {
 
@@ -121,18 +123,6 @@ PointEstimate estimate_at(const EmbreeScene& embree, const PreparedLight& light,
     mean_and_sigma(visible, result.visible, result.visible_sigma);
     result.predicted_sigma = std::sqrt(predicted_variance) / repeats;
     return result;
-}
-
-// Lambert's formula for a uniform polygonal emitter fully above the receiver's horizon:
-// E = L/2 * |sum_i angle(u_i, u_i+1) * n . normalize(u_i x u_i+1)|, u_i the unit vectors to the corners.
-double polygon_irradiance(const std::vector<glm::dvec3>& corners, glm::dvec3 p, glm::dvec3 n, double radiance) {
-    double sum = 0;
-    for (size_t i = 0; i < corners.size(); ++i) {
-        const glm::dvec3 a = glm::normalize(corners[i] - p);
-        const glm::dvec3 b = glm::normalize(corners[(i + 1) % corners.size()] - p);
-        sum += std::acos(std::clamp(glm::dot(a, b), -1.0, 1.0)) * glm::dot(n, glm::normalize(glm::cross(a, b)));
-    }
-    return 0.5 * radiance * std::abs(sum);
 }
 
 // |mean - exact| within 4 sigma of the spread measured across independent estimates (plus float

@@ -78,6 +78,12 @@ RunRecord awkward_record(const RunIdentity& id) {
     r.pixel_samples = 4;
     r.error_map_scale = 1.0 / 3.0;
     r.image_png = "images/reference_tiny_96x64.png";
+    r.pixel_visibility_key = "0123456789abcdef";
+    r.pixel_visibility_from_cache = true;
+    r.pixel_visibility_seconds = 0.1 + 0.2;
+    r.pixel_visibility_shadow_rays = 1ull << 40;
+    r.pixel_visibility_samples = 1024;
+    r.pixel_visibility_exr = "images/reference_tiny_96x64.pixel_visibility.exr";
     run.references.push_back(r);
     CaseResult c;
     c.id = "tiny_96x64_shadow.pcf_kernel-3";
@@ -107,7 +113,15 @@ RunRecord awkward_record(const RunIdentity& id) {
     m.umbra_pixels = 10;
     m.lit_pixels = 20;
     m.penumbra_pixels = 30;
+    m.visibility_mae = 1.0 / 3.0;
+    m.visibility_rmse = std::numeric_limits<double>::quiet_NaN();
+    m.visibility_penumbra_rmse = 0.25;
+    m.visibility_pixels = 40;
+    m.visibility_penumbra_pixels = 5;
+    m.visibility_excluded = 1e-7;
+    m.columns = {.visibility = true, .shadow_regions = false};
     c.image_error = m;
+    c.visibility_exr = "images/a.visibility.exr";
     c.image_exr = "images/a.exr";
     c.image_png = "images/a.png";
     c.error_map_png = "images/a.error.png";
@@ -153,6 +167,9 @@ TEST_CASE("results.json reads back exactly: every field, NaN, infinity, every di
     CHECK(back.cases[0].gpu_frame.samples_ms[2] == 1.0 / 7.0);
     CHECK(std::isinf(back.cases[0].image_error->psnr));
     CHECK(std::isnan(back.cases[0].image_error->light_bleeding));
+    CHECK(back.cases[0].image_error->visibility_mae == 1.0 / 3.0);
+    CHECK(back.cases[0].image_error->columns == ErrorColumns{.visibility = true, .shadow_regions = false});
+    CHECK(back.references[0].pixel_visibility_seconds == 0.1 + 0.2);
     CHECK(std::get<bool>(back.cases[0].params[0].second) == true);
     CHECK(std::get<long long>(back.cases[0].params[1].second) == 3);
     CHECK(std::get<double>(back.cases[0].params[3].second) == 1.0);
@@ -165,7 +182,7 @@ TEST_CASE("results.json of another version or no results.json at all are refused
     fs::create_directories(dir);
     write_text_atomically(dir / "results.json", R"({"canopy_results_version": 1, "cases": []})");
     CHECK_THROWS_WITH(read_json_report(dir / "results.json"),
-                      doctest::Contains("results version 1, this canopy reads version 2"));
+                      doctest::Contains("results version 1, this canopy reads version 3"));
     write_text_atomically(dir / "results.json", "{ not json");
     CHECK_THROWS_WITH(read_json_report(dir / "results.json"), doctest::Contains("not a canopy results.json"));
 }

@@ -107,10 +107,15 @@ int reference(const fs::path& scene_file, const std::string& out, const Referenc
     write_png_srgb(dir / (stem + ".png"), entry.images.radiance);
     write_exr(dir / (stem + ".variance.exr"), entry.images.variance);
     write_exr(dir / (stem + ".visibility.exr"), entry.images.visibility);
+    write_exr(dir / (stem + ".pixel_visibility.exr"), entry.pixel_visibility.visibility);
     fmt::print("reference {} {}x{}: {} light x {} pixel samples, {} shadow rays, {:.2f} s{}\n", scene.name, o.width,
                o.height, o.settings.light_samples, o.settings.pixel_samples, entry.images.shadow_rays,
                entry.images.seconds, entry.from_cache ? " (from cache, key " + entry.key + ")" : "");
-    fmt::print("images: {}/{}.{{exr,png,variance.exr,visibility.exr}}\n", fs::absolute(dir).string(), stem);
+    fmt::print("pixel-centre visibility: {} light samples, {} shadow rays, {:.2f} s{}\n",
+               provider.pixel_visibility_settings().light_samples, entry.pixel_visibility.shadow_rays,
+               entry.pixel_visibility.seconds, entry.pixel_visibility_from_cache ? " (from cache, key " + entry.pixel_visibility_key + ")" : "");
+    fmt::print("images: {}/{}.{{exr,png,variance.exr,visibility.exr,pixel_visibility.exr}}\n", fs::absolute(dir).string(),
+               stem);
     return kExitOk;
 }
 
@@ -263,8 +268,11 @@ int main(int argc, char** argv) {
     add_reference_options(run_cmd, false);
     run_cmd->footer("Writes results.json (every sample, statistics, parameters, environment, errors), results.csv,\n"
                     "results.md (every column; stdout gets a compact table), paper.md for experiments with a [paper]\n"
-                    "table, and in images/ per case an EXR (linear float), a PNG (sRGB), an absolute-error heat map and\n"
-                    "a FLIP map with colour bars, plus the reference images. The reference's sample counts come from the\n"
+                    "table, and in images/ per case an EXR (linear float), a PNG (sRGB), the technique's pixel-centre\n"
+                    "visibility (EXR), an absolute-error heat map and a FLIP map with colour bars, plus the reference\n"
+                    "images. Errors: whole-image (RMSE, PSNR, SSIM, FLIP: how far the image is from the truth) and\n"
+                    "technique-isolated (visibility RMSE/MAE: how wrong the technique's shadow is, at the same pixel\n"
+                    "centres as a 1024-light-sample reference). The reference's sample counts come from the\n"
                     "experiment's [reference] table; references are cached by content.\n"
                     "Output folder: a new or empty one starts a run; one holding a run of the same experiment, config\n"
                     "(content hash), options (--quick, --images, --no-reference), device, build and thread count\n"

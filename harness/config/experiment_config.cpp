@@ -32,8 +32,10 @@ constexpr uint64_t kMaxCases = 100000;
 const char* const kExperimentExample =
     "[experiment]\n    scenes = [\"../scenes/spheres.toml\"]\n\n    [[technique]]\n    name = \"shadow.pcf\"";
 
-// A scene variant's overrides: its name, and the width of its shadow light (a rect's side, a
-// sphere's diameter: the width penumbra estimates use), e.g. to sweep the light size (Fig 6.9).
+// A scene variant's overrides: its name, the width of its shadow light (a rect's side, a
+// sphere's diameter: the width penumbra estimates use), e.g. to sweep the light size (Fig 6.9),
+// and whether its objects cast shadows (false: a shadow-free variant, where every technique's
+// visibility should be 1 wherever the light reaches).
 void apply_scene_variant(TomlReader& variant, Scene& scene) {
     scene.name = variant.get_string("name", scene.name);
     if (const auto problem = file_name_problem(scene.name))
@@ -55,6 +57,10 @@ void apply_scene_variant(TomlReader& variant, Scene& scene) {
                                 "light_size applies to a shadow-casting rect or sphere light");
         if (light->type == LightType::rect) light->rect_size = glm::vec2(float(size));
         else light->sphere_radius = float(0.5 * size);
+    }
+    if (variant.has("casts_shadows")) {
+        const bool casts = variant.get_bool("casts_shadows", true);
+        for (Object& object : scene.objects) object.casts_shadows = casts;
     }
     variant.finish();
 }
@@ -85,7 +91,8 @@ std::vector<Scene> read_scenes(TomlReader& reader, std::vector<std::filesystem::
             file_node = variant->node("file");
             if (!file_node)
                 throw variant->error("file", "a scene variant needs 'file'",
-                                     "write it as: { file = \"../scenes/at-at.toml\", name = \"at-at-small\", light_size = 0.4 }");
+                                     "write it as: { file = \"../scenes/at-at.toml\", name = \"at-at-small\", light_size = 0.4 } "
+                                     "or { file = \"../scenes/at-at.toml\", name = \"at-at-unshadowed\", casts_shadows = false }");
         }
         const auto* name = file_node->as_string();
         if (!name)

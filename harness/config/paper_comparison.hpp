@@ -28,7 +28,10 @@ struct PaperRow {
 struct PaperClaim {
     std::string text;        // the paper's claim in words
     std::string left, right; // row labels
-    std::string metric = "time";  // "time" (GPU median ms) or an error metric: rmse, psnr, ssim, flip, bleeding, over_darkening, penumbra_rmse
+    // "time" (GPU median ms) or an error metric: rmse, psnr, ssim, flip (whole image); bleeding,
+    // over_darkening, penumbra_rmse (shadow regions); visibility_rmse, visibility_mae,
+    // visibility_penumbra_rmse (technique-isolated).
+    std::string metric = "time";
     std::string relation = "less";  // less | greater | about
     double tolerance = 0.15; // about: |left/right - 1| <= tolerance
     std::string column;      // only this column ("" = every column)

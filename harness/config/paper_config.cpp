@@ -10,8 +10,9 @@ namespace canopy {
 
 namespace {
 
-const std::vector<std::string> kMetrics = {"time", "rmse", "psnr", "ssim", "flip", "bleeding", "over_darkening",
-                                           "penumbra_rmse"};
+const std::vector<std::string> kMetrics = {"time",          "rmse",           "psnr",           "ssim",
+                                           "flip",          "bleeding",       "over_darkening", "penumbra_rmse",
+                                           "visibility_rmse", "visibility_mae", "visibility_penumbra_rmse"};
 const std::vector<std::string> kRelations = {"less", "greater", "about"};
 
 std::string one_of(TomlReader& reader, std::string_view key, const std::string& fallback,

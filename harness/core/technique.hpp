@@ -3,6 +3,7 @@
 // The harness builds only what the plan asks for (Falcor-style: passes declare their inputs).
 #pragma once
 
+#include "core/error_columns.hpp"
 #include "core/param.hpp"
 
 #include <array>
@@ -110,6 +111,9 @@ public:
     virtual std::string paper() const = 0;        // where it comes from
     virtual std::vector<ParamSpec> params() const = 0;
     virtual FramePlan plan(const ParamSet& params) const = 0;
+    // Which error columns mean something for this technique: its family's declaration
+    // (core/error_columns.hpp); reports show the others as "n/a".
+    virtual ErrorColumns error_columns() const = 0;
     // A refused combination of `params`, or nullopt. Checked by resolve_params when a config's
     // cases are expanded, before anything runs or is written.
     virtual std::optional<ParamConflict> conflict(const ParamSet& params) const;

@@ -4,6 +4,7 @@
 #include "metrics/pixel_error.hpp"
 #include "metrics/shadow_error.hpp"
 #include "metrics/ssim.hpp"
+#include "metrics/visibility_error.hpp"
 
 #include <fmt/format.h>
 
@@ -12,8 +13,8 @@
 
 namespace canopy {
 
-ImageMetrics compute_metrics(const Image& test, const Image& reference, const Image* reference_visibility,
-                             const MetricOptions& options, std::vector<float>* flip_map_out) {
+ImageMetrics compute_metrics(const Image& test, const Image& reference, const PixelVisibilityPair* visibility,
+                             ErrorColumns columns, const MetricOptions& options, std::vector<float>* flip_map_out) {
     require_same_size(test, reference, "compute_metrics");
 
     ImageMetrics metrics{};
@@ -35,19 +36,37 @@ ImageMetrics compute_metrics(const Image& test, const Image& reference, const Im
 
     metrics.nonfinite_pixels = count_nonfinite_pixels(test);
 
-    if (reference_visibility) {
-        const ShadowError shadow =
-            compute_shadow_error(test, reference, *reference_visibility, options.visibility_epsilon);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    metrics.columns = columns;
+    metrics.light_bleeding = metrics.over_darkening = metrics.penumbra_rmse = nan;
+    metrics.umbra_pixels = metrics.lit_pixels = metrics.penumbra_pixels = 0;
+    metrics.visibility_mae = metrics.visibility_rmse = metrics.visibility_penumbra_rmse = nan;
+    metrics.visibility_pixels = metrics.visibility_penumbra_pixels = 0;
+    metrics.visibility_excluded = nan;
+    if (!visibility || !(columns.visibility || columns.shadow_regions)) return metrics;
+
+    require_same_size(visibility->technique, test, "compute_metrics (technique visibility)");
+    require_same_size(visibility->reference, test, "compute_metrics (reference visibility)");
+    const PixelClasses classes = classify_pixels(visibility->technique, visibility->reference, options.pixel_classes);
+    if (columns.shadow_regions) {
+        const ShadowError shadow = compute_shadow_error(test, reference, shadow_region_visibility(visibility->reference, classes),
+                                                        options.visibility_epsilon);
         metrics.light_bleeding = shadow.light_bleeding;
         metrics.over_darkening = shadow.over_darkening;
         metrics.penumbra_rmse = shadow.penumbra_rmse;
         metrics.umbra_pixels = shadow.umbra_pixels;
         metrics.lit_pixels = shadow.lit_pixels;
         metrics.penumbra_pixels = shadow.penumbra_pixels;
-    } else {
-        const double nan = std::numeric_limits<double>::quiet_NaN();
-        metrics.light_bleeding = metrics.over_darkening = metrics.penumbra_rmse = nan;
-        metrics.umbra_pixels = metrics.lit_pixels = metrics.penumbra_pixels = 0;
+    }
+    if (columns.visibility) {
+        const VisibilityError error =
+            compute_visibility_error(visibility->technique, visibility->reference, classes, options.visibility_epsilon);
+        metrics.visibility_mae = error.mae;
+        metrics.visibility_rmse = error.rmse;
+        metrics.visibility_penumbra_rmse = error.penumbra_rmse;
+        metrics.visibility_pixels = error.pixels;
+        metrics.visibility_penumbra_pixels = error.penumbra_pixels;
+        metrics.visibility_excluded = error.excluded_fraction;
     }
     return metrics;
 }

@@ -1,8 +1,10 @@
 // Every image-error metric of a test image against the ray-traced reference, in one call.
 #pragma once
 
+#include "core/error_columns.hpp"
 #include "core/image.hpp"
 #include "metrics/flip.hpp"
+#include "metrics/pixel_classes.hpp"
 
 #include <string>
 #include <vector>
@@ -27,24 +29,44 @@ struct ImageMetrics {
 
     long long nonfinite_pixels;
 
-    // Shadow metrics (shadow_error.hpp); NaN (and counts 0) when no visibility image was given or
-    // the visibility has no such pixels.
+    // Shadow-region metrics (shadow_error.hpp) over the reference's pixel-centre umbra, lit and
+    // penumbra pixels off silhouettes (pixel_classes.hpp); NaN (and counts 0) when not computed
+    // or the class is empty.
     double light_bleeding;
     double over_darkening;
     double penumbra_rmse;
     long long umbra_pixels, lit_pixels, penumbra_pixels;
+
+    // Technique-isolated (visibility_error.hpp): the technique's visibility against the
+    // reference's at the same pixel centres; NaN (and counts 0) when not computed or empty.
+    double visibility_mae, visibility_rmse, visibility_penumbra_rmse;
+    long long visibility_pixels, visibility_penumbra_pixels;
+    double visibility_excluded;  // fraction of the pixels the light reaches left out (pixel_classes.hpp)
+
+    // The groups above that mean something for the technique (its family's declaration); a report
+    // shows the others as "n/a". They are NaN.
+    ErrorColumns columns;
 };
 
 struct MetricOptions {
     double flip_pixels_per_degree = default_flip_pixels_per_degree;
     double visibility_epsilon = 1e-3;
+    PixelClassOptions pixel_classes;
 };
 
-// reference_visibility may be null (no shadow metrics). When flip_map_out is given it receives the
-// per-pixel FLIP map (for flip_heatmap) so it need not be computed twice.
+// The technique's and the reference's pixel-centre visibility (core/pixel_visibility.hpp).
+struct PixelVisibilityPair {
+    const Image& technique;
+    const Image& reference;
+};
+
+// `visibility` may be null: no shadow-region or visibility metrics. `columns`: which of those the
+// technique declares meaningful; only those are computed. When flip_map_out is given it receives
+// the per-pixel FLIP map (for flip_heatmap) so it need not be computed twice.
 // Throws std::invalid_argument on mismatched or empty images.
-ImageMetrics compute_metrics(const Image& test, const Image& reference, const Image* reference_visibility,
-                             const MetricOptions& options = {}, std::vector<float>* flip_map_out = nullptr);
+ImageMetrics compute_metrics(const Image& test, const Image& reference, const PixelVisibilityPair* visibility,
+                             ErrorColumns columns, const MetricOptions& options = {},
+                             std::vector<float>* flip_map_out = nullptr);
 
 // A metric value for reports: "inf", "-inf", "nan", or up to 6 significant digits.
 std::string format_metric_value(double value);

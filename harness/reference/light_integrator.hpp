@@ -36,6 +36,10 @@ struct LightEstimate {
     glm::vec3 irradiance{0.0f};  // estimate of the integral of E * V over the light
     glm::vec3 variance{0.0f};    // of that estimate (sample variance / N; conservative under stratification)
     float visible_fraction = 0.0f;  // fraction of samples above the horizon and unoccluded (if asked for)
+    // Integral of E * V over the integral of E, from the same samples: the irradiance-weighted
+    // visibility that a raster technique's visibility stands for (0 or 1 for point-like lights);
+    // -1 where no sample carries irradiance (the light does not reach the point).
+    float weighted_visibility = -1.0f;
 };
 
 // `key` makes the light samples of this shading point independent of all others.
@@ -72,6 +76,7 @@ LightEstimate integrate_light(const PreparedLight& light, const SurfacePoint& su
         const float visibility = (above_horizon && !packet.occluded(0)) ? 1.0f : 0.0f;
         estimate.irradiance = irradiance * visibility;
         estimate.visible_fraction = visibility;
+        if (carries) estimate.weighted_visibility = visibility;
         return estimate;
     }
 
@@ -79,6 +84,7 @@ LightEstimate integrate_light(const PreparedLight& light, const SurfacePoint& su
         // Inside the emitter every direction sees radiance L = power / (pi r^2): E = pi L, unoccluded.
         estimate.irradiance = light.power / (light.sphere_radius * light.sphere_radius);
         estimate.visible_fraction = 1.0f;
+        estimate.weighted_visibility = 1.0f;
         return estimate;
     }
 
@@ -90,7 +96,7 @@ LightEstimate integrate_light(const PreparedLight& light, const SurfacePoint& su
     AreaLightSamples samples;
     // Sums of (contribution - first contribution): shifted data keeps the variance accurate in float.
     float reference_value = -1.0f;
-    double sum = 0.0, sum_squares = 0.0;
+    double sum = 0.0, sum_squares = 0.0, weight_sum = 0.0, seen_weight_sum = 0.0;
     int visible = 0;
     for (int first = 0; first < count; first += ShadowPacket::kWidth) {
         const int lanes = std::min(ShadowPacket::kWidth, count - first);
@@ -112,7 +118,8 @@ LightEstimate integrate_light(const PreparedLight& light, const SurfacePoint& su
         packet.active = active;
         tracer.trace(packet);
         if (reference_value < 0.0f) reference_value = samples.weight[0];
-        float packet_sum = 0.0f, packet_squares = 0.0f, packet_visible = 0.0f;
+        float packet_sum = 0.0f, packet_squares = 0.0f, packet_visible = 0.0f, packet_weight = 0.0f,
+              packet_seen_weight = 0.0f;
         for (int lane = 0; lane < ShadowPacket::kWidth; ++lane) {
             const float in_range = lane < lanes ? 1.0f : 0.0f;
             const float occluded = float(int(packet.valid[lane] != 0) & int(packet.rays.tfar[lane] < 0.0f));
@@ -121,10 +128,14 @@ LightEstimate integrate_light(const PreparedLight& light, const SurfacePoint& su
             packet_sum += deviation;
             packet_squares += deviation * deviation;
             packet_visible += seen;
+            packet_weight += samples.weight[lane] * in_range;
+            packet_seen_weight += seen * samples.weight[lane];
         }
         sum += packet_sum;
         sum_squares += packet_squares;
         visible += int(packet_visible);
+        weight_sum += packet_weight;
+        seen_weight_sum += packet_seen_weight;
     }
     const double mean_deviation = sum / count;
     const double variance_of_mean =
@@ -132,6 +143,7 @@ LightEstimate integrate_light(const PreparedLight& light, const SurfacePoint& su
     estimate.irradiance = light.power * float(double(reference_value) + mean_deviation);
     estimate.variance = light.power * light.power * float(variance_of_mean);
     estimate.visible_fraction = float(visible) / float(count);
+    if (weight_sum > 0.0) estimate.weighted_visibility = float(std::min(seen_weight_sum / weight_sum, 1.0));
     return estimate;
 }
 

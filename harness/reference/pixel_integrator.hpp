@@ -5,6 +5,7 @@
 
 #include "reference/embree_scene.hpp"
 #include "reference/light_integrator.hpp"
+#include "reference/primary_hit.hpp"
 #include "reference/reference_settings.hpp"
 #include "scene/camera.hpp"
 
@@ -88,45 +89,13 @@ PixelEstimate PixelIntegrator::integrate(int x, int y, Tracer& tracer) const {
 template <class Tracer>
 PixelIntegrator::SubpixelResult PixelIntegrator::shade(const Ray& ray, uint64_t key, Tracer& tracer) const {
     SubpixelResult result;
-    // Clip to the camera's near and far planes like the rasteriser (planes, not spheres).
-    const float forward = glm::dot(ray.direction, camera_forward_);
-    RTCRayHit hit{};  // every field defined; Embree writes the hit
-    hit.ray.org_x = ray.origin.x;
-    hit.ray.org_y = ray.origin.y;
-    hit.ray.org_z = ray.origin.z;
-    hit.ray.dir_x = ray.direction.x;
-    hit.ray.dir_y = ray.direction.y;
-    hit.ray.dir_z = ray.direction.z;
-    hit.ray.tnear = forward > 0.0f ? camera_.near_plane / forward : 0.0f;
-    hit.ray.tfar = forward > 0.0f ? camera_.far_plane / forward : 0.0f;
-    hit.ray.time = 0.0f;
-    hit.ray.mask = 0xffffffffu;
-    hit.ray.id = 0;
-    hit.ray.flags = 0;
-    hit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    hit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-    RTCIntersectContext context{};
-    rtcInitIntersectContext(&context);
-    rtcIntersect1(embree_.visible_scene(), &context, &hit);
-    if (hit.hit.geomID == RTC_INVALID_GEOMETRY_ID) {
+    const std::optional<PrimaryHit> hit = trace_primary(embree_, camera_, camera_forward_, ray);
+    if (!hit) {
         result.radiance = background_;
         return result;
     }
-
-    SurfacePoint surface;
-    const float distance = hit.ray.tfar;
-    surface.position = ray.origin + distance * ray.direction;
-    glm::vec3 geometric_normal(hit.hit.Ng_x, hit.hit.Ng_y, hit.hit.Ng_z);
-    const float geometric_length = glm::length(geometric_normal);
-    geometric_normal = geometric_length > 0.0f ? geometric_normal / geometric_length : -ray.direction;
-    if (glm::dot(geometric_normal, ray.direction) > 0.0f) geometric_normal = -geometric_normal;
-    glm::vec3 normal = embree_.shading_normal(hit.hit.geomID, hit.hit.primID, hit.hit.u, hit.hit.v);
-    if (normal == glm::vec3(0.0f)) normal = geometric_normal;
-    // Two-sided surfaces: shade the side the camera sees, exactly as forward_lighting.glsl.
-    if (glm::dot(normal, camera_.position - surface.position) < 0.0f) normal = -normal;
-    surface.normal = normal;
-    surface.origin = surface.position +
-                     shadow_ray_offset(surface.position, distance, embree_.extent()) * geometric_normal;
+    const SurfacePoint& surface = hit->surface;
+    const glm::vec3 normal = surface.normal;
 
     glm::vec3 irradiance(0.0f), irradiance_variance(0.0f);
     for (size_t index = 0; index < lights_.size(); ++index) {
@@ -140,7 +109,7 @@ PixelIntegrator::SubpixelResult PixelIntegrator::shade(const Ray& ray, uint64_t 
             result.visible_fraction = estimate.visible_fraction;
         }
     }
-    const glm::vec3 albedo = embree_.material(hit.hit.geomID).albedo;
+    const glm::vec3 albedo = embree_.material(hit->geometry).albedo;
     result.radiance = shader::lambert_radiance(albedo, irradiance, 1.0f, ambient_);
     const glm::vec3 scale = albedo / shader::PI;
     result.light_variance = scale * scale * irradiance_variance;

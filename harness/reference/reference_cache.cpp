@@ -53,13 +53,20 @@ void hash_vec(Fnv1a64& hash, glm::vec3 v) {
 }
 
 const char* kImageNames[3] = {"radiance", "variance", "visibility"};
+const char* kPixelVisibilityName = "pixel_visibility";
 
 std::filesystem::path image_path(const std::filesystem::path& dir, const std::string& key, const char* name) {
     return dir / fmt::format("{}.{}.exr", key, name);
 }
 
+// What the radiance and pixel-visibility files record about their render.
+struct RenderStats {
+    double seconds = 0;
+    uint64_t shadow_rays = 0;
+};
+
 void write_exr(const std::filesystem::path& path, const Image& image, const std::string& key,
-               const ReferenceImages* stats) {
+               const RenderStats* stats) {
     // Same folder (so rename is atomic), unique per process and call, and still ".exr" so
     // OpenImageIO picks the EXR writer.
     static std::atomic<uint64_t> counter{0};
@@ -93,7 +100,7 @@ void write_exr(const std::filesystem::path& path, const Image& image, const std:
 }
 
 // Reads an RGBA float image written by write_exr; nullopt when it is missing or does not fit.
-std::optional<Image> read_exr(const std::filesystem::path& path, const std::string& key, ReferenceImages* stats) {
+std::optional<Image> read_exr(const std::filesystem::path& path, const std::string& key, RenderStats* stats) {
     std::error_code ignored;
     if (!std::filesystem::is_regular_file(path, ignored)) return std::nullopt;
     auto input = OIIO::ImageInput::open(path.string());
@@ -121,17 +128,12 @@ std::optional<Image> read_exr(const std::filesystem::path& path, const std::stri
 
 }  // namespace
 
-std::string reference_cache_key(const Scene& scene, const std::vector<TriangleMesh>& meshes, int width, int height,
-                                const ReferenceSettings& settings) {
-    Fnv1a64 hash;
-    hash.add_string("canopy reference");
-    hash.add(int32_t(kReferenceShadingVersion));
-    hash.add(int32_t(width));
-    hash.add(int32_t(height));
-    hash.add(int32_t(settings.light_samples));
-    hash.add(int32_t(settings.pixel_samples));
-    hash.add(uint64_t(settings.seed));
+namespace {
 
+// Every input of the scene that changes an image: the camera, ambient, background, every light
+// (all fields but `where`), and every object's material, casts_shadows, world matrix per instance
+// and mesh vertices and indices.
+void hash_scene(Fnv1a64& hash, const Scene& scene, const std::vector<TriangleMesh>& meshes) {
     const Camera& camera = scene.camera;
     hash_vec(hash, camera.position);
     hash_vec(hash, camera.target);
@@ -177,12 +179,43 @@ std::string reference_cache_key(const Scene& scene, const std::vector<TriangleMe
         }
         hash.bytes(mesh->indices.data(), mesh->indices.size() * sizeof(uint32_t));
     }
+}
+
+}  // namespace
+
+std::string reference_cache_key(const Scene& scene, const std::vector<TriangleMesh>& meshes, int width, int height,
+                                const ReferenceSettings& settings) {
+    Fnv1a64 hash;
+    hash.add_string("canopy reference");
+    hash.add(int32_t(kReferenceShadingVersion));
+    hash.add(int32_t(width));
+    hash.add(int32_t(height));
+    hash.add(int32_t(settings.light_samples));
+    hash.add(int32_t(settings.pixel_samples));
+    hash.add(uint64_t(settings.seed));
+    hash_scene(hash, scene, meshes);
+    return fmt::format("{:016x}", hash.value());
+}
+
+std::string pixel_visibility_cache_key(const Scene& scene, const std::vector<TriangleMesh>& meshes, int width,
+                                       int height, const PixelVisibilitySettings& settings) {
+    Fnv1a64 hash;
+    hash.add_string("canopy pixel visibility");
+    hash.add(int32_t(kPixelVisibilityVersion));
+    hash.add(int32_t(width));
+    hash.add(int32_t(height));
+    hash.add(int32_t(settings.light_samples));
+    hash.add(uint64_t(settings.seed));
+    hash.add(settings.position_in_pixel_x);
+    hash.add(settings.position_in_pixel_y);
+    hash_scene(hash, scene, meshes);
     return fmt::format("{:016x}", hash.value());
 }
 
 std::optional<ReferenceImages> load_cached_reference(const std::filesystem::path& dir, const std::string& key) {
     ReferenceImages images;
-    std::optional<Image> radiance = read_exr(image_path(dir, key, kImageNames[0]), key, &images);
+    RenderStats stats;
+    std::optional<Image> radiance = read_exr(image_path(dir, key, kImageNames[0]), key, &stats);
     std::optional<Image> variance = read_exr(image_path(dir, key, kImageNames[1]), key, nullptr);
     std::optional<Image> visibility = read_exr(image_path(dir, key, kImageNames[2]), key, nullptr);
     if (!radiance || !variance || !visibility) return std::nullopt;
@@ -190,21 +223,47 @@ std::optional<ReferenceImages> load_cached_reference(const std::filesystem::path
         return image.width == radiance->width && image.height == radiance->height;
     };
     if (!same_size(*variance) || !same_size(*visibility)) return std::nullopt;
+    images.seconds = stats.seconds;
+    images.shadow_rays = stats.shadow_rays;
     images.radiance = std::move(*radiance);
     images.variance = std::move(*variance);
     images.visibility = std::move(*visibility);
     return images;
 }
 
-void store_reference(const std::filesystem::path& dir, const std::string& key, const ReferenceImages& images) {
+namespace {
+
+void create_cache_folder(const std::filesystem::path& dir) {
     std::error_code error;
     std::filesystem::create_directories(dir, error);
     if (error)
         throw std::runtime_error(fmt::format("cannot create the reference cache folder '{}': {}", dir.string(),
                                              error.message()));
-    write_exr(image_path(dir, key, kImageNames[0]), images.radiance, key, &images);
+}
+
+}  // namespace
+
+void store_reference(const std::filesystem::path& dir, const std::string& key, const ReferenceImages& images) {
+    create_cache_folder(dir);
+    const RenderStats stats{images.seconds, images.shadow_rays};
+    write_exr(image_path(dir, key, kImageNames[0]), images.radiance, key, &stats);
     write_exr(image_path(dir, key, kImageNames[1]), images.variance, key, nullptr);
     write_exr(image_path(dir, key, kImageNames[2]), images.visibility, key, nullptr);
+}
+
+std::optional<PixelVisibilityRender> load_cached_pixel_visibility(const std::filesystem::path& dir,
+                                                                  const std::string& key) {
+    RenderStats stats;
+    std::optional<Image> visibility = read_exr(image_path(dir, key, kPixelVisibilityName), key, &stats);
+    if (!visibility) return std::nullopt;
+    return PixelVisibilityRender{std::move(*visibility), stats.seconds, stats.shadow_rays};
+}
+
+void store_pixel_visibility(const std::filesystem::path& dir, const std::string& key,
+                            const PixelVisibilityRender& render) {
+    create_cache_folder(dir);
+    const RenderStats stats{render.seconds, render.shadow_rays};
+    write_exr(image_path(dir, key, kPixelVisibilityName), render.visibility, key, &stats);
 }
 
 }  // namespace canopy

@@ -1,6 +1,7 @@
 #include "render/frame_renderer.hpp"
 
 #include "gpu/rendering.hpp"
+#include "core/pixel_visibility.hpp"
 #include "render/texture_readback.hpp"
 #include "scene/camera.hpp"
 
@@ -148,7 +149,11 @@ std::optional<std::string> unsupported_reason(const GpuContext& gpu, const Scene
 
 FrameRenderer::FrameRenderer(const GpuContext& gpu, const Scene& scene, const std::vector<TriangleMesh>& meshes,
                              uint32_t width, uint32_t height, const FramePlan& plan)
-    : gpu_(gpu), plan_(plan), background_(scene.background) {
+    : gpu_(gpu),
+      plan_(plan),
+      background_(scene.background),
+      near_plane_(scene.camera.near_plane),
+      far_plane_(scene.camera.far_plane) {
     if (auto reason = unsupported_reason(gpu, scene, plan)) throw GpuError(*reason);
     scene_ = std::make_unique<GpuScene>(gpu, ledger_, scene, meshes);
     if (plan.shadow_map || plan.moment_map)
@@ -369,19 +374,55 @@ FrameTiming FrameRenderer::render() {
     return timing;
 }
 
+namespace {
+
+// Copies the whole of `texture` (in `layout`, left in it) into host memory, 4 bytes per texel
+// for depth, 16 for RGBA32F.
+std::vector<float> read_texels(const GpuContext& gpu, const Texture& texture, VkImageLayout layout, size_t channels) {
+    const size_t count = size_t(texture.width()) * texture.height() * channels;
+    MemoryLedger readback_ledger;  // transient, not charged to the technique
+    Buffer staging(gpu, readback_ledger, "readback", count * sizeof(float), VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
+    VkCommandBuffer commands = gpu.begin_commands();
+    const bool move = layout != VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+    if (move) transition(commands, texture, layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+    VkBufferImageCopy region{};
+    region.imageSubresource = {texture.aspect(), 0, 0, 1};
+    region.imageExtent = {texture.width(), texture.height(), 1};
+    vkCmdCopyImageToBuffer(commands, texture.image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, staging.handle(), 1, &region);
+    if (move) transition(commands, texture, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, layout);
+    gpu.submit_and_wait(commands);
+    std::vector<float> texels(count);
+    std::memcpy(texels.data(), staging.mapped(), count * sizeof(float));
+    return texels;
+}
+
+}  // namespace
+
 Image FrameRenderer::read_color() const {
     const Texture& color = lit_pass_->color();
-    const size_t bytes = size_t(color.width()) * color.height() * 4 * sizeof(float);
-    MemoryLedger readback_ledger;  // transient, not charged to the technique
-    Buffer staging(gpu_, readback_ledger, "readback", bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
-    VkCommandBuffer commands = gpu_.begin_commands();
-    VkBufferImageCopy region{};
-    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    region.imageExtent = {color.width(), color.height(), 1};
-    vkCmdCopyImageToBuffer(commands, color.image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, staging.handle(), 1, &region);
-    gpu_.submit_and_wait(commands);
     Image image(int(color.width()), int(color.height()));
-    std::memcpy(image.pixels.data(), staging.mapped(), bytes);
+    image.pixels = read_texels(gpu_, color, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, 4);
+    // Alpha holds the technique's visibility (read_pixel_visibility); the image users see is opaque.
+    for (size_t i = 3; i < image.pixels.size(); i += 4) image.pixels[i] = 1.0f;
+    return image;
+}
+
+Image FrameRenderer::read_pixel_visibility() const {
+    namespace pv = pixel_visibility;
+    const Texture& color = lit_pass_->color();
+    const std::vector<float> rgba = read_texels(gpu_, color, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, 4);
+    const std::vector<float> depth = read_texels(gpu_, lit_pass_->depth(), VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, 1);
+    Image image(int(color.width()), int(color.height()));
+    // Stored depth is glm::perspective's (zero to one): z = f (d - n) / ((f - n) d) for view depth d,
+    // so d = f n / (f - z (f - n)); the clear value 1 (the far plane) means nothing was drawn.
+    const double n = near_plane_, f = far_plane_;
+    for (size_t i = 0; i < depth.size(); ++i) {
+        float* p = &image.pixels[4 * i];
+        const bool drawn = depth[i] < 1.0f;
+        p[pv::kVisibility] = rgba[4 * i + 3];
+        p[pv::kViewDepth] = drawn ? float(f * n / (f - double(depth[i]) * (f - n))) : 0.0f;
+        p[pv::kSurface] = drawn ? 1.0f : 0.0f;
+    }
     return image;
 }
 

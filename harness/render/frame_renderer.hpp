@@ -50,7 +50,11 @@ public:
     FrameRenderer& operator=(const FrameRenderer&) = delete;
 
     FrameTiming render();
-    Image read_color() const;  // the last rendered frame, linear RGBA
+    Image read_color() const;  // the last rendered frame, linear RGB, A = 1
+    // The last frame at its pixel centres (core/pixel_visibility.hpp): the visibility the lit pass
+    // gave the shadow light (the colour target's alpha) and the view depth of the surface drawn
+    // (from the depth target). Not timed.
+    Image read_pixel_visibility() const;
     // Intermediate buffers of the last frame, for tests and debugging: the coarse map (R = depth;
     // needs ShadowMapNeeds::coarse_filters) and the screen-shadow buffer after its filters
     // (needs FramePlan::screen_shadow). Throw std::logic_error when the plan has none.
@@ -71,6 +75,7 @@ private:
     const GpuContext& gpu_;
     FramePlan plan_;
     glm::vec3 background_;
+    float near_plane_ = 0.0f, far_plane_ = 0.0f;  // the camera's, to turn stored depth into view depth
     MemoryLedger ledger_;
     std::unique_ptr<GpuScene> scene_;
     std::optional<LightView> light_view_;

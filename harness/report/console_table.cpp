@@ -26,8 +26,8 @@ std::string console_table(const RunRecord& run) {
     std::vector<std::string> header = {"technique", "parameters", "GPU ms", "ratio"};
     std::vector<bool> right = {false, false, true, true};
     if (errors) {
-        header.insert(header.end(), {"PSNR dB", "FLIP", "penumbra RMSE"});
-        right.insert(right.end(), {true, true, true});
+        header.insert(header.end(), {"PSNR dB", "FLIP", "penumbra RMSE", "V RMSE"});
+        right.insert(right.end(), {true, true, true, true});
     }
     if (failures) {
         header.push_back("status");
@@ -55,10 +55,13 @@ std::string console_table(const RunRecord& run) {
             timed ? fmt::format("{:.3f}", c.gpu_frame.stats.median) : "-",
             timed && baseline > 0 ? fmt::format("{:.2f}", c.gpu_frame.stats.median / baseline) : "-"};
         if (errors) {
-            if (const auto& m = c.image_error)
-                for (double v : {m->psnr, m->flip_mean, m->penumbra_rmse}) row.push_back(metric_cell(v));
-            else
-                row.insert(row.end(), 3, "-");
+            if (const auto& m = c.image_error) {
+                for (double v : {m->psnr, m->flip_mean}) row.push_back(metric_cell(v));
+                row.push_back(metric_cell(m->penumbra_rmse, m->columns.shadow_regions));
+                row.push_back(metric_cell(m->visibility_rmse, m->columns.visibility));
+            } else {
+                row.insert(row.end(), 4, "-");
+            }
         }
         if (failures) row.push_back(c.ok ? "ok" : "FAILED");
         rows.push_back(std::move(row));

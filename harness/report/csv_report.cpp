@@ -16,6 +16,10 @@ std::string quoted(const std::string& s) {
     return out + "\"";
 }
 
+// ",value" in full precision, or ",n/a" where the technique does not declare the column meaningful
+// (ErrorColumns).
+std::string value_or_na(double value, bool meaningful) { return meaningful ? fmt::format(",{}", value) : ",n/a"; }
+
 }  // namespace
 
 std::string csv_report(const RunRecord& run) {
@@ -31,7 +35,7 @@ std::string csv_report(const RunRecord& run) {
     for (const auto& name : pass_names) out += fmt::format(",{0}_gpu_ms_median,{0}_gpu_ms_mad", name);
     out += ",technique_memory_bytes,target_memory_bytes,scene_memory_bytes,triangles,shadow_sampler,nonfinite_pixels,"
            "mae,rmse,psnr_db,max_error,ssim,flip_mean,flip_weighted_median,light_bleeding,over_darkening,penumbra_rmse,"
-           "device,commit\n";
+           "visibility_mae,visibility_rmse,visibility_penumbra_rmse,visibility_excluded,device,commit\n";
     for (const auto& c : run.cases) {
         out += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}", quoted(c.id), quoted(c.scene), quoted(c.technique),
                            quoted(c.params_summary), c.resolution.width, c.resolution.height, c.ok ? 1 : 0,
@@ -45,12 +49,15 @@ std::string csv_report(const RunRecord& run) {
         }
         out += fmt::format(",{},{},{},{},{},{}", c.memory.technique_bytes, c.memory.target_bytes, c.memory.scene_bytes,
                            c.triangles, quoted(c.shadow_sampler), c.nonfinite_pixels);
-        if (const auto& m = c.image_error)
-            out += fmt::format(",{},{},{},{},{},{},{},{},{},{}", m->mae, m->rmse, m->psnr, m->max_error, m->ssim,
-                               m->flip_mean, m->flip_median_weighted, m->light_bleeding, m->over_darkening,
-                               m->penumbra_rmse);
-        else
-            out += ",,,,,,,,,,";
+        if (const auto& m = c.image_error) {
+            out += fmt::format(",{},{},{},{},{},{},{}", m->mae, m->rmse, m->psnr, m->max_error, m->ssim, m->flip_mean,
+                               m->flip_median_weighted);
+            for (double v : {m->light_bleeding, m->over_darkening, m->penumbra_rmse}) out += value_or_na(v, m->columns.shadow_regions);
+            for (double v : {m->visibility_mae, m->visibility_rmse, m->visibility_penumbra_rmse, m->visibility_excluded})
+                out += value_or_na(v, m->columns.visibility);
+        } else {
+            out += ",,,,,,,,,,,,,,";
+        }
         out += fmt::format(",{},{}\n", quoted(run.environment.device.name), quoted(run.environment.git_commit));
     }
     return out;

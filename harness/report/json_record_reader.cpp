@@ -61,6 +61,14 @@ ImageMetrics read_error(const json& j) {
     m.umbra_pixels = j.at("umbra_pixels").get<long long>();
     m.lit_pixels = j.at("lit_pixels").get<long long>();
     m.penumbra_pixels = j.at("penumbra_pixels").get<long long>();
+    m.visibility_mae = metric(j.at("visibility_mae"));
+    m.visibility_rmse = metric(j.at("visibility_rmse"));
+    m.visibility_penumbra_rmse = metric(j.at("visibility_penumbra_rmse"));
+    m.visibility_pixels = j.at("visibility_pixels").get<long long>();
+    m.visibility_penumbra_pixels = j.at("visibility_penumbra_pixels").get<long long>();
+    m.visibility_excluded = metric(j.at("visibility_excluded"));
+    m.columns.visibility = j.at("columns").at("visibility").get<bool>();
+    m.columns.shadow_regions = j.at("columns").at("shadow_regions").get<bool>();
     return m;
 }
 
@@ -87,6 +95,7 @@ CaseResult read_case(const json& j) {
     const json& images = j.at("images");
     c.image_exr = images.at("exr").get<std::string>();
     c.image_png = images.at("png").get<std::string>();
+    c.visibility_exr = images.at("visibility_exr").get<std::string>();
     c.error_map_png = images.at("error_map_png").get<std::string>();
     c.flip_map_png = images.at("flip_map_png").get<std::string>();
     return c;
@@ -103,10 +112,17 @@ ReferenceRecord read_reference(const json& j) {
     r.light_samples = j.at("light_samples").get<int>();
     r.pixel_samples = j.at("pixel_samples").get<int>();
     r.error_map_scale = j.at("error_map_scale").get<double>();
+    const json& pixel_visibility = j.at("pixel_visibility");
+    r.pixel_visibility_key = pixel_visibility.at("key").get<std::string>();
+    r.pixel_visibility_from_cache = pixel_visibility.at("from_cache").get<bool>();
+    r.pixel_visibility_seconds = pixel_visibility.at("seconds").get<double>();
+    r.pixel_visibility_shadow_rays = pixel_visibility.at("shadow_rays").get<uint64_t>();
+    r.pixel_visibility_samples = pixel_visibility.at("light_samples").get<int>();
     const json& images = j.at("images");
     r.image_exr = images.at("exr").get<std::string>();
     r.image_png = images.at("png").get<std::string>();
     r.visibility_exr = images.at("visibility_exr").get<std::string>();
+    r.pixel_visibility_exr = images.at("pixel_visibility_exr").get<std::string>();
     return r;
 }
 

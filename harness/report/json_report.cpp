@@ -42,7 +42,15 @@ nlohmann::json error_json(const ImageMetrics& m) {
             {"penumbra_rmse", metric(m.penumbra_rmse)},
             {"umbra_pixels", m.umbra_pixels},
             {"lit_pixels", m.lit_pixels},
-            {"penumbra_pixels", m.penumbra_pixels}};
+            {"penumbra_pixels", m.penumbra_pixels},
+            {"visibility_mae", metric(m.visibility_mae)},
+            {"visibility_rmse", metric(m.visibility_rmse)},
+            {"visibility_penumbra_rmse", metric(m.visibility_penumbra_rmse)},
+            {"visibility_pixels", m.visibility_pixels},
+            {"visibility_penumbra_pixels", m.visibility_penumbra_pixels},
+            {"visibility_excluded", metric(m.visibility_excluded)},
+            // The groups the technique declares meaningful; the others are null and read "n/a".
+            {"columns", {{"visibility", m.columns.visibility}, {"shadow_regions", m.columns.shadow_regions}}}};
 }
 
 nlohmann::json reference_json(const ReferenceRecord& r) {
@@ -56,7 +64,17 @@ nlohmann::json reference_json(const ReferenceRecord& r) {
             {"light_samples", r.light_samples},
             {"pixel_samples", r.pixel_samples},
             {"error_map_scale", r.error_map_scale},
-            {"images", {{"exr", r.image_exr}, {"png", r.image_png}, {"visibility_exr", r.visibility_exr}}}};
+            {"pixel_visibility",
+             {{"key", r.pixel_visibility_key},
+              {"from_cache", r.pixel_visibility_from_cache},
+              {"seconds", r.pixel_visibility_seconds},
+              {"shadow_rays", r.pixel_visibility_shadow_rays},
+              {"light_samples", r.pixel_visibility_samples}}},
+            {"images",
+             {{"exr", r.image_exr},
+              {"png", r.image_png},
+              {"visibility_exr", r.visibility_exr},
+              {"pixel_visibility_exr", r.pixel_visibility_exr}}}};
 }
 
 nlohmann::json case_json(const CaseResult& c) {
@@ -79,8 +97,8 @@ nlohmann::json case_json(const CaseResult& c) {
             {"shadow_sampler", c.shadow_sampler},
             {"nonfinite_pixels", c.nonfinite_pixels},
             {"image_error", c.image_error ? error_json(*c.image_error) : nlohmann::json(nullptr)},
-            {"images", {{"exr", c.image_exr}, {"png", c.image_png}, {"error_map_png", c.error_map_png},
-                        {"flip_map_png", c.flip_map_png}}}};
+            {"images", {{"exr", c.image_exr}, {"png", c.image_png}, {"visibility_exr", c.visibility_exr},
+                        {"error_map_png", c.error_map_png}, {"flip_map_png", c.flip_map_png}}}};
 }
 
 }  // namespace

@@ -9,7 +9,9 @@
 namespace canopy {
 
 // 2: the run's identity (what a resumed run must match), resumed_at and the run's error.
-inline constexpr int kResultsVersion = 2;
+// 3: technique-isolated visibility errors and the columns a technique declares meaningful; shadow
+//    regions from the pixel-centre visibility; the references' pixel visibility.
+inline constexpr int kResultsVersion = 3;
 
 std::string json_report(const RunRecord& run);
 void write_json_report(const std::filesystem::path& path, const RunRecord& run);

@@ -22,7 +22,8 @@ std::string markdown_table(const RunRecord& run) {
     std::vector<bool> right = {false, false, false, false, true, true, true, true, true, false, true};
     const bool errors = std::any_of(run.cases.begin(), run.cases.end(), [](const CaseResult& c) { return c.image_error.has_value(); });
     if (errors) {
-        for (const char* column : {"RMSE", "PSNR dB", "SSIM", "FLIP", "bleeding", "over-dark", "penumbra RMSE"}) {
+        for (const char* column : {"RMSE", "PSNR dB", "SSIM", "FLIP", "bleeding", "over-dark", "penumbra RMSE",
+                                   "V RMSE", "V MAE", "V penumbra RMSE", "V excluded %"}) {
             header.push_back(column);
             right.push_back(true);
         }
@@ -52,10 +53,13 @@ std::string markdown_table(const RunRecord& run) {
             mib(c.memory.technique_bytes)};
         if (errors) {
             if (const auto& m = c.image_error) {
-                for (double v : {m->rmse, m->psnr, m->ssim, m->flip_mean, m->light_bleeding, m->over_darkening, m->penumbra_rmse})
-                    row.push_back(metric_cell(v));
+                for (double v : {m->rmse, m->psnr, m->ssim, m->flip_mean}) row.push_back(metric_cell(v));
+                for (double v : {m->light_bleeding, m->over_darkening, m->penumbra_rmse})
+                    row.push_back(metric_cell(v, m->columns.shadow_regions));
+                for (double v : {m->visibility_rmse, m->visibility_mae, m->visibility_penumbra_rmse, 100.0 * m->visibility_excluded})
+                    row.push_back(metric_cell(v, m->columns.visibility));
             } else {
-                row.insert(row.end(), 7, "-");
+                row.insert(row.end(), 11, "-");
             }
         }
         row.push_back(c.ok ? "ok" : "FAILED: " + c.error);
@@ -91,9 +95,15 @@ std::string markdown_report(const RunRecord& run) {
     out += "\nGPU ms: median over measured frames of the time from the first pass's start to the last pass's end "
            "(Vulkan timestamps). ratio: GPU median relative to the first row of the same scene and resolution. "
            "memory: device memory the technique's own resources take (shadow maps, ...). "
-           "Errors are against the ray-traced reference, in linear radiance: RMSE, PSNR (peak 1), SSIM and FLIP over "
-           "the image; bleeding = mean excess luminance over pixels in full umbra in the reference, over-dark = mean "
-           "missing luminance over fully lit pixels, penumbra RMSE = luminance RMSE over pixels with 0 < V < 1. "
+           "Errors are against the ray-traced reference. How far the image is from the truth: RMSE, PSNR (peak 1), "
+           "SSIM and FLIP over the whole image, in linear radiance (they include aliasing at silhouettes and "
+           "shading, which no shadow technique changes). How wrong the technique's shadow is: V RMSE, V MAE and V "
+           "penumbra RMSE compare the visibility the technique gave the light with the reference's (1024 light "
+           "samples) at the same pixel centres, so silhouettes and shading cancel (V excluded %: pixels the light "
+           "reaches left out because the raster saw another surface there); bleeding = mean excess luminance over "
+           "pixels in full umbra, over-dark = mean missing luminance over fully lit pixels, penumbra RMSE = "
+           "luminance RMSE over pixels with 0 < V < 1, the classes from the reference's pixel-centre V, off "
+           "silhouettes. n/a: the technique's family declares the column meaningless for it. "
            "The papers define no error metric: these columns are canopy's. On lavapipe a GPU time is "
            "CPU time on a shared machine: compare ratios measured in one run, not absolute times across runs.\n";
     return out;

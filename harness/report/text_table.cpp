@@ -56,4 +56,6 @@ std::string metric_cell(double value) {
     return fmt::format("{:.4g}", value);
 }
 
+std::string metric_cell(double value, bool meaningful) { return meaningful ? metric_cell(value) : "n/a"; }
+
 }  // namespace canopy

@@ -10,7 +10,9 @@ namespace canopy {
 std::string render_table(const std::vector<std::string>& header, const std::vector<std::vector<std::string>>& rows,
                          const std::vector<bool>& right_aligned);
 
-// 4 significant digits; "-" where a metric does not apply (NaN), "inf" for identical images.
+// 4 significant digits; "-" where a metric has nothing to measure (NaN), "inf" for identical images.
 std::string metric_cell(double value);
+// The same, or "n/a" where the technique does not declare the metric meaningful (ErrorColumns).
+std::string metric_cell(double value, bool meaningful);
 
 }  // namespace canopy

@@ -35,6 +35,7 @@ struct CaseResult {
     size_t triangles = 0;
     std::string shadow_sampler;
     std::string image_exr, image_png;  // relative to the run folder
+    std::string visibility_exr;        // the technique's pixel-centre visibility (core/pixel_visibility.hpp)
     long long nonfinite_pixels = 0;
     // Error against the ray-traced reference of the same scene and resolution (when enabled).
     std::optional<ImageMetrics> image_error;
@@ -54,6 +55,14 @@ struct ReferenceRecord {
     int light_samples = 0, pixel_samples = 0;
     double error_map_scale = 0;  // luminance error drawn at the top of the heat maps
     std::string image_exr, image_png, visibility_exr;
+    // The pixel-centre visibility the technique-isolated error and the shadow masks come from
+    // (reference/pixel_visibility.hpp), cached under its own key.
+    std::string pixel_visibility_key;
+    bool pixel_visibility_from_cache = false;
+    double pixel_visibility_seconds = 0;
+    uint64_t pixel_visibility_shadow_rays = 0;
+    int pixel_visibility_samples = 0;
+    std::string pixel_visibility_exr;
 };
 
 struct RunRecord {

@@ -123,7 +123,7 @@ PreparedExperiment prepare_experiment(const Experiment& experiment, const Techni
 
 CaseResult measure_case(const Case& c, const Scene& scene, const std::vector<TriangleMesh>& meshes,
                         const Technique& technique, const GpuContext& gpu, int warmup_frames, int measured_frames,
-                        Image* image_out) {
+                        Image* image_out, Image* visibility_out) {
     CaseResult result = case_header(c, scene);
     FrameRenderer renderer(gpu, scene, meshes, uint32_t(c.resolution.width), uint32_t(c.resolution.height),
                            technique.plan(c.params));
@@ -151,6 +151,7 @@ CaseResult measure_case(const Case& c, const Scene& scene, const std::vector<Tri
         result.error = fmt::format("{} pixels are NaN or Inf", result.nonfinite_pixels);
     }
     if (image_out) *image_out = std::move(image);
+    if (visibility_out) *visibility_out = renderer.read_pixel_visibility();
     return result;
 }
 
@@ -176,12 +177,14 @@ KeptResults kept_results(const RunRecord* previous, const std::filesystem::path&
     KeptResults kept;
     if (!previous) return kept;
     for (const ReferenceRecord& r : previous->references)
-        if (files_exist(out, {&r.image_exr, &r.image_png, &r.visibility_exr})) kept.references.push_back(r);
+        if (files_exist(out, {&r.image_exr, &r.image_png, &r.visibility_exr, &r.pixel_visibility_exr}))
+            kept.references.push_back(r);
     for (const CaseResult& c : previous->cases) {
         const bool reference_kept =
             !c.image_error || std::any_of(kept.references.begin(), kept.references.end(),
                                           [&](const ReferenceRecord& r) { return same_reference(r, c.scene, c.resolution); });
-        if (c.ok && reference_kept && files_exist(out, {&c.image_exr, &c.image_png, &c.error_map_png, &c.flip_map_png}))
+        if (c.ok && reference_kept &&
+            files_exist(out, {&c.image_exr, &c.image_png, &c.visibility_exr, &c.error_map_png, &c.flip_map_png}))
             kept.cases.emplace(c.id, c);
     }
     return kept;
@@ -292,6 +295,11 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
                     record.light_samples = references.settings().light_samples;
                     record.pixel_samples = references.settings().pixel_samples;
                     record.error_map_scale = error_map_scale(reference->images.radiance);
+                    record.pixel_visibility_key = reference->pixel_visibility_key;
+                    record.pixel_visibility_from_cache = reference->pixel_visibility_from_cache;
+                    record.pixel_visibility_seconds = reference->pixel_visibility.seconds;
+                    record.pixel_visibility_shadow_rays = reference->pixel_visibility.shadow_rays;
+                    record.pixel_visibility_samples = references.pixel_visibility_settings().light_samples;
                     if (options.images != ImageOutput::none) {
                         record.image_png = "images/" + stem + ".png";
                         write_png_srgb(out / record.image_png, reference->images.radiance);
@@ -301,6 +309,8 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
                         record.visibility_exr = "images/" + stem + ".visibility.exr";
                         write_exr(out / record.image_exr, reference->images.radiance);
                         write_exr(out / record.visibility_exr, reference->images.visibility);
+                        record.pixel_visibility_exr = "images/" + stem + ".pixel_visibility.exr";
+                        write_exr(out / record.pixel_visibility_exr, reference->pixel_visibility.visibility);
                     }
                     run.references.push_back(record);
                 }
@@ -311,10 +321,10 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
             const auto start = std::chrono::steady_clock::now();
             if (options.show_progress) progress.start_case(i, label);
             CaseResult result;
-            Image image;
+            Image image, visibility;
             try {
                 result = measure_case(c, scene, prepared.meshes[c.scene_index], technique, gpu, run.warmup_frames,
-                                      run.measured_frames, &image);
+                                      run.measured_frames, &image, &visibility);
             } catch (const GpuError& e) {
                 result = case_header(c, scene);
                 result.ok = false;
@@ -329,6 +339,8 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
                 if (options.images == ImageOutput::all) {
                     result.image_exr = "images/" + c.id + ".exr";
                     write_exr(out / result.image_exr, image);
+                    result.visibility_exr = "images/" + c.id + ".visibility.exr";
+                    write_exr(out / result.visibility_exr, visibility);
                 }
                 if (pngs) {
                     result.image_png = "images/" + c.id + ".png";
@@ -337,7 +349,11 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
                 if (reference) {
                     const Image& truth = reference->images.radiance;
                     std::vector<float> flip_map;
-                    result.image_error = compute_metrics(image, truth, &reference->images.visibility, {}, &flip_map);
+                    // The pixel-centre visibility of the technique and of the reference: the
+                    // technique-isolated error and the shadow regions (metrics/pixel_classes.hpp).
+                    const PixelVisibilityPair pixel_visibility{visibility, reference->pixel_visibility.visibility};
+                    result.image_error =
+                        compute_metrics(image, truth, &pixel_visibility, technique.error_columns(), {}, &flip_map);
                     if (pngs) {
                         const auto record = std::find_if(run.references.begin(), run.references.end(),
                                                          [&](const ReferenceRecord& r) { return same_reference(r, scene.name, c.resolution); });

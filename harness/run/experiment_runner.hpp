@@ -42,8 +42,10 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
                          const RunOptions& options);
 
 // Renders one case and measures it (no files written). Used by the runner and by tests.
+// `image_out` receives the last frame, `visibility_out` its pixel-centre visibility
+// (FrameRenderer::read_pixel_visibility).
 CaseResult measure_case(const Case& c, const Scene& scene, const std::vector<TriangleMesh>& meshes,
                         const Technique& technique, const GpuContext& gpu, int warmup_frames, int measured_frames,
-                        Image* image_out);
+                        Image* image_out, Image* visibility_out = nullptr);
 
 }  // namespace canopy

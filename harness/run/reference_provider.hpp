@@ -1,7 +1,10 @@
-// The ray-traced reference of each (scene, resolution) an experiment needs: loaded from the
-// content-keyed cache when an identical one was rendered before, otherwise rendered and stored.
+// The ray-traced reference of each (scene, resolution) an experiment needs, and its pixel-centre
+// visibility: each loaded from the content-keyed cache when an identical one was rendered
+// before, otherwise rendered and stored. The pixel-centre visibility is the same for every
+// experiment's [reference] settings (its own fixed sample count and seed), so it is shared.
 #pragma once
 
+#include "reference/pixel_visibility.hpp"
 #include "reference/reference_renderer.hpp"
 #include "scene/geometry.hpp"
 
@@ -16,6 +19,9 @@ struct ReferenceEntry {
     ReferenceImages images;
     std::string key;
     bool from_cache = false;
+    PixelVisibilityRender pixel_visibility;  // at the pixel centres, kPixelVisibilitySamples light samples
+    std::string pixel_visibility_key;
+    bool pixel_visibility_from_cache = false;
 };
 
 class ReferenceProvider {
@@ -24,16 +30,18 @@ public:
     ReferenceProvider(std::filesystem::path cache_dir, ReferenceSettings settings);
 
     // `started` learns where a reference not yet in memory comes from (true: the cache, false:
-    // ray-traced now), before any rendering; `progress` gets the fraction done while a
-    // reference is rendered (not called on a cache hit).
+    // ray-traced now, in part or whole), before any rendering; `progress` gets the fraction done
+    // while a reference or its pixel visibility is rendered (not called on a cache hit).
     const ReferenceEntry& get(const Scene& scene, const std::vector<TriangleMesh>& meshes, int width, int height,
                               const std::function<void(double)>& progress = {},
                               const std::function<void(bool from_cache)>& started = {});
     const ReferenceSettings& settings() const { return settings_; }
+    const PixelVisibilitySettings& pixel_visibility_settings() const { return pixel_visibility_settings_; }
 
 private:
     std::filesystem::path cache_dir_;
     ReferenceSettings settings_;
+    PixelVisibilitySettings pixel_visibility_settings_;
     std::map<std::string, ReferenceEntry> entries_;  // by cache key
 };
 

@@ -3,6 +3,7 @@
 #include "frame_uniforms.glsl"
 #include "draw_constants.glsl"
 #include "shading.h"
+#include "lit_pass_output.h"
 #include "shadow_common.h"
 #include "light_space.glsl"
 
@@ -47,7 +48,8 @@ void main() {
 
     float visibility = 1.0;
     float cos_theta = dot(n, direction_to_light(world_position));
-    if (cos_theta > 0.0 && max(irradiance.r, max(irradiance.g, irradiance.b)) > 0.0) {
+    bool lit = cos_theta > 0.0 && max(irradiance.r, max(irradiance.g, irradiance.b)) > 0.0;
+    if (lit) {
         LightSpacePoint p = light_space_point(world_position, n);
         ShadowQuery q;
         q.uv = p.uv;
@@ -60,5 +62,7 @@ void main() {
         q.normal = n;
         if (on_shadow_map(p)) visibility = shadow_visibility(q);
     }
-    out_color = vec4(lambert_radiance(draw.albedo.rgb, irradiance, visibility, frame.ambient.rgb), 1.0);
+    // Alpha: the visibility the technique gave the light (lit_pass_output.h), for the technique-isolated error.
+    out_color = lit_pass_output(lambert_radiance(draw.albedo.rgb, irradiance, visibility, frame.ambient.rgb), lit,
+                                visibility);
 }

@@ -171,8 +171,8 @@ case $case in
 
   disk_full)
     run_tiny "$work/whole" || fail "uninterrupted run failed"
-    # Writes: 3 reports, 3 reference images, 4 images of case 1, 3 reports; the 14th (case 2's EXR) fails.
-    CANOPY_TEST_FAIL_WRITE_AFTER=13 run_tiny "$work/full"; rc=$?
+    # Writes: 3 reports, 4 reference images, 5 images of case 1, 3 reports; the 16th (case 2's EXR) fails.
+    CANOPY_TEST_FAIL_WRITE_AFTER=15 run_tiny "$work/full"; rc=$?
     cat "$work/stderr"
     [ $rc -eq 1 ] || fail "exit code $rc, expected 1"
     grep -Eq "cannot write .*kernel-3\.exr: No space left on device" "$work/stderr" || fail "no reason on stderr"
@@ -188,7 +188,7 @@ case $case in
 
   disk_stays_full)
     # Every write from the reports after case 1 on fails: not even the failure can be recorded.
-    CANOPY_TEST_FAIL_WRITE_AFTER=10+ run_tiny "$work/full"; rc=$?
+    CANOPY_TEST_FAIL_WRITE_AFTER=12+ run_tiny "$work/full"; rc=$?
     cat "$work/stderr"
     [ $rc -eq 1 ] || fail "exit code $rc, expected 1"
     grep -q "No space left on device" "$work/stderr" || fail "no reason on stderr"

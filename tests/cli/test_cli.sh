@@ -40,9 +40,10 @@ case $case in
     "$canopy" run "$data/experiments/tiny.toml" --out "$work/out" --quick --no-cache >"$work/stdout" 2>"$work/stderr" || fail "run failed: $(cat "$work/stderr")"
     cat "$work/stdout"
     for f in results.json results.csv results.md; do [ -s "$work/out/$f" ] || fail "missing $f"; done
-    cases=$(ls "$work/out/images" | grep -v -e '^reference_' -e '\.error\.png$' -e '\.flip\.png$')
+    cases=$(ls "$work/out/images" | grep -v -e '^reference_' -e '\.error\.png$' -e '\.flip\.png$' -e '\.visibility\.exr$')
     [ "$(grep -c '\.png$' <<<"$cases")" -eq 3 ] || fail "expected 3 case PNGs"
     [ "$(grep -c '\.exr$' <<<"$cases")" -eq 3 ] || fail "expected 3 case EXRs"
+    [ "$(ls "$work/out/images" | grep -v '^reference_' | grep -c '\.visibility\.exr$')" -eq 3 ] || fail "expected 3 case visibility EXRs"
     [ -s "$work/out/images/reference_tiny_96x64.png" ] || fail "missing the reference image"
     grep -q "shadow.hard" "$work/stdout" || fail "table lacks shadow.hard"
     grep -q "penumbra RMSE" "$work/stdout" || fail "table lacks the error columns"
@@ -56,7 +57,7 @@ case $case in
     cat "$work/first" "$work/second"
     ! grep -q "from cache" "$work/first" || fail "first reference claims to come from the cache"
     grep -q "from cache" "$work/second" || fail "second reference was not taken from the cache"
-    for f in tiny_64x48.exr tiny_64x48.png tiny_64x48.variance.exr tiny_64x48.visibility.exr; do
+    for f in tiny_64x48.exr tiny_64x48.png tiny_64x48.variance.exr tiny_64x48.visibility.exr tiny_64x48.pixel_visibility.exr; do
       [ -s "$work/ref/$f" ] || fail "missing $f"
     done ;;
   bench)

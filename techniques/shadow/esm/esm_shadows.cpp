@@ -5,6 +5,7 @@
 #include "shaders/log_box_filter_comp.h"
 #include "shadow_filtering.h"
 #include "../common/prefilter_params.hpp"
+#include "../common/shadow_family.hpp"
 
 #include <fmt/format.h>
 
@@ -51,6 +52,8 @@ public:
                                "(stores c z: no overflow)";
         return conflict;
     }
+
+    ErrorColumns error_columns() const override { return kShadowErrorColumns; }
 
     FramePlan plan(const ParamSet& params) const override {
         const float c = float(params.real("exponent"));

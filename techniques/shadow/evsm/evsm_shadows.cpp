@@ -4,6 +4,7 @@
 #include "shaders/evsm_frag.h"
 #include "shadow_filtering.h"
 #include "../common/prefilter_params.hpp"
+#include "../common/shadow_family.hpp"
 
 #include <algorithm>
 
@@ -28,6 +29,8 @@ public:
         specs.push_back(ParamSpec::real("bleeding_reduction", 0.0, 0.0, 0.95, "as in shadow.vsm"));
         return specs;
     }
+
+    ErrorColumns error_columns() const override { return kShadowErrorColumns; }
 
     FramePlan plan(const ParamSet& params) const override {
         const float limit = shader::evsm_max_exponent(half_precision(params));

@@ -2,6 +2,7 @@
 #include "core/registry.hpp"
 #include "shaders/hard_frag.h"
 #include "../common/shadow_map_params.hpp"
+#include "../common/shadow_family.hpp"
 
 namespace canopy {
 namespace {
@@ -12,6 +13,8 @@ public:
     std::string summary() const override { return "shadow mapping: one depth test per pixel, hard edges"; }
     std::string paper() const override { return "Williams 1978; Gumbau 2011 Table 6.1 'standard'"; }
     std::vector<ParamSpec> params() const override { return shadow_map_params(); }
+
+    ErrorColumns error_columns() const override { return kShadowErrorColumns; }
 
     FramePlan plan(const ParamSet& params) const override {
         FramePlan plan;

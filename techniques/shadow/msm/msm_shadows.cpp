@@ -4,6 +4,7 @@
 #include "shaders/msm_frag.h"
 #include "shadow_filtering.h"
 #include "../common/prefilter_params.hpp"
+#include "../common/shadow_family.hpp"
 
 namespace canopy {
 namespace {
@@ -26,6 +27,8 @@ public:
                                         "blend towards well-conditioned target moments (3e-5 for fp32, 6e-5 suits 16 bits)"));
         return specs;
     }
+
+    ErrorColumns error_columns() const override { return kShadowErrorColumns; }
 
     FramePlan plan(const ParamSet& params) const override {
         const glm::vec4 far_moments = shader::msm_encode(1.0f);

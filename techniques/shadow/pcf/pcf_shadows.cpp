@@ -3,6 +3,7 @@
 #include "shaders/pcf_frag.h"
 #include "../common/poisson_disk.hpp"
 #include "../common/shadow_map_params.hpp"
+#include "../common/shadow_family.hpp"
 
 #include <algorithm>
 
@@ -26,6 +27,8 @@ public:
                                            "compare each tap with the receiver plane's depth there (else bias for the whole kernel)"));
         return specs;
     }
+
+    ErrorColumns error_columns() const override { return kShadowErrorColumns; }
 
     FramePlan plan(const ParamSet& params) const override {
         const int kernel = int(params.integer("kernel"));

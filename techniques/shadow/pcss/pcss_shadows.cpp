@@ -2,6 +2,7 @@
 #include "core/registry.hpp"
 #include "shaders/pcss_frag.h"
 #include "../common/shadow_map_params.hpp"
+#include "../common/shadow_family.hpp"
 
 namespace canopy {
 namespace {
@@ -20,6 +21,8 @@ public:
                                         "cap on the search and filter radius in texels (huge lights)"));
         return specs;
     }
+
+    ErrorColumns error_columns() const override { return kShadowErrorColumns; }
 
     FramePlan plan(const ParamSet& params) const override {
         FramePlan plan;

@@ -4,6 +4,7 @@
 #include "shaders/power_cdf_depth_frag.h"
 #include "shaders/power_cdf_frag.h"
 #include "../common/prefilter_params.hpp"
+#include "../common/shadow_family.hpp"
 
 namespace canopy {
 namespace {
@@ -14,6 +15,8 @@ public:
     std::string summary() const override { return "CDF reconstructed as t^beta from prefiltered min, max and mean depth"; }
     std::string paper() const override { return "Gumbau 2011 eq 7.5-7.7, Table 7.1 'CDF recons. 32/16 bits'"; }
     std::vector<ParamSpec> params() const override { return prefilter_params(); }
+
+    ErrorColumns error_columns() const override { return kShadowErrorColumns; }
 
     FramePlan plan(const ParamSet& params) const override {
         FramePlan plan;

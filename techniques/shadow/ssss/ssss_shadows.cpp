@@ -6,6 +6,7 @@
 #include "shaders/ssss_frag.h"
 #include "shaders/ssss_screen_frag.h"
 #include "../common/shadow_map_params.hpp"
+#include "../common/shadow_family.hpp"
 
 namespace canopy {
 namespace {
@@ -33,6 +34,8 @@ public:
                                            "lazy shadowing (6.3.2): shadow-test hidden taps on the tangent plane instead of dropping them"));
         return specs;
     }
+
+    ErrorColumns error_columns() const override { return kShadowErrorColumns; }
 
     FramePlan plan(const ParamSet& params) const override {
         const int block = int(params.integer("coarse_block"));

@@ -57,3 +57,17 @@ TEST_CASE("Poisson disk: inside the unit disk, deterministic, well spread") {
     // Uniform random points would typically have pairs closer than 0.05; the ideal spacing is ~0.35.
     CHECK(min_distance > 0.2f);
 }
+
+TEST_CASE("every shadow technique declares the visibility and shadow-region error columns") {
+    // The family keeps the scene's surfaces and only computes the light's visibility, which the
+    // lit pass multiplies into the irradiance: both groups measure its shadow (shadow_family.hpp).
+    int shadow_techniques = 0;
+    for (const Technique* t : TechniqueRegistry::instance().all()) {
+        if (t->name().rfind("shadow.", 0) != 0) continue;
+        CAPTURE(t->name());
+        ++shadow_techniques;
+        CHECK(t->error_columns().visibility);
+        CHECK(t->error_columns().shadow_regions);
+    }
+    CHECK(shadow_techniques == 10);
+}

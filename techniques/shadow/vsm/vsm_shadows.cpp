@@ -3,6 +3,7 @@
 #include "shaders/two_moments_frag.h"
 #include "shaders/vsm_frag.h"
 #include "../common/prefilter_params.hpp"
+#include "../common/shadow_family.hpp"
 
 namespace canopy {
 namespace {
@@ -21,6 +22,8 @@ public:
                                         "light-bleeding reduction: visibility below this is cut to 0, the rest rescaled"));
         return specs;
     }
+
+    ErrorColumns error_columns() const override { return kShadowErrorColumns; }
 
     FramePlan plan(const ParamSet& params) const override {
         FramePlan plan;

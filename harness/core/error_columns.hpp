@@ -1,0 +1,24 @@
+// Which error columns measure something for a technique, declared by its family
+// (Technique::error_columns). The whole-image errors (MAE, RMSE, PSNR, SSIM, FLIP) always do:
+// they answer "how far is the image from the truth". The others compare the technique's
+// visibility or shadow regions with the reference's at the raster's own pixel centres, which
+// means something only where the technique keeps the scene's surfaces (the primary hits) and
+// shades them with canopy's lit pass; reports show "n/a" for a column a technique does not
+// declare.
+#pragma once
+
+namespace canopy {
+
+struct ErrorColumns {
+    // visibility_mae, visibility_rmse, visibility_penumbra_rmse: the visibility the lit pass
+    // multiplied into the light's irradiance against the reference's at the same primary hits
+    // ("how wrong is the technique's shadow").
+    bool visibility = false;
+    // light_bleeding, over_darkening, penumbra_rmse: luminance errors over the reference's umbra,
+    // lit and penumbra pixels.
+    bool shadow_regions = false;
+
+    bool operator==(const ErrorColumns&) const = default;
+};
+
+}  // namespace canopy

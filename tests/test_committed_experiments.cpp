@@ -1,0 +1,90 @@
+// The committed experiments (configs/experiments/**) agree on how they make their references, and
+// the shadow-free scene variants they use to check the technique-isolated error are what they say.
+#include "config/experiment_config.hpp"
+#include "core/registry.hpp"
+#include "support/config_error_of.hpp"
+#include "support/temp_folder.hpp"
+
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <set>
+
+using namespace canopy;
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kExperiments = fs::path(CANOPY_SOURCE_DIR) / "configs" / "experiments";
+const fs::path kScenes = fs::path(CANOPY_SOURCE_DIR) / "configs" / "scenes";
+
+std::vector<fs::path> committed_experiments() {
+    std::vector<fs::path> files;
+    for (const auto& entry : fs::recursive_directory_iterator(kExperiments))
+        if (entry.is_regular_file() && entry.path().extension() == ".toml") files.push_back(entry.path());
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+}  // namespace
+
+TEST_CASE("every committed experiment makes its reference with the same settings") {
+    // configs/README.md, [reference]: whole-image errors move by 8-12 % between 2 and 4 pixel
+    // samples, so tables made with different settings would not compare.
+    const auto files = committed_experiments();
+    REQUIRE(files.size() >= 9);  // default, checks/shadow-free and the seven paper experiments
+    for (const fs::path& file : files) {
+        CAPTURE(file.string());
+        const Experiment experiment = load_experiment(file, TechniqueRegistry::instance());
+        CHECK(experiment.reference_enabled);
+        CHECK(experiment.reference.light_samples == 64);
+        CHECK(experiment.reference.pixel_samples == 4);
+        CHECK(experiment.reference.seed == 1);
+    }
+}
+
+TEST_CASE("a scene variant with casts_shadows = false: no object casts a shadow, the light still does") {
+    const test::TempFolder folder;
+    const fs::path file = folder.write(
+        "experiment.toml",
+        "[experiment]\nscenes = [\n"
+        "  { file = \"" + (kScenes / "chairs.toml").string() + "\", name = \"free\", casts_shadows = false },\n"
+        "  { file = \"" + (kScenes / "chairs.toml").string() + "\", name = \"kept\", casts_shadows = true },\n"
+        "]\n[[technique]]\nname = \"shadow.hard\"\n");
+    const Experiment experiment = load_experiment(file, TechniqueRegistry::instance());
+    REQUIRE(experiment.scenes.size() == 2);
+    const Scene& free = experiment.scenes[0];
+    CHECK(free.name == "free");
+    REQUIRE(free.objects.size() > 10);
+    for (const Object& object : free.objects) CHECK_FALSE(object.casts_shadows);
+    REQUIRE(free.shadow_light() != nullptr);  // techniques still have a light to shadow
+    for (const Object& object : experiment.scenes[1].objects) CHECK(object.casts_shadows);
+
+    const fs::path wrong = folder.write(
+        "wrong.toml", "[experiment]\nscenes = [\n  { file = \"" + (kScenes / "chairs.toml").string() +
+                          "\", casts_shadows = \"no\" },\n]\n[[technique]]\nname = \"shadow.hard\"\n");
+    const auto error = test::config_error_of([&] { load_experiment(wrong, TechniqueRegistry::instance()); });
+    REQUIRE(error);
+    CHECK(error->line() == 3);
+    CHECK(std::string(error->what()).find("casts_shadows") != std::string::npos);
+}
+
+TEST_CASE("checks/shadow-free.toml: every committed scene without shadows, under every technique") {
+    const Experiment experiment =
+        load_experiment(kExperiments / "checks" / "shadow-free.toml", TechniqueRegistry::instance());
+    std::set<std::string> scene_files;
+    for (const auto& entry : fs::directory_iterator(kScenes))
+        if (entry.path().extension() == ".toml") scene_files.insert(entry.path().stem().string());
+    std::set<std::string> variants;
+    for (const Scene& scene : experiment.scenes) {
+        CAPTURE(scene.name);
+        variants.insert(scene.file.stem().string());
+        for (const Object& object : scene.objects) CHECK_FALSE(object.casts_shadows);
+    }
+    CHECK(variants == scene_files);
+    std::set<std::string> techniques, registered;
+    for (const TechniqueEntry& entry : experiment.techniques) techniques.insert(entry.name);
+    for (const Technique* t : TechniqueRegistry::instance().all()) registered.insert(t->name());
+    CHECK(techniques == registered);
+}
