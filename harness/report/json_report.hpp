@@ -9,7 +9,9 @@
 namespace canopy {
 
 // 2: the run's identity (what a resumed run must match), resumed_at and the run's error.
-inline constexpr int kResultsVersion = 2;
+// 3: groups measured round by round: per case its group, chunk, per-round ratio to the group's
+//    baseline with its interval, CPU time and sample start times; samples are per round.
+inline constexpr int kResultsVersion = 3;
 
 std::string json_report(const RunRecord& run);
 void write_json_report(const std::filesystem::path& path, const RunRecord& run);

@@ -56,4 +56,9 @@ std::string metric_cell(double value) {
     return fmt::format("{:.4g}", value);
 }
 
+std::string ratio_cell(const Estimate& ratio) {
+    if (ratio.count == 0 || std::isnan(ratio.value)) return "-";
+    return fmt::format("{:.2f} [{:.2f}, {:.2f}]", ratio.value, ratio.ci.low, ratio.ci.high);
+}
+
 }  // namespace canopy

@@ -1,6 +1,8 @@
 // Aligned Markdown tables, and the number formats every table of a run shares.
 #pragma once
 
+#include "run/block_bootstrap.hpp"
+
 #include <string>
 #include <vector>
 
@@ -12,5 +14,8 @@ std::string render_table(const std::vector<std::string>& header, const std::vect
 
 // 4 significant digits; "-" where a metric does not apply (NaN), "inf" for identical images.
 std::string metric_cell(double value);
+
+// A time ratio and its 95 % interval, "1.93 [1.88, 1.99]"; "-" when not measured.
+std::string ratio_cell(const Estimate& ratio);
 
 }  // namespace canopy
