@@ -13,7 +13,10 @@
 #include "run/interrupt.hpp"
 #include "run/kernel_scaling.hpp"
 #include "report/atomic_file.hpp"
+#include "report/comparison_report.hpp"
 #include "report/console_table.hpp"
+#include "report/json_record_reader.hpp"
+#include "run/run_comparison.hpp"
 #include "core/plan_requirements.hpp"
 #include "run/environment.hpp"
 #include "run/output_folder.hpp"
@@ -140,6 +143,61 @@ int bench_scaling(const ScalingOptions& options, const std::string& device, cons
     return kExitOk;
 }
 
+// "5%" or "0.05" -> 0.05; throws ConfigError for anything else.
+double parse_threshold(const std::string& text) {
+    try {
+        size_t used = 0;
+        const bool percent = !text.empty() && text.back() == '%';
+        const double value = std::stod(percent ? text.substr(0, text.size() - 1) : text, &used);
+        if (used != text.size() - (percent ? 1 : 0)) throw std::invalid_argument(text);
+        const double fraction = percent ? value / 100.0 : value;
+        if (!(fraction >= 0.0 && fraction < 1.0) || (!percent && value >= 1.0)) throw std::out_of_range(text);
+        return fraction;
+    } catch (const std::logic_error&) {
+        throw ConfigError(fs::path(), 0, fmt::format("--threshold '{}' is not a relative change", text),
+                          "give a percentage or a fraction below 1, e.g. --threshold 5% or --threshold 0.05");
+    }
+}
+
+// A run folder or its results.json.
+RunRecord read_run(const std::string& where) {
+    const fs::path path = fs::is_directory(where) ? fs::path(where) / "results.json" : fs::path(where);
+    try {
+        return read_json_report(path);
+    } catch (const std::runtime_error& e) {
+        throw ConfigError(fs::path(), 0, e.what(),
+                          "give a run folder (holding results.json) or a results.json written by this canopy version");
+    }
+}
+
+struct CompareCommand {
+    std::string baseline, candidate, threshold = "5%", out;
+    bool no_time = false, no_errors = false;
+};
+
+int compare(const CompareCommand& command) {
+    const RunRecord baseline = read_run(command.baseline);
+    const RunRecord candidate = read_run(command.candidate);
+    ComparisonSettings settings;
+    settings.threshold = parse_threshold(command.threshold);
+    settings.time = !command.no_time;
+    settings.errors = !command.no_errors;
+    RunComparison comparison;
+    try {
+        comparison = compare_runs(baseline, candidate, settings);
+    } catch (const ComparisonRefused& e) {
+        throw ConfigError(fs::path(), 0, e.what(), "canopy compare compares two runs of one experiment and config");
+    }
+    const std::string report =
+        comparison_report({command.baseline, &baseline}, {command.candidate, &candidate}, comparison);
+    fmt::print("{}", report);
+    if (!command.out.empty()) {
+        write_text_atomically(command.out, report);
+        fmt::print("\nwritten to {}\n", fs::absolute(command.out).string());
+    }
+    return comparison.passed() ? kExitOk : kExitFailedCases;
+}
+
 struct RunCommand {
     fs::path config;
     std::string out, device;
@@ -167,6 +225,7 @@ int run(const RunCommand& command, const ReferenceOptions& reference_options) {
     options.reference = command.with_reference;
     options.images = command.images;
     options.reference_cache_dir = cache_dir(reference_options);
+    options.ballast = ballast_from_environment();  // TEST-ONLY (run/test_ballast.hpp)
     const RunIdentity identity = make_run_identity(experiment, options, collect_environment(gpu, experiment.config_hash));
     const OutputFolderPlan folder = plan_output_folder(options.out_dir, identity, command.force, command.resume);
     const OutputFolderLock lock(options.out_dir);  // one canopy process per folder
@@ -298,6 +357,28 @@ int main(int argc, char** argv) {
     bench_scaling_cmd->add_option("--out", out_dir, "also write the Markdown report to this file");
     bench_scaling_cmd->add_option("--device", device, "Vulkan device: index or part of its name (default: lavapipe)");
 
+    CompareCommand compare_command;
+    CLI::App* compare_cmd = app.add_subcommand(
+        "compare", "Compare two runs of one experiment: time ratios (with intervals) and errors, case by case.");
+    compare_cmd->add_option("baseline", compare_command.baseline, "the earlier run: its folder or its results.json")->required();
+    compare_cmd->add_option("candidate", compare_command.candidate, "the run to check: its folder or its results.json")->required();
+    compare_cmd->add_option("--threshold", compare_command.threshold,
+                            "a time ratio's change counts as a regression only when its whole 95 % interval lies above "
+                            "this (e.g. 5% or 0.05)")
+        ->capture_default_str();
+    compare_cmd->add_flag("--no-time", compare_command.no_time,
+                          "compare errors only (e.g. against a baseline run on another machine)");
+    compare_cmd->add_flag("--no-errors", compare_command.no_errors, "compare time ratios only");
+    compare_cmd->add_option("--out", compare_command.out, "also write the report to this file");
+    compare_cmd->footer(
+        "Cases are matched by id; cases in one run only are listed. Time: per case, the relative change of its time\n"
+        "ratio to its group's baseline (both measured in the same rounds), candidate / baseline - 1, with a 95 %\n"
+        "interval from resampling each run's rounds (block bootstrap). Errors: every metric within |change| <=\n"
+        "absolute + relative x |baseline| (tolerances in the README). Runs of different experiments or configs are\n"
+        "refused (exit 2); different commits, devices or builds are compared and named.\n"
+        "Exit codes: 0 nothing flagged, 1 a regression, an error out of tolerance or a case that failed only in\n"
+        "the candidate, 2 bad input.");
+
     CLI::App* list_cmd = app.add_subcommand("list", "List every technique with its parameters (type, range, default).");
     CLI::App* devices_cmd = app.add_subcommand("devices", "List the Vulkan devices canopy can run on.");
 
@@ -325,6 +406,7 @@ int main(int argc, char** argv) {
             return run(command, reference_options);
         }
         if (*reference_cmd) return reference(scene_path, out_dir, reference_options);
+        if (*compare_cmd) return compare(compare_command);
         if (*bench_reference_cmd)
             return bench_reference(scene_path.empty() ? find_default_bench_scene(current_executable()) : fs::path(scene_path),
                                    reference_options);
