@@ -17,6 +17,8 @@
 #include "report/console_table.hpp"
 #include "report/json_record_reader.hpp"
 #include "run/run_comparison.hpp"
+#include "run/stability_bench.hpp"
+#include "report/stability_report.hpp"
 #include "core/plan_requirements.hpp"
 #include "run/environment.hpp"
 #include "run/output_folder.hpp"
@@ -143,6 +145,50 @@ int bench_scaling(const ScalingOptions& options, const std::string& device, cons
     return kExitOk;
 }
 
+struct StabilityCommand {
+    StabilityOptions options;
+    std::string out;
+    std::vector<std::string> from;
+    bool force = false;
+};
+
+int bench_stability(StabilityCommand command) {
+    if (!command.from.empty()) {
+        std::vector<fs::path> folders(command.from.begin(), command.from.end());
+        const StabilityResult result = analyse_run_folders(folders);
+        fmt::print("{}", stability_markdown(result));
+        if (!command.out.empty()) {
+            fs::create_directories(command.out);
+            write_stability_report(command.out, result);
+            fmt::print("\nwritten to {}/stability.md and stability.json\n", fs::absolute(command.out).string());
+        }
+        return kExitOk;
+    }
+    if (command.options.experiment.empty())
+        throw ConfigError(fs::path(), 0, "bench stability needs an experiment (or --from run folders)",
+                          "canopy bench stability configs/experiments/stability.toml --runs 5");
+    // The experiment is checked here, so a bad config fails before any run starts.
+    const Experiment experiment = load_experiment(command.options.experiment, TechniqueRegistry::instance());
+    fs::path out = command.out.empty()
+                       ? fs::path("results") / "runs" /
+                             fmt::format("{:%Y-%m-%d-%H%M%S}-stability-{}", fmt::localtime(std::time(nullptr)), experiment.name)
+                       : fs::path(command.out);
+    if (fs::exists(out) && !fs::is_empty(out)) {
+        if (!command.force)
+            throw ConfigError(out, 0, "the folder is not empty",
+                              "give a new folder with --out, or --force to replace an earlier stability benchmark there");
+        for (const char* name : {"stability.md", "stability.json"}) fs::remove(out / name);
+        fs::remove_all(out / "runs");
+    }
+    fs::create_directories(out);
+    command.options.out = out;
+    const StabilityResult result = run_stability_bench(current_executable(), command.options);
+    write_stability_report(out, result);
+    fmt::print("{}\nwritten to {}/stability.md and stability.json (the runs in runs/)\n", stability_markdown(result),
+               fs::absolute(out).string());
+    return kExitOk;
+}
+
 // "5%" or "0.05" -> 0.05; throws ConfigError for anything else.
 double parse_threshold(const std::string& text) {
     try {
@@ -255,7 +301,7 @@ int run(const RunCommand& command, const ReferenceOptions& reference_options) {
     }
     if (!record.error.empty()) {
         fmt::print(stderr, "canopy: the run failed: {}\n  hint: fix the cause (free space, permissions), then run the "
-                           "same command again: it resumes, keeping the finished cases results.json records\n",
+                           "same command again: it resumes, keeping the finished groups results.json records\n",
                    record.error);
         return kExitFailedCases;
     }
@@ -284,7 +330,7 @@ int main(int argc, char** argv) {
     });
     app.footer("Exit codes: 0 success, 1 a case failed (e.g. NaN pixels) or a file could not be written, 2 bad input\n"
                "(the message names file:line, or the output folder), 130 interrupted by Ctrl-C, 143 by SIGTERM\n"
-               "(finished cases are kept; the same command resumes). Set CANOPY_VALIDATION=1 for Vulkan validation layers.");
+               "(finished groups of cases are kept; the same command resumes). Set CANOPY_VALIDATION=1 for Vulkan validation layers.");
 
     std::string config_path, out_dir, device, scene_path;
     bool quick = false, no_progress = false, no_reference = false, resume = false, force = false;
@@ -306,7 +352,8 @@ int main(int argc, char** argv) {
     CLI::App* run_cmd = app.add_subcommand("run", "Run an experiment: scenes x techniques x parameters x resolutions.");
     run_cmd->add_option("experiment", config_path, "experiment TOML, e.g. configs/experiments/default.toml")->required();
     run_cmd->add_option("--out", out_dir, "output folder (default results/runs/<date>-<experiment>/)");
-    run_cmd->add_flag("--quick", quick, "1 warm-up and 3 measured frames per case, for smoke tests");
+    run_cmd->add_flag("--quick", quick, "1 warm-up frame and 3 measured rounds of 1 frame per case, for smoke tests "
+                                         "(too few to judge timing claims or compare times)");
     run_cmd->add_option("--device", device, "Vulkan device: index or part of its name (default: lavapipe)");
     run_cmd->add_flag("--no-progress", no_progress, "no progress bar or lines on stderr");
     run_cmd->add_flag("--no-reference", no_reference, "skip the ray-traced reference and the error columns");
@@ -314,21 +361,27 @@ int main(int argc, char** argv) {
         ->check(CLI::IsMember({"all", "png", "none"}))
         ->capture_default_str();
     run_cmd->add_flag("--resume", resume,
-                      "continue the run in --out (stopped by Ctrl-C, SIGTERM, a kill or a full disk): its finished cases "
+                      "continue the run in --out (stopped by Ctrl-C, SIGTERM, a kill or a full disk): its finished groups "
                       "are kept, the rest run; the config and options must be the same");
     run_cmd->add_flag("--force", force,
                       "write into a folder that holds another run (its canopy files are removed first) or into "
                       "committed results (results/paper/, results/baselines/)");
     add_reference_options(run_cmd, false);
-    run_cmd->footer("Writes results.json (every sample, statistics, parameters, environment, errors), results.csv,\n"
-                    "results.md (every column; stdout gets a compact table), paper.md for experiments with a [paper]\n"
-                    "table, and in images/ per case an EXR (linear float), a PNG (sRGB), an absolute-error heat map and\n"
-                    "a FLIP map with colour bars, plus the reference images. The reference's sample counts come from the\n"
-                    "experiment's [reference] table; references are cached by content.\n"
+    run_cmd->footer("Timing: the cases of one scene at one resolution (a group) are measured together, round by round;\n"
+                    "each sample (frames_per_sample frames) sits between two samples of the group's first case (the\n"
+                    "baseline) and its ratio is taken against their mean; a case's ratio is the median over the rounds\n"
+                    "with a 95 % block-bootstrap interval (README, Timing).\n"
+                    "Writes results.json (every sample, per-round ratios, statistics, parameters, groups, environment,\n"
+                    "errors), results.csv, results.md (every column; stdout gets a compact table), results.gbench.json\n"
+                    "(Google Benchmark's JSON format), paper.md for experiments with a [paper] table, and in images/ per\n"
+                    "case an EXR (linear float), a PNG (sRGB), an absolute-error heat map and a FLIP map with colour\n"
+                    "bars, plus the reference images. The reference's sample counts come from the experiment's\n"
+                    "[reference] table; references are cached by content.\n"
                     "Output folder: a new or empty one starts a run; one holding a run of the same experiment, config\n"
-                    "(content hash), options (--quick, --images, --no-reference), device, build and thread count\n"
-                    "continues it, keeping its finished cases; anything else, and results/paper/ or results/baselines/,\n"
-                    "is refused (exit 2) unless --force. One canopy process at a time writes into a folder.");
+                    "(content hash), options (--quick, --images, --no-reference), measurement settings, device, build\n"
+                    "and thread count continues it, keeping its finished groups; anything else, and results/paper/ or\n"
+                    "results/baselines/, is refused (exit 2) unless --force. One canopy process at a time writes into a\n"
+                    "folder.");
 
     CLI::App* reference_cmd = app.add_subcommand("reference", "Ray-trace the ground-truth image of a scene with Embree.");
     reference_cmd->add_option("scene", scene_path, "scene TOML, e.g. configs/scenes/spheres.toml")->required();
@@ -379,6 +432,32 @@ int main(int argc, char** argv) {
         "Exit codes: 0 nothing flagged, 1 a regression, an error out of tolerance or a case that failed only in\n"
         "the candidate, 2 bad input.");
 
+    StabilityCommand stability;
+    CLI::App* bench_stability_cmd = bench_cmd->add_subcommand(
+        "stability", "The instrument's own benchmark: run an experiment N times; within-run CV and run-to-run spread "
+                     "of every ratio.");
+    bench_stability_cmd->add_option("experiment", stability.options.experiment,
+                                    "experiment TOML, e.g. configs/experiments/stability.toml");
+    bench_stability_cmd->add_option("--from", stability.from,
+                                    "analyse these run folders of one experiment instead of running it (e.g. runs "
+                                    "interleaved with other settings by scripts/measurement-study)");
+    bench_stability_cmd->add_option("--runs", stability.options.runs, "separate `canopy run` processes")
+        ->capture_default_str()
+        ->check(CLI::Range(2, 1000));
+    bench_stability_cmd->add_option("--out", stability.out,
+                                    "report folder (default results/runs/<date>-stability-<experiment>/)");
+    bench_stability_cmd->add_flag("--quick", stability.options.quick, "pass --quick to every run (a smoke test)");
+    bench_stability_cmd->add_flag("--force", stability.force, "replace an earlier stability benchmark in --out");
+    bench_stability_cmd->add_option("--device", stability.options.device,
+                                    "Vulkan device: index or part of its name (default: lavapipe)");
+    bench_stability_cmd->footer(
+        "Each run is `canopy run EXPERIMENT --no-reference --images none` into OUT/runs/run-<k>/, with this\n"
+        "process's environment (LP_NUM_THREADS, taskset, ...). Writes OUT/stability.md and OUT/stability.json:\n"
+        "per case its within-run CV (samples of one run), the run-to-run spread of its ratio to the group's\n"
+        "baseline ((max - min) / median and std / mean over the runs), whether it reaches the targets (spread\n"
+        "<= 5 % for cases over 20 ms, CV <= 5 %), and the load average before and after every run.\n"
+        "scripts/measurement-study runs it under several settings (README, Timing).");
+
     CLI::App* list_cmd = app.add_subcommand("list", "List every technique with its parameters (type, range, default).");
     CLI::App* devices_cmd = app.add_subcommand("devices", "List the Vulkan devices canopy can run on.");
 
@@ -407,6 +486,7 @@ int main(int argc, char** argv) {
         }
         if (*reference_cmd) return reference(scene_path, out_dir, reference_options);
         if (*compare_cmd) return compare(compare_command);
+        if (*bench_stability_cmd) return bench_stability(stability);
         if (*bench_reference_cmd)
             return bench_reference(scene_path.empty() ? find_default_bench_scene(current_executable()) : fs::path(scene_path),
                                    reference_options);

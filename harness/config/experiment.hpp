@@ -16,6 +16,10 @@ namespace canopy {
 // Frames one timing sample averages unless an experiment says otherwise (README, "Timing").
 inline constexpr int kDefaultFramesPerSample = 1;
 
+// How a case's samples are paired with the baseline's (run/group_measurement.hpp).
+enum class BaselinePairing { adjacent, round };
+const char* to_string(BaselinePairing pairing);
+
 struct Resolution {
     int width = 640;
     int height = 360;
@@ -43,6 +47,7 @@ struct Experiment {
     int warmup_frames = 5;
     int rounds = 20;  // the `repetitions` key
     int frames_per_sample = kDefaultFramesPerSample;
+    BaselinePairing pairing = BaselinePairing::adjacent;  // the `pairing` key
     // The ray-traced reference every case's image is compared with ([reference] table).
     bool reference_enabled = true;
     ReferenceSettings reference{64, 4, 1, 0};  // 64 light samples x 4 pixel samples = 256 shadow rays per pixel

@@ -241,6 +241,8 @@ void read_reference(TomlReader& section, Experiment& experiment) {
 
 }  // namespace
 
+const char* to_string(BaselinePairing pairing) { return pairing == BaselinePairing::round ? "round" : "adjacent"; }
+
 Experiment load_experiment(const std::filesystem::path& file, const TechniqueRegistry& registry) {
     const std::string text = read_config_file(file);
     const toml::table root = parse_toml(text, file);
@@ -288,6 +290,12 @@ Experiment load_experiment(const std::filesystem::path& file, const TechniqueReg
                                          kMaxFrames / repetitions, kMaxFrames, frames_per_sample),
                              "frames_per_sample is the number of frames one timing sample averages, e.g. "
                              "frames_per_sample = 4");
+    const std::string pairing = section->get_string("pairing", to_string(experiment.pairing));
+    if (pairing != "adjacent" && pairing != "round")
+        throw section->error("pairing", fmt::format("'pairing' must be \"adjacent\" or \"round\", got \"{}\"", pairing),
+                             "pairing = \"adjacent\" divides each sample by the baseline samples just before and after "
+                             "it (the default); \"round\" by the baseline's one sample of the round");
+    experiment.pairing = pairing == "round" ? BaselinePairing::round : BaselinePairing::adjacent;
     experiment.warmup_frames = int(warmup);
     experiment.rounds = int(repetitions);
     experiment.frames_per_sample = int(frames_per_sample);

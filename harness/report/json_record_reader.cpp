@@ -170,6 +170,7 @@ RunRecord read_json_report(const std::filesystem::path& file) {
         run.quick = j.at("quick").get<bool>();
         run.planned_cases = j.at("planned_cases").get<size_t>();
         run.reference_enabled = j.at("reference_enabled").get<bool>();
+        run.environment = j.at("environment").get<Environment>();
         for (const json& r : j.at("references")) run.references.push_back(read_reference(r));
         for (const json& g : j.at("groups")) run.groups.push_back(read_group(g));
         for (const json& c : j.at("cases")) run.cases.push_back(read_case(c));

@@ -88,8 +88,8 @@ std::string markdown_report(const RunRecord& run) {
     }
     out += "\nGPU ms: median over the rounds of a sample's mean frame time, from the first pass's start to the last "
            "pass's end (Vulkan timestamps); CV over the rounds. ratio: GPU time relative to the first row of the same "
-           "scene and resolution (the group's baseline), measured in the same round, median over the rounds with its "
-           "95 % block-bootstrap interval. "
+           "scene and resolution (the group's baseline), each sample divided by the baseline's samples measured just "
+           "before and after it, median over the rounds with its 95 % block-bootstrap interval. "
            "memory: device memory the technique's own resources take (shadow maps, ...). "
            "Errors are against the ray-traced reference, in linear radiance: RMSE, PSNR (peak 1), SSIM and FLIP over "
            "the image; bleeding = mean excess luminance over pixels in full umbra in the reference, over-dark = mean "

@@ -206,8 +206,9 @@ std::string paper_report(const PaperComparison& paper, const RunRecord& run) {
         out += fmt::format("## Frame time relative to {} (paper → **canopy**)\n\n", paper.baseline);
         out += table(header, rows);
         out += fmt::format("\nPaper: time = {}; canopy: GPU time of all passes (Vulkan timestamps) relative to the "
-                           "baseline row measured in the same round (cases of one scene and resolution are measured "
-                           "together, round by round), median over the rounds, [95 % block-bootstrap interval]. Ratios "
+                           "baseline row, paired sample by sample (cases of one scene and resolution are measured "
+                           "together, round by round, each sample between two of the group's baseline), median over "
+                           "the rounds, [95 % block-bootstrap interval]. Ratios "
                            "compare, absolute times do not: the paper ran on a 2008-2010 GPU, canopy on {}.\n\n",
                            paper.unit == "fps" ? "1000 / fps" : "ms", e.device.name);
     }

@@ -10,6 +10,11 @@ CaseRatio time_ratio(const CaseResult& a, const CaseResult& b) {
                             a.resolution.height == b.resolution.height && a.group == b.group;
     // Against its own group's baseline: the ratio it recorded (the same numbers as the ratio column).
     if (same_group && b.group_baseline && a.ratio.measured()) return {a.ratio.estimate, RatioPairing::rounds};
+    if (same_group && a.chunk == b.chunk && a.ratio.measured() && a.ratio.per_round.size() == b.ratio.per_round.size()) {
+        // Round by round, each through the baseline samples it was paired with.
+        const RatioRecord paired = paired_ratio(a.ratio.per_round, b.ratio.per_round, a.id + "/" + b.id);
+        return {paired.estimate, RatioPairing::rounds};
+    }
     if (same_group && a.chunk == b.chunk && !a.gpu_frame.samples_ms.empty()) {
         const RatioRecord paired = paired_ratio(a.gpu_frame.samples_ms, b.gpu_frame.samples_ms, a.id + "/" + b.id);
         return {paired.estimate, RatioPairing::rounds};

@@ -172,4 +172,33 @@ void to_json(nlohmann::json& j, const Environment& e) {
          {"config_hash", e.config_hash}};
 }
 
+void from_json(const nlohmann::json& j, Environment& e) {
+    auto read = [&](const char* key, auto& field) {
+        if (j.contains(key) && !j.at(key).is_null()) j.at(key).get_to(field);
+    };
+    read("device", e.device.name);
+    read("device_type", e.device.type);
+    read("driver", e.device.driver_name);
+    read("driver_info", e.device.driver_info);
+    read("mesa_version", e.mesa_version);
+    read("vulkan_api", e.device.api_version);
+    read("nproc", e.nproc);
+    read("lp_num_threads", e.lp_num_threads);
+    read("cpu_model", e.cpu_model);
+    read("cpu_mhz", e.cpu_mhz);
+    read("cpu_scaling", e.cpu_scaling);
+    read("cpus_allowed", e.cpus_allowed);
+    read("load_average", e.load_average);
+    read("build_type", e.build_type);
+    read("canopy_version", e.canopy_version);
+    read("commit", e.git_commit);
+    read("commit_dirty", e.git_dirty);
+    read("hostname", e.hostname);
+    read("config_hash", e.config_hash);
+    if (j.contains("cpu_caches"))
+        for (const auto& c : j.at("cpu_caches"))
+            e.caches.push_back({c.at("type").get<std::string>(), c.at("level").get<int>(), c.at("size").get<long long>(),
+                                c.at("num_sharing").get<int>()});
+}
+
 }  // namespace canopy

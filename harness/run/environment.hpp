@@ -46,5 +46,7 @@ std::string source_commit();
 std::string canopy_build_type();  // CMAKE_BUILD_TYPE of this binary
 std::array<double, 3> current_load_average();  // /proc/loadavg: 1, 5 and 15 minutes; zeros if unknown
 void to_json(nlohmann::json& j, const Environment& e);
+// Reads back what to_json wrote; fields a record lacks keep their defaults.
+void from_json(const nlohmann::json& j, Environment& e);
 
 }  // namespace canopy

@@ -145,6 +145,7 @@ MeasurementSettings measurement_settings(const Experiment& experiment, const Run
     m.warmup_frames = options.quick ? std::min(experiment.warmup_frames, 1) : experiment.warmup_frames;
     m.rounds = options.quick ? std::min(experiment.rounds, 3) : experiment.rounds;
     m.frames_per_sample = options.quick ? 1 : experiment.frames_per_sample;
+    m.pairing = experiment.pairing;
     return m;
 }
 

@@ -12,6 +12,7 @@
 #include <chrono>
 #include <ctime>
 #include <memory>
+#include <optional>
 
 namespace canopy {
 
@@ -44,6 +45,7 @@ struct LiveCase {
     std::vector<std::string> pass_names;
     std::vector<std::vector<double>> pass_samples;
     std::vector<double> gpu, wall, cpu, start;
+    std::vector<double> ratios;  // per round: GPU time / the baseline's it is paired with
     bool failed = false;
 
     void fail(const std::string& why) {
@@ -71,22 +73,60 @@ struct LiveCase {
     }
 
     // One sample: `frames` frames, each series the mean over them.
-    void sample(int frames, double started_s) {
-        std::vector<double> passes(pass_names.size(), 0.0);
-        double gpu_sum = 0, wall_sum = 0;
+    struct Sample {
+        std::vector<double> passes;
+        double gpu = 0, wall = 0, cpu = 0, start = 0;
+        int count = 0;  // samples summed into this one
+
+        void add(const Sample& s) {
+            if (passes.size() < s.passes.size()) passes.resize(s.passes.size(), 0.0);
+            for (size_t p = 0; p < s.passes.size(); ++p) passes[p] += s.passes[p];
+            gpu += s.gpu;
+            wall += s.wall;
+            cpu += s.cpu;
+            if (count == 0) start = s.start;
+            count += s.count;
+        }
+    };
+    Sample sample(int frames, double started_s) {
+        Sample s;
+        s.passes.assign(pass_names.size(), 0.0);
+        s.start = started_s;
+        s.count = 1;
         const double cpu_before = process_cpu_ms();
         for (int f = 0; f < frames; ++f) {
             const FrameTiming t = frame();
-            for (size_t p = 0; p < passes.size() && p < t.pass_gpu_ms.size(); ++p) passes[p] += t.pass_gpu_ms[p];
-            gpu_sum += t.gpu_ms;
-            wall_sum += t.wall_ms;
+            for (size_t p = 0; p < s.passes.size() && p < t.pass_gpu_ms.size(); ++p) s.passes[p] += t.pass_gpu_ms[p];
+            s.gpu += t.gpu_ms;
+            s.wall += t.wall_ms;
         }
         const double n = double(frames);
-        for (size_t p = 0; p < passes.size(); ++p) pass_samples[p].push_back(passes[p] / n);
-        gpu.push_back(gpu_sum / n);
-        wall.push_back(wall_sum / n);
-        cpu.push_back((process_cpu_ms() - cpu_before) / n);
-        start.push_back(started_s);
+        for (double& p : s.passes) p /= n;
+        s.gpu /= n;
+        s.wall /= n;
+        s.cpu = (process_cpu_ms() - cpu_before) / n;
+        return s;
+    }
+    // Records a round's sample (for the baseline under adjacent pairing: the mean of its samples
+    // in the round).
+    void record(const Sample& sum) {
+        const double n = double(std::max(sum.count, 1));
+        for (size_t p = 0; p < pass_samples.size(); ++p) pass_samples[p].push_back(p < sum.passes.size() ? sum.passes[p] / n : 0.0);
+        gpu.push_back(sum.gpu / n);
+        wall.push_back(sum.wall / n);
+        cpu.push_back(sum.cpu / n);
+        start.push_back(sum.start);
+    }
+
+    // Forgets the samples taken so far (the baseline's, between chunks: its record keeps the first
+    // chunk's, each later chunk pairs with its own).
+    void clear_samples() {
+        for (auto& p : pass_samples) p.clear();
+        gpu.clear();
+        wall.clear();
+        cpu.clear();
+        start.clear();
+        ratios.clear();
     }
 
     void finish_timings(size_t chunk) {
@@ -127,6 +167,7 @@ bool measure_chunk(std::vector<LiveCase*>& members, const MeasurementSettings& s
                    MeasurementChunk& chunk, const GroupCallbacks& callbacks, bool with_baseline) {
     const auto begin = Clock::now();
     chunk.started_at = utc_now();
+    if (with_baseline) members.front()->clear_samples();
     for (LiveCase* m : members) {
         chunk.cases.push_back(m->result.id);
         for (int i = 0; i < settings.warmup_frames && !m->failed; ++i) {
@@ -138,20 +179,59 @@ bool measure_chunk(std::vector<LiveCase*>& members, const MeasurementSettings& s
             }
         }
     }
+    // One sample of `m` (a failure ends the case alone); nullopt when it failed.
+    auto take = [&](LiveCase& m) -> std::optional<LiveCase::Sample> {
+        if (m.failed) return std::nullopt;
+        try {
+            return m.sample(settings.frames_per_sample, seconds_between(begin, Clock::now()));
+        } catch (const GpuError& e) {
+            m.fail(e.what());
+            return std::nullopt;
+        }
+    };
+    const bool adjacent = settings.pairing == BaselinePairing::adjacent && with_baseline && members.size() > 1;
     for (int round = 0; round < settings.rounds; ++round) {
         if (callbacks.round_started) callbacks.round_started(chunk_index, members.size(), round + 1, settings.rounds);
-        std::vector<size_t> order = round_order(members.size(), size_t(round));
-        for (size_t k : order) {
+        std::vector<size_t> sequence;  // positions in `members`, in the order they ran
+        if (adjacent) {
+            // B X B Y B Z B: each case between two baseline samples, divided by their mean.
+            LiveCase& baseline = *members.front();
+            LiveCase::Sample baseline_sum;
             if (interrupt_requested()) return false;
-            LiveCase& m = *members[k];
-            if (m.failed) continue;
-            try {
-                m.sample(settings.frames_per_sample, seconds_between(begin, Clock::now()));
-            } catch (const GpuError& e) {
-                m.fail(e.what());
+            std::optional<LiveCase::Sample> before = take(baseline);
+            sequence.push_back(0);
+            if (before) baseline_sum.add(*before);
+            for (size_t k : round_order(members.size() - 1, size_t(round))) {
+                LiveCase& m = *members[k + 1];
+                if (m.failed) continue;
+                if (interrupt_requested()) return false;
+                const std::optional<LiveCase::Sample> sample = take(m);
+                const std::optional<LiveCase::Sample> after = take(baseline);
+                sequence.insert(sequence.end(), {k + 1, 0});
+                if (after) baseline_sum.add(*after);
+                if (sample) {
+                    m.record(*sample);
+                    if (before && after) m.ratios.push_back(sample->gpu / (0.5 * (before->gpu + after->gpu)));
+                }
+                before = after;
             }
+            if (!baseline.failed) {
+                baseline.record(baseline_sum);
+                baseline.ratios.push_back(1.0);
+            }
+        } else {
+            for (size_t k : round_order(members.size(), size_t(round))) {
+                if (interrupt_requested()) return false;
+                if (const std::optional<LiveCase::Sample> sample = take(*members[k])) members[k]->record(*sample);
+                sequence.push_back(k);
+            }
+            // Each case divided by the baseline's sample of the same round.
+            const LiveCase& baseline = *members.front();
+            if (with_baseline && !baseline.failed && baseline.gpu.size() == size_t(round) + 1)
+                for (LiveCase* m : members)
+                    if (!m->failed && m->gpu.size() == size_t(round) + 1) m->ratios.push_back(m->gpu.back() / baseline.gpu.back());
         }
-        chunk.orders.push_back(std::move(order));
+        chunk.orders.push_back(std::move(sequence));
     }
     if (with_baseline) chunk.baseline_gpu_ms = members.front()->gpu;
     chunk.seconds = seconds_between(begin, Clock::now());
@@ -161,8 +241,10 @@ bool measure_chunk(std::vector<LiveCase*>& members, const MeasurementSettings& s
 // Its timings, its ratio, its last image; then the callback.
 void finish(LiveCase& live, size_t chunk_index, const MeasurementChunk& chunk, const GroupCallbacks& callbacks) {
     live.finish_timings(chunk_index);
-    if (!chunk.baseline_gpu_ms.empty() && !live.failed)
-        live.result.ratio = paired_ratio(live.gpu, chunk.baseline_gpu_ms, live.result.id);
+    if (!chunk.baseline_gpu_ms.empty() && !live.failed && !live.ratios.empty()) {
+        live.result.ratio.per_round = live.ratios;
+        live.result.ratio.estimate = median_with_ci(live.ratios, bootstrap_seed(live.result.id));
+    }
     Image image;
     if (live.renderer && !live.failed) {
         try {

@@ -1,10 +1,15 @@
 // Measures a group of cases — those that share a baseline: one scene at one resolution — so that
 // a change of load on the machine hits every case of the group alike. Every case's renderer is
-// built and warmed up, then each measured round takes one sample of every case (F frames each,
-// the order per round from round_order.hpp), and each case's time is divided by the baseline's
-// time of the same round. The median of those per-round ratios, with a block-bootstrap interval,
-// is the case's ratio: a load shift that lasts longer than a round divides out, where the ratio
-// of two medians measured minutes apart would carry it.
+// built and warmed up, then each measured round takes one sample of every case (F frames each),
+// and each sample is divided by a baseline sample taken as close to it in time as can be:
+//   adjacent (the default): B X B Y B Z B — each case between two baseline samples, divided by
+//            their mean; the cases' order changes per round (round_order.hpp), and every case
+//            follows the baseline, so none inherits another case's state;
+//   round:   X Y B Z (a Williams order of all cases) — each case divided by the baseline's one
+//            sample of the round.
+// The median of those per-round ratios, with a block-bootstrap interval, is the case's ratio: a
+// load shift that lasts longer than a sample divides out, where the ratio of two medians measured
+// minutes apart would carry it. README "Timing" has the measurements behind the choice.
 //
 // A group whose renderers would hold more than ChunkLimits allows is measured in chunks, each
 // with the baseline in it (re-measured, so every chunk's rounds are paired with it too).
@@ -23,6 +28,7 @@ struct MeasurementSettings {
     int warmup_frames = 5;      // per case, before the first round of its chunk
     int rounds = 20;            // samples per case
     int frames_per_sample = 1;  // frames one sample averages
+    BaselinePairing pairing = BaselinePairing::adjacent;
 };
 
 struct ChunkLimits {

@@ -73,17 +73,20 @@ std::vector<MetricChange> compare_errors(const ImageMetrics& b, const ImageMetri
 }  // namespace
 
 const std::vector<MetricTolerance>& error_tolerances() {
-    // Chosen from measurement (README, "Comparing runs"): the largest change seen between
-    // lavapipe's code paths (LP_NATIVE_VECTOR_WIDTH 128/256/512) and Embree's ISAs, times about 10.
+    // Chosen from measurement (README, "Catching regressions"): the quick suite rendered by
+    // lavapipe's SSE-free code path (GALLIUM_NOSSE=1, 128-bit vectors) moved no metric by more than
+    // 3.2e-4 of its value (PSNR 1.0e-3 dB, SSIM 1.0e-6) from the AVX-512 path; 256- and 512-bit
+    // vectors and every thread count gave identical metrics. Tolerances are about 10x that, with an
+    // absolute floor for metrics near zero.
     static const std::vector<MetricTolerance> tolerances = {
-        {"mae", [](const ImageMetrics& m) { return m.mae; }, 1e-3, 1e-5},
-        {"rmse", [](const ImageMetrics& m) { return m.rmse; }, 1e-3, 1e-5},
-        {"psnr_db", [](const ImageMetrics& m) { return m.psnr; }, 0.0, 0.01},
-        {"ssim", [](const ImageMetrics& m) { return m.ssim; }, 0.0, 1e-4},
-        {"flip_mean", [](const ImageMetrics& m) { return m.flip_mean; }, 1e-3, 1e-5},
-        {"light_bleeding", [](const ImageMetrics& m) { return m.light_bleeding; }, 1e-3, 1e-5},
-        {"over_darkening", [](const ImageMetrics& m) { return m.over_darkening; }, 1e-3, 1e-5},
-        {"penumbra_rmse", [](const ImageMetrics& m) { return m.penumbra_rmse; }, 1e-3, 1e-5},
+        {"mae", [](const ImageMetrics& m) { return m.mae; }, 3e-3, 1e-6},
+        {"rmse", [](const ImageMetrics& m) { return m.rmse; }, 3e-3, 1e-6},
+        {"psnr_db", [](const ImageMetrics& m) { return m.psnr; }, 0.0, 0.02},
+        {"ssim", [](const ImageMetrics& m) { return m.ssim; }, 0.0, 1e-5},
+        {"flip_mean", [](const ImageMetrics& m) { return m.flip_mean; }, 3e-3, 1e-6},
+        {"light_bleeding", [](const ImageMetrics& m) { return m.light_bleeding; }, 3e-3, 1e-6},
+        {"over_darkening", [](const ImageMetrics& m) { return m.over_darkening; }, 3e-3, 1e-6},
+        {"penumbra_rmse", [](const ImageMetrics& m) { return m.penumbra_rmse; }, 3e-3, 1e-6},
     };
     return tolerances;
 }

@@ -42,6 +42,7 @@ RunIdentity make_run_identity(const Experiment& experiment, const RunOptions& op
     add("warmup_frames", std::to_string(measurement.warmup_frames));
     add("rounds", std::to_string(measurement.rounds));
     add("frames_per_sample", std::to_string(measurement.frames_per_sample));
+    add("pairing", to_string(measurement.pairing));
     add("round_order", "williams");
     add("chunk_limits", fmt::format("{} cases, {} MiB", options.chunk_limits.max_cases, options.chunk_limits.max_bytes >> 20));
     add("test_ballast", options.ballast ? fmt::format("{}={}", options.ballast->technique, options.ballast->iterations) : "none");

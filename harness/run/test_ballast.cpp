@@ -35,7 +35,7 @@ Ballast::Ballast(const GpuContext& gpu, uint32_t width, uint32_t height, uint32_
     : gpu_(gpu),
       count_(width * height),
       iterations_(iterations),
-      sink_(gpu, ledger_, "ballast", VkDeviceSize(width) * height * sizeof(float), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+      sink_(gpu, ledger_, "ballast", VkDeviceSize(width) * height * sizeof(uint32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
             false) {
     VkDevice device = gpu.device();
     VkDescriptorSetLayoutBinding binding{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
@@ -83,15 +83,30 @@ Ballast::Ballast(const GpuContext& gpu, uint32_t width, uint32_t height, uint32_
     VkFenceCreateInfo fence_info{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
     VK_CHECK(vkCreateFence(device, &fence_info, nullptr, &fence_));
 
+    // A barrier on both sides of the dispatch, inside the timed span: lavapipe writes a timestamp
+    // only when its pending work is flushed, and a barrier flushes it (the filter passes' layout
+    // transitions do the same), so the first stamp is taken before the dispatch runs and the
+    // second after it.
+    VkMemoryBarrier2 storage{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
+    storage.srcStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+    storage.srcAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
+    storage.dstStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+    storage.dstAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
+    VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+    dependency.memoryBarrierCount = 1;
+    dependency.pMemoryBarriers = &storage;
+
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     VK_CHECK(vkBeginCommandBuffer(commands_, &begin));
     timer_->reset(commands_);
     timer_->begin(commands_, 0);
+    vkCmdPipelineBarrier2(commands_, &dependency);
     vkCmdBindPipeline(commands_, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_->handle());
     vkCmdBindDescriptorSets(commands_, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, 1, &set_, 0, nullptr);
     const WorkConstants work{iterations_, count_};
     vkCmdPushConstants(commands_, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof work, &work);
     vkCmdDispatch(commands_, (count_ + 63) / 64, 1, 1);
+    vkCmdPipelineBarrier2(commands_, &dependency);
     timer_->end(commands_, 0);
     VK_CHECK(vkEndCommandBuffer(commands_));
 }

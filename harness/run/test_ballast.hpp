@@ -2,7 +2,7 @@
 // a real, measured slowdown and check that `canopy compare` flags it (tests/cli/measurement.sh).
 // It reads an environment variable that nothing else uses; unset, nothing changes:
 //   CANOPY_TEST_BALLAST=<technique>=<iterations>   after every frame of that technique's cases,
-//       a compute pass runs <iterations> dependent multiply-adds per pixel; its time (its own
+//       a compute pass runs <iterations> rounds of a xorshift per pixel; its time (its own
 //       pass "test_ballast", timestamps like every pass) is added to the frame's GPU time.
 // Images are not touched: the pass writes only its own buffer.
 #pragma once
