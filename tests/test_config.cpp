@@ -355,7 +355,8 @@ TEST_CASE("an experiment expands its sweep into ordered cases with unique ids") 
     CHECK(experiment.name == "sweep");
     CHECK(experiment.description == "kernel and pattern sweep");
     CHECK(experiment.warmup_frames == 2);
-    CHECK(experiment.measured_frames == 3);
+    CHECK(experiment.rounds == 3);
+    CHECK(experiment.frames_per_sample == kDefaultFramesPerSample);
     REQUIRE(experiment.scenes.size() == 1);
     CHECK(experiment.scenes[0].name == "minimal");
     REQUIRE(experiment.resolutions.size() == 2);

@@ -64,7 +64,8 @@ TEST_CASE("shadow-free scenes: every technique's isolated error is ~0, below 10 
     Experiment experiment = load_experiment(kSource / "configs/experiments/checks/shadow-free.toml", registry);
     experiment.resolutions = {{kWidth, kHeight}};  // the committed size takes minutes on two cores
     experiment.warmup_frames = 0;
-    experiment.measured_frames = 1;
+    experiment.rounds = 1;
+    experiment.frames_per_sample = 1;
     const PreparedExperiment prepared = prepare_experiment(experiment, registry, test::gpu());
     const test::TempFolder folder("canopy-test-isolated");
     RunOptions options;

@@ -61,20 +61,32 @@ metric = "penumbra_rmse"
 relation = "less"
 )";
 
-CaseResult fake_case(const std::string& technique, long long kernel, double gpu_ms, double penumbra_rmse) {
+// A case of the one group (tiny 96x64) measured in the same rounds as the others, with these GPU
+// samples, one per round.
+CaseResult fake_case(const std::string& technique, long long kernel, std::vector<double> samples, double penumbra_rmse) {
     CaseResult c;
+    c.id = technique + "_" + std::to_string(kernel);
     c.technique = technique;
     c.scene = "tiny";
     c.resolution = {96, 64};
     c.params = {{"resolution", 1024LL}};
     if (technique == "shadow.pcf") c.params.push_back({"kernel", kernel});
-    c.gpu_frame.stats.median = gpu_ms;
-    c.gpu_frame.stats.count = 20;
+    c.gpu_frame.samples_ms = std::move(samples);
+    c.gpu_frame.stats = summarize(c.gpu_frame.samples_ms);
     ImageMetrics m{};
     m.penumbra_rmse = penumbra_rmse;
     m.columns = {.visibility = true, .shadow_regions = true};  // the shadow family's
     c.image_error = m;
     return c;
+}
+
+std::vector<double> constant(double ms, size_t rounds = 20) { return std::vector<double>(rounds, ms); }
+
+// `ms` times a and b in turn: a per-round ratio that swings between them.
+std::vector<double> alternating(double ms, double a, double b, size_t rounds = 20) {
+    std::vector<double> v;
+    for (size_t r = 0; r < rounds; ++r) v.push_back(ms * (r % 2 ? b : a));
+    return v;
 }
 
 }  // namespace
@@ -93,53 +105,62 @@ TEST_CASE("a [paper] table is parsed with its rows and claims") {
 TEST_CASE("claims are judged per column from canopy's numbers") {
     const Experiment e = load_experiment(write_experiment("judge.toml", kPaper), TechniqueRegistry::instance());
     RunRecord run;
-    run.cases = {fake_case("shadow.hard", 0, 10.0, 0.06), fake_case("shadow.pcf", 3, 10.5, 0.04),
-                 fake_case("shadow.pcf", 5, 20.0, 0.03)};
+    run.cases = {fake_case("shadow.hard", 0, constant(10.0), 0.06), fake_case("shadow.pcf", 3, constant(10.5), 0.04),
+                 fake_case("shadow.pcf", 5, constant(20.0), 0.03)};
     auto verdicts = judge_claims(*e.paper, run);
     REQUIRE(verdicts.size() == 3);
-    CHECK(verdicts[0].outcome == "holds");  // 20 > 10.5
-    CHECK(verdicts[1].outcome == "holds");  // 10.5 / 10 within 10 %
+    CHECK(verdicts[0].outcome == "holds");  // 20 > 10.5 in every round
+    CHECK(verdicts[1].outcome == "holds");  // 10.5 / 10 within 10 % in every round
     CHECK(verdicts[2].outcome == "holds");  // 0.03 < 0.06
-    run.cases[1].gpu_frame.stats.median = 12.0;  // now 20 % above hard, no noise
+    run.cases[1].gpu_frame.samples_ms = constant(12.0);  // now 20 % above hard in every round
     verdicts = judge_claims(*e.paper, run);
     CHECK(verdicts[1].outcome == "does not hold");
-    // The same 20 % (2 ms, 1 ms past the 10 % tolerance) with a spread of 0.6 ms each: the noise
-    // band (2.4 ms) covers the excess -> within noise.
-    run.cases[0].gpu_frame.stats.mad = run.cases[1].gpu_frame.stats.mad = 0.6;
+    CHECK(verdicts[1].because.find("ratio 1.20 [1.20, 1.20]") != std::string::npos);
+    std::string report = paper_report(*e.paper, run);
+    CHECK(report.find("# T1") != std::string::npos);
+    CHECK(report.find("2.00 → **1.20** [1.20, 1.20]") != std::string::npos);  // paper 400 vs 200 fps: twice the time
+
+    // A ratio of 1.1 at the median that swings between 0.95 and 1.25 from round to round: its
+    // interval reaches both sides of the 10 % tolerance -> within noise.
+    run.cases[1].gpu_frame.samples_ms = alternating(10.0, 0.95, 1.25);
     verdicts = judge_claims(*e.paper, run);
     CHECK(verdicts[1].outcome == "within noise");
-    // PCF 5 (20 ms) vs PCF 3 (12 ms) with spreads of 0.6 and 3.5 ms: the 8 ms gap is inside 8.2.
-    run.cases[2].gpu_frame.stats.mad = 3.5;
+    // PCF 5 at 1.05 x PCF 3 at the median, swinging between 0.8 and 1.3: within noise.
+    std::vector<double> pcf5;
+    for (size_t r = 0; r < 20; ++r) pcf5.push_back(run.cases[1].gpu_frame.samples_ms[r] * (r % 4 < 2 ? 0.8 : 1.3));
+    run.cases[2].gpu_frame.samples_ms = pcf5;
     verdicts = judge_claims(*e.paper, run);
     CHECK(verdicts[0].outcome == "within noise");
     CHECK_FALSE(verdicts[0].holds());
+    // The rows' medians alone (10.0 x 1.1 and 10.0 x 1.1 x 1.05) would say "holds": the verdict
+    // comes from the paired rounds.
     run.cases.pop_back();  // no PCF 5 case: not measured, never "holds"
     verdicts = judge_claims(*e.paper, run);
     CHECK(verdicts[0].outcome == "not measured");
     CHECK_FALSE(verdicts[0].decided());
-
-    const std::string report = paper_report(*e.paper, run);
-    CHECK(report.find("# T1") != std::string::npos);
-    CHECK(report.find("2.00 → **1.20**") != std::string::npos);  // paper 400 vs 200 fps: twice the time
 }
 
 TEST_CASE("a timing claim from too few samples says so instead of a verdict") {
     const Experiment e = load_experiment(write_experiment("few.toml", kPaper), TechniqueRegistry::instance());
     RunRecord run;
-    run.cases = {fake_case("shadow.hard", 0, 10.0, 0.06), fake_case("shadow.pcf", 3, 10.5, 0.04),
-                 fake_case("shadow.pcf", 5, 20.0, 0.03)};
-    for (CaseResult& c : run.cases) c.gpu_frame.stats.count = 3;  // --quick
+    run.cases = {fake_case("shadow.hard", 0, constant(10.0, 3), 0.06), fake_case("shadow.pcf", 3, constant(10.5, 3), 0.04),
+                 fake_case("shadow.pcf", 5, constant(20.0, 3), 0.03)};  // --quick: 3 rounds
     auto verdicts = judge_claims(*e.paper, run);
-    CHECK(verdicts[0].outcome == "too few samples");  // 20 > 10.5, but from 3 frames each
+    CHECK(verdicts[0].outcome == "too few samples");  // 20 > 10.5, but from 3 rounds each
     CHECK(verdicts[0].because.find("too few samples (3 < 6)") == 0);
     CHECK_FALSE(verdicts[0].decided());
     CHECK(verdicts[1].outcome == "too few samples");
     CHECK(verdicts[2].outcome == "holds");  // an error claim: renders are deterministic
     // One case short is enough to withhold the verdict; at the minimum it is given.
-    run.cases[0].gpu_frame.stats.count = run.cases[2].gpu_frame.stats.count = kMinTimingSamples;
+    auto set_rounds = [&](size_t i, size_t rounds) {
+        run.cases[i].gpu_frame.samples_ms = constant(run.cases[i].gpu_frame.samples_ms[0], rounds);
+        run.cases[i].gpu_frame.stats = summarize(run.cases[i].gpu_frame.samples_ms);
+    };
+    set_rounds(0, kMinTimingSamples);
+    set_rounds(2, kMinTimingSamples);
     verdicts = judge_claims(*e.paper, run);
     CHECK(verdicts[0].outcome == "too few samples");  // PCF 3 still has 3
-    run.cases[1].gpu_frame.stats.count = kMinTimingSamples;
+    set_rounds(1, kMinTimingSamples);
     verdicts = judge_claims(*e.paper, run);
     CHECK(verdicts[0].outcome == "holds");
     CHECK(verdicts[1].outcome == "holds");

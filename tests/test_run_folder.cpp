@@ -61,7 +61,8 @@ RunRecord awkward_record(const RunIdentity& id) {
     run.config_file = "tests/data/experiments/tiny.toml";
     run.identity = id;
     run.warmup_frames = 1;
-    run.measured_frames = 3;
+    run.rounds = 3;
+    run.frames_per_sample = 1;
     run.quick = true;
     run.started_at = "2026-01-01T00:00:00Z";
     run.resumed_at = {"2026-01-01T00:01:00Z"};
@@ -94,6 +95,25 @@ RunRecord awkward_record(const RunIdentity& id) {
     c.gpu_frame = {"gpu_frame", {0.1, 0.2 + 1e-17, 1.0 / 7.0}, {3, 0.2, 0.1, 1.0 / 7.0, 0.15, 0.05, 0.33}};
     c.wall = {"wall", {1, 2, 3}, {3, 2, 1, 3, 2, 1, 0.5}};
     c.passes = {{"shadow_map", {0.01, 0.02, 0.03}, {3, 0.02, 0.01, 0.03, 0.02, 0.01, 0.5}}};
+    c.cpu = {"cpu", {1.5, 2.5, 3.5}, {3, 2.5, 1.5, 3.5, 2.5, 1, 0.4}};
+    c.sample_start_s = {0.0, 0.25, 1.0 / 3.0};
+    c.group = 0;
+    c.chunk = 1;
+    c.ratio.per_round = {1.5, 2.0 / 3.0, 1.75};
+    c.ratio.estimate = {1.5, {2.0 / 3.0, 1.75}, 3};
+    GroupRecord g;
+    g.name = "tiny 96x64";
+    g.scene = "tiny";
+    g.resolution = {96, 64};
+    g.cases = {"tiny_96x64_shadow.hard", c.id};
+    MeasurementChunk chunk;
+    chunk.cases = g.cases;
+    chunk.started_at = "2026-01-01T00:00:01Z";
+    chunk.seconds = 0.1 + 0.2;
+    chunk.orders = {{0, 1}, {1, 0}, {0, 1}};
+    chunk.baseline_gpu_ms = {0.05, 0.3, 1.0 / 11.0};
+    g.chunks = {chunk, chunk};
+    run.groups.push_back(g);
     c.memory = {262144, 100, 7};
     c.triangles = 14;
     c.shadow_sampler = "compare";
@@ -132,6 +152,7 @@ RunRecord awkward_record(const RunIdentity& id) {
     failed.ok = false;
     failed.error = "12 pixels are NaN or Inf";
     failed.image_error.reset();
+    failed.ratio = {};
     run.cases.push_back(failed);
     return run;
 }
@@ -140,15 +161,19 @@ RunRecord awkward_record(const RunIdentity& id) {
 
 TEST_CASE("a run's identity: what differs is named, field by field") {
     CHECK(identity_differences(identity(), identity()).empty());
+    // --quick shortens the measurement: the option and the settings it changes are named.
     const auto quick = identity_differences(identity(true), identity(false));
-    REQUIRE(quick.size() == 1);
+    REQUIRE(quick.size() == 3);
     CHECK(quick[0] == "quick: the folder's run has 'true', this one 'false'");
+    CHECK(quick[1] == "warmup_frames: the folder's run has '1', this one '5'");
+    CHECK(quick[2] == "rounds: the folder's run has '3', this one '20'");
     const auto two = identity_differences(identity(true, ImageOutput::png, "aaaa"), identity(true, ImageOutput::all));
     REQUIRE(two.size() == 2);
     CHECK(two[0].find("config_hash") == 0);
     CHECK(two[1].find("images: the folder's run has 'png', this one 'all'") == 0);
     // The device, the build and the thread count are part of it: timings of one run compare.
-    for (const char* field : {"device", "driver", "commit", "build_type", "lp_num_threads", "nproc", "reference"})
+    for (const char* field : {"device", "driver", "commit", "build_type", "lp_num_threads", "nproc", "reference",
+                              "rounds", "frames_per_sample", "round_order", "chunk_limits", "test_ballast"})
         CHECK_MESSAGE(identity().find(field) != nullptr, field);
 }
 
@@ -161,10 +186,14 @@ TEST_CASE("results.json reads back exactly: every field, NaN, infinity, every di
     const RunRecord back = read_json_report(dir / "results.json");
     // Written again, the cases, references and run fields are the same text: nothing was lost.
     const nlohmann::json a = nlohmann::json::parse(json_report(run)), b = nlohmann::json::parse(json_report(back));
-    for (const char* key : {"cases", "references", "run_identity", "status", "error", "started_at", "resumed_at",
-                            "measured_frames", "warmup_frames", "quick", "planned_cases", "config", "description"})
+    for (const char* key : {"cases", "groups", "references", "run_identity", "status", "error", "started_at", "resumed_at",
+                            "rounds", "frames_per_sample", "measured_frames", "warmup_frames", "quick", "planned_cases", "config", "description"})
         CHECK_MESSAGE(a[key].dump() == b[key].dump(), key);
     CHECK(back.cases[0].gpu_frame.samples_ms[2] == 1.0 / 7.0);
+    CHECK(back.cases[0].ratio.per_round[1] == 2.0 / 3.0);
+    CHECK(back.cases[0].ratio.estimate.ci.high == 1.75);
+    CHECK(back.cases[1].ratio.measured() == false);  // the failed case has none
+    CHECK(back.groups[0].chunks[1].baseline_gpu_ms[2] == 1.0 / 11.0);
     CHECK(std::isinf(back.cases[0].image_error->psnr));
     CHECK(std::isnan(back.cases[0].image_error->light_bleeding));
     CHECK(back.cases[0].image_error->visibility_mae == 1.0 / 3.0);

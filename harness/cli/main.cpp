@@ -13,7 +13,12 @@
 #include "run/interrupt.hpp"
 #include "run/kernel_scaling.hpp"
 #include "report/atomic_file.hpp"
+#include "report/comparison_report.hpp"
 #include "report/console_table.hpp"
+#include "report/json_record_reader.hpp"
+#include "run/run_comparison.hpp"
+#include "run/stability_bench.hpp"
+#include "report/stability_report.hpp"
 #include "core/plan_requirements.hpp"
 #include "run/environment.hpp"
 #include "run/output_folder.hpp"
@@ -145,6 +150,105 @@ int bench_scaling(const ScalingOptions& options, const std::string& device, cons
     return kExitOk;
 }
 
+struct StabilityCommand {
+    StabilityOptions options;
+    std::string out;
+    std::vector<std::string> from;
+    bool force = false;
+};
+
+int bench_stability(StabilityCommand command) {
+    if (!command.from.empty()) {
+        std::vector<fs::path> folders(command.from.begin(), command.from.end());
+        const StabilityResult result = analyse_run_folders(folders);
+        fmt::print("{}", stability_markdown(result));
+        if (!command.out.empty()) {
+            fs::create_directories(command.out);
+            write_stability_report(command.out, result);
+            fmt::print("\nwritten to {}/stability.md and stability.json\n", fs::absolute(command.out).string());
+        }
+        return kExitOk;
+    }
+    if (command.options.experiment.empty())
+        throw ConfigError(fs::path(), 0, "bench stability needs an experiment (or --from run folders)",
+                          "canopy bench stability configs/experiments/stability.toml --runs 5");
+    // The experiment is checked here, so a bad config fails before any run starts.
+    const Experiment experiment = load_experiment(command.options.experiment, TechniqueRegistry::instance());
+    fs::path out = command.out.empty()
+                       ? fs::path("results") / "runs" /
+                             fmt::format("{:%Y-%m-%d-%H%M%S}-stability-{}", fmt::localtime(std::time(nullptr)), experiment.name)
+                       : fs::path(command.out);
+    if (fs::exists(out) && !fs::is_empty(out)) {
+        if (!command.force)
+            throw ConfigError(out, 0, "the folder is not empty",
+                              "give a new folder with --out, or --force to replace an earlier stability benchmark there");
+        for (const char* name : {"stability.md", "stability.json"}) fs::remove(out / name);
+        fs::remove_all(out / "runs");
+    }
+    fs::create_directories(out);
+    command.options.out = out;
+    const StabilityResult result = run_stability_bench(current_executable(), command.options);
+    write_stability_report(out, result);
+    fmt::print("{}\nwritten to {}/stability.md and stability.json (the runs in runs/)\n", stability_markdown(result),
+               fs::absolute(out).string());
+    return kExitOk;
+}
+
+// "5%" or "0.05" -> 0.05; throws ConfigError for anything else.
+double parse_threshold(const std::string& text) {
+    try {
+        size_t used = 0;
+        const bool percent = !text.empty() && text.back() == '%';
+        const double value = std::stod(percent ? text.substr(0, text.size() - 1) : text, &used);
+        if (used != text.size() - (percent ? 1 : 0)) throw std::invalid_argument(text);
+        const double fraction = percent ? value / 100.0 : value;
+        if (!(fraction >= 0.0 && fraction < 1.0) || (!percent && value >= 1.0)) throw std::out_of_range(text);
+        return fraction;
+    } catch (const std::logic_error&) {
+        throw ConfigError(fs::path(), 0, fmt::format("--threshold '{}' is not a relative change", text),
+                          "give a percentage or a fraction below 1, e.g. --threshold 5% or --threshold 0.05");
+    }
+}
+
+// A run folder or its results.json.
+RunRecord read_run(const std::string& where) {
+    const fs::path path = fs::is_directory(where) ? fs::path(where) / "results.json" : fs::path(where);
+    try {
+        return read_json_report(path);
+    } catch (const std::runtime_error& e) {
+        throw ConfigError(fs::path(), 0, e.what(),
+                          "give a run folder (holding results.json) or a results.json written by this canopy version");
+    }
+}
+
+struct CompareCommand {
+    std::string baseline, candidate, threshold = "5%", out;
+    bool no_time = false, no_errors = false;
+};
+
+int compare(const CompareCommand& command) {
+    const RunRecord baseline = read_run(command.baseline);
+    const RunRecord candidate = read_run(command.candidate);
+    ComparisonSettings settings;
+    settings.threshold = parse_threshold(command.threshold);
+    settings.time = !command.no_time;
+    settings.errors = !command.no_errors;
+    RunComparison comparison;
+    try {
+        comparison = compare_runs(baseline, candidate, settings);
+    } catch (const ComparisonRefused& e) {
+        throw ConfigError(fs::path(), 0, e.what(), "canopy compare compares two runs of one experiment and config");
+    }
+    const std::string report =
+        comparison_report({command.baseline, &baseline}, {command.candidate, &candidate}, comparison);
+    fmt::print("{}", report);
+    if (!command.out.empty()) {
+        write_text_atomically(command.out, report);
+        fmt::print("\nwritten to {}\n", fs::absolute(command.out).string());
+    }
+    return comparison.passed() ? kExitOk : kExitFailedCases;
+}
+
 struct RunCommand {
     fs::path config;
     std::string out, device;
@@ -172,6 +276,7 @@ int run(const RunCommand& command, const ReferenceOptions& reference_options) {
     options.reference = command.with_reference;
     options.images = command.images;
     options.reference_cache_dir = cache_dir(reference_options);
+    options.ballast = ballast_from_environment();  // TEST-ONLY (run/test_ballast.hpp)
     const RunIdentity identity = make_run_identity(experiment, options, collect_environment(gpu, experiment.config_hash));
     const OutputFolderPlan folder = plan_output_folder(options.out_dir, identity, command.force, command.resume);
     const OutputFolderLock lock(options.out_dir);  // one canopy process per folder
@@ -201,7 +306,7 @@ int run(const RunCommand& command, const ReferenceOptions& reference_options) {
     }
     if (!record.error.empty()) {
         fmt::print(stderr, "canopy: the run failed: {}\n  hint: fix the cause (free space, permissions), then run the "
-                           "same command again: it resumes, keeping the finished cases results.json records\n",
+                           "same command again: it resumes, keeping the finished groups results.json records\n",
                    record.error);
         return kExitFailedCases;
     }
@@ -230,7 +335,7 @@ int main(int argc, char** argv) {
     });
     app.footer("Exit codes: 0 success, 1 a case failed (e.g. NaN pixels) or a file could not be written, 2 bad input\n"
                "(the message names file:line, or the output folder), 130 interrupted by Ctrl-C, 143 by SIGTERM\n"
-               "(finished cases are kept; the same command resumes). Set CANOPY_VALIDATION=1 for Vulkan validation layers.");
+               "(finished groups of cases are kept; the same command resumes). Set CANOPY_VALIDATION=1 for Vulkan validation layers.");
 
     std::string config_path, out_dir, device, scene_path;
     bool quick = false, no_progress = false, no_reference = false, resume = false, force = false;
@@ -252,7 +357,8 @@ int main(int argc, char** argv) {
     CLI::App* run_cmd = app.add_subcommand("run", "Run an experiment: scenes x techniques x parameters x resolutions.");
     run_cmd->add_option("experiment", config_path, "experiment TOML, e.g. configs/experiments/default.toml")->required();
     run_cmd->add_option("--out", out_dir, "output folder (default results/runs/<date>-<experiment>/)");
-    run_cmd->add_flag("--quick", quick, "1 warm-up and 3 measured frames per case, for smoke tests");
+    run_cmd->add_flag("--quick", quick, "1 warm-up frame and 3 measured rounds of 1 frame per case, for smoke tests "
+                                         "(too few to judge timing claims or compare times)");
     run_cmd->add_option("--device", device, "Vulkan device: index or part of its name (default: lavapipe)");
     run_cmd->add_flag("--no-progress", no_progress, "no progress bar or lines on stderr");
     run_cmd->add_flag("--no-reference", no_reference, "skip the ray-traced reference and the error columns");
@@ -260,24 +366,30 @@ int main(int argc, char** argv) {
         ->check(CLI::IsMember({"all", "png", "none"}))
         ->capture_default_str();
     run_cmd->add_flag("--resume", resume,
-                      "continue the run in --out (stopped by Ctrl-C, SIGTERM, a kill or a full disk): its finished cases "
+                      "continue the run in --out (stopped by Ctrl-C, SIGTERM, a kill or a full disk): its finished groups "
                       "are kept, the rest run; the config and options must be the same");
     run_cmd->add_flag("--force", force,
                       "write into a folder that holds another run (its canopy files are removed first) or into "
                       "committed results (results/paper/, results/baselines/)");
     add_reference_options(run_cmd, false);
-    run_cmd->footer("Writes results.json (every sample, statistics, parameters, environment, errors), results.csv,\n"
-                    "results.md (every column; stdout gets a compact table), paper.md for experiments with a [paper]\n"
-                    "table, and in images/ per case an EXR (linear float), a PNG (sRGB), the technique's pixel-centre\n"
-                    "visibility (EXR), an absolute-error heat map and a FLIP map with colour bars, plus the reference\n"
-                    "images. Errors: whole-image (RMSE, PSNR, SSIM, FLIP: how far the image is from the truth) and\n"
-                    "technique-isolated (visibility RMSE/MAE: how wrong the technique's shadow is, at the same pixel\n"
-                    "centres as a 1024-light-sample reference). The reference's sample counts come from the\n"
-                    "experiment's [reference] table; references are cached by content.\n"
+    run_cmd->footer("Timing: the cases of one scene at one resolution (a group) are measured together, round by round;\n"
+                    "each sample (frames_per_sample frames) sits between two samples of the group's first case (the\n"
+                    "baseline) and its ratio is taken against their mean; a case's ratio is the median over the rounds\n"
+                    "with a 95 % block-bootstrap interval (README, Timing).\n"
+                    "Writes results.json (every sample, per-round ratios, statistics, parameters, groups, environment,\n"
+                    "errors), results.csv, results.md (every column; stdout gets a compact table), results.gbench.json\n"
+                    "(Google Benchmark's JSON format), paper.md for experiments with a [paper] table, and in images/ per\n"
+                    "case an EXR (linear float), a PNG (sRGB), the technique's pixel-centre visibility (EXR), an\n"
+                    "absolute-error heat map and a FLIP map with colour bars, plus the reference images. Errors:\n"
+                    "whole-image (RMSE, PSNR, SSIM, FLIP: how far the image is from the truth) and technique-isolated\n"
+                    "(visibility RMSE/MAE: how wrong the technique's shadow is, at the same pixel centres as a\n"
+                    "1024-light-sample reference). The reference's sample counts come from the experiment's\n"
+                    "[reference] table; references are cached by content.\n"
                     "Output folder: a new or empty one starts a run; one holding a run of the same experiment, config\n"
-                    "(content hash), options (--quick, --images, --no-reference), device, build and thread count\n"
-                    "continues it, keeping its finished cases; anything else, and results/paper/ or results/baselines/,\n"
-                    "is refused (exit 2) unless --force. One canopy process at a time writes into a folder.");
+                    "(content hash), options (--quick, --images, --no-reference), measurement settings, device, build\n"
+                    "and thread count continues it, keeping its finished groups; anything else, and results/paper/ or\n"
+                    "results/baselines/, is refused (exit 2) unless --force. One canopy process at a time writes into a\n"
+                    "folder.");
 
     CLI::App* reference_cmd = app.add_subcommand("reference", "Ray-trace the ground-truth image of a scene with Embree.");
     reference_cmd->add_option("scene", scene_path, "scene TOML, e.g. configs/scenes/spheres.toml")->required();
@@ -306,6 +418,54 @@ int main(int argc, char** argv) {
     bench_scaling_cmd->add_option("--out", out_dir, "also write the Markdown report to this file");
     bench_scaling_cmd->add_option("--device", device, "Vulkan device: index or part of its name (default: lavapipe)");
 
+    CompareCommand compare_command;
+    CLI::App* compare_cmd = app.add_subcommand(
+        "compare", "Compare two runs of one experiment: time ratios (with intervals) and errors, case by case.");
+    compare_cmd->add_option("baseline", compare_command.baseline, "the earlier run: its folder or its results.json")->required();
+    compare_cmd->add_option("candidate", compare_command.candidate, "the run to check: its folder or its results.json")->required();
+    compare_cmd->add_option("--threshold", compare_command.threshold,
+                            "a time ratio's change counts as a regression only when its whole 95 % interval lies above "
+                            "this (e.g. 5% or 0.05)")
+        ->capture_default_str();
+    compare_cmd->add_flag("--no-time", compare_command.no_time,
+                          "compare errors only (e.g. against a baseline run on another machine)");
+    compare_cmd->add_flag("--no-errors", compare_command.no_errors, "compare time ratios only");
+    compare_cmd->add_option("--out", compare_command.out, "also write the report to this file");
+    compare_cmd->footer(
+        "Cases are matched by id; cases in one run only are listed. Time: per case, the relative change of its time\n"
+        "ratio to its group's baseline (both measured in the same rounds), candidate / baseline - 1, with a 95 %\n"
+        "interval from resampling each run's rounds (block bootstrap). Errors: every metric within |change| <=\n"
+        "absolute + relative x |baseline| (tolerances in the README). Runs of different experiments or configs are\n"
+        "refused (exit 2); different commits, devices or builds are compared and named.\n"
+        "Exit codes: 0 nothing flagged, 1 a regression, an error out of tolerance or a case that failed only in\n"
+        "the candidate, 2 bad input.");
+
+    StabilityCommand stability;
+    CLI::App* bench_stability_cmd = bench_cmd->add_subcommand(
+        "stability", "The instrument's own benchmark: run an experiment N times; within-run CV and run-to-run spread "
+                     "of every ratio.");
+    bench_stability_cmd->add_option("experiment", stability.options.experiment,
+                                    "experiment TOML, e.g. configs/experiments/stability.toml");
+    bench_stability_cmd->add_option("--from", stability.from,
+                                    "analyse these run folders of one experiment instead of running it (e.g. runs "
+                                    "interleaved with other settings by scripts/measurement-study)");
+    bench_stability_cmd->add_option("--runs", stability.options.runs, "separate `canopy run` processes")
+        ->capture_default_str()
+        ->check(CLI::Range(2, 1000));
+    bench_stability_cmd->add_option("--out", stability.out,
+                                    "report folder (default results/runs/<date>-stability-<experiment>/)");
+    bench_stability_cmd->add_flag("--quick", stability.options.quick, "pass --quick to every run (a smoke test)");
+    bench_stability_cmd->add_flag("--force", stability.force, "replace an earlier stability benchmark in --out");
+    bench_stability_cmd->add_option("--device", stability.options.device,
+                                    "Vulkan device: index or part of its name (default: lavapipe)");
+    bench_stability_cmd->footer(
+        "Each run is `canopy run EXPERIMENT --no-reference --images none` into OUT/runs/run-<k>/, with this\n"
+        "process's environment (LP_NUM_THREADS, taskset, ...). Writes OUT/stability.md and OUT/stability.json:\n"
+        "per case its within-run CV (samples of one run), the run-to-run spread of its ratio to the group's\n"
+        "baseline ((max - min) / median and std / mean over the runs), whether it reaches the targets (spread\n"
+        "<= 5 % for cases over 20 ms, CV <= 5 %), and the load average before and after every run.\n"
+        "scripts/measurement-study runs it under several settings (README, Timing).");
+
     CLI::App* list_cmd = app.add_subcommand("list", "List every technique with its parameters (type, range, default).");
     CLI::App* devices_cmd = app.add_subcommand("devices", "List the Vulkan devices canopy can run on.");
 
@@ -333,6 +493,8 @@ int main(int argc, char** argv) {
             return run(command, reference_options);
         }
         if (*reference_cmd) return reference(scene_path, out_dir, reference_options);
+        if (*compare_cmd) return compare(compare_command);
+        if (*bench_stability_cmd) return bench_stability(stability);
         if (*bench_reference_cmd)
             return bench_reference(scene_path.empty() ? find_default_bench_scene(current_executable()) : fs::path(scene_path),
                                    reference_options);

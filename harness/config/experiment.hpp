@@ -13,6 +13,13 @@
 
 namespace canopy {
 
+// Frames one timing sample averages unless an experiment says otherwise (README, "Timing").
+inline constexpr int kDefaultFramesPerSample = 1;
+
+// How a case's samples are paired with the baseline's (run/group_measurement.hpp).
+enum class BaselinePairing { adjacent, round };
+const char* to_string(BaselinePairing pairing);
+
 struct Resolution {
     int width = 640;
     int height = 360;
@@ -35,8 +42,12 @@ struct Experiment {
     std::vector<Scene> scenes;
     std::vector<Resolution> resolutions{{640, 360}};
     std::vector<TechniqueEntry> techniques;
+    // Timing (run/group_measurement.hpp): warm-up frames per case, then `rounds` measured rounds,
+    // each one sample of every case of a group, a sample the mean of `frames_per_sample` frames.
     int warmup_frames = 5;
-    int measured_frames = 20;
+    int rounds = 20;  // the `repetitions` key
+    int frames_per_sample = kDefaultFramesPerSample;
+    BaselinePairing pairing = BaselinePairing::adjacent;  // the `pairing` key
     // The ray-traced reference every case's image is compared with ([reference] table).
     bool reference_enabled = true;
     ReferenceSettings reference{64, 4, 1, 0};  // 64 light samples x 4 pixel samples = 256 shadow rays per pixel

@@ -248,6 +248,8 @@ void read_reference(TomlReader& section, Experiment& experiment) {
 
 }  // namespace
 
+const char* to_string(BaselinePairing pairing) { return pairing == BaselinePairing::round ? "round" : "adjacent"; }
+
 Experiment load_experiment(const std::filesystem::path& file, const TechniqueRegistry& registry) {
     const std::string text = read_config_file(file);
     const toml::table root = parse_toml(text, file);
@@ -282,13 +284,28 @@ Experiment load_experiment(const std::filesystem::path& file, const TechniqueReg
     if (warmup < 0 || warmup > kMaxFrames)
         throw section->error("warmup", fmt::format("'warmup' must lie in [0, {}], got {}", kMaxFrames, warmup),
                              "warmup is the number of unmeasured frames before timing, e.g. warmup = 5");
-    const long long repetitions = section->get_int("repetitions", experiment.measured_frames);
+    const long long repetitions = section->get_int("repetitions", experiment.rounds);
     if (repetitions < 1 || repetitions > kMaxFrames)
         throw section->error("repetitions",
                              fmt::format("'repetitions' must lie in [1, {}], got {}", kMaxFrames, repetitions),
-                             "repetitions is the number of measured frames, e.g. repetitions = 20");
+                             "repetitions is the number of measured rounds (samples per case), e.g. repetitions = 20");
+    const long long frames_per_sample = section->get_int("frames_per_sample", experiment.frames_per_sample);
+    if (frames_per_sample < 1 || frames_per_sample > kMaxFrames / repetitions)
+        throw section->error("frames_per_sample",
+                             fmt::format("'frames_per_sample' must lie in [1, {}] (repetitions x frames_per_sample "
+                                         "<= {}), got {}",
+                                         kMaxFrames / repetitions, kMaxFrames, frames_per_sample),
+                             "frames_per_sample is the number of frames one timing sample averages, e.g. "
+                             "frames_per_sample = 4");
+    const std::string pairing = section->get_string("pairing", to_string(experiment.pairing));
+    if (pairing != "adjacent" && pairing != "round")
+        throw section->error("pairing", fmt::format("'pairing' must be \"adjacent\" or \"round\", got \"{}\"", pairing),
+                             "pairing = \"adjacent\" divides each sample by the baseline samples just before and after "
+                             "it (the default); \"round\" by the baseline's one sample of the round");
+    experiment.pairing = pairing == "round" ? BaselinePairing::round : BaselinePairing::adjacent;
     experiment.warmup_frames = int(warmup);
-    experiment.measured_frames = int(repetitions);
+    experiment.rounds = int(repetitions);
+    experiment.frames_per_sample = int(frames_per_sample);
     if (reference_section) read_reference(*reference_section, experiment);
     if (paper_section) experiment.paper = read_paper(*paper_section, registry);
 

@@ -23,7 +23,7 @@ std::string shortened(const std::string& text, size_t width) {
 std::string console_table(const RunRecord& run) {
     const bool errors = std::any_of(run.cases.begin(), run.cases.end(), [](const CaseResult& c) { return c.image_error.has_value(); });
     const bool failures = std::any_of(run.cases.begin(), run.cases.end(), [](const CaseResult& c) { return !c.ok; });
-    std::vector<std::string> header = {"technique", "parameters", "GPU ms", "ratio"};
+    std::vector<std::string> header = {"technique", "parameters", "GPU ms", "ratio [95% CI]"};
     std::vector<bool> right = {false, false, true, true};
     if (errors) {
         header.insert(header.end(), {"PSNR dB", "FLIP", "penumbra RMSE", "V RMSE"});
@@ -37,7 +37,6 @@ std::string console_table(const RunRecord& run) {
     std::string out;
     std::vector<std::vector<std::string>> rows;
     std::string group;
-    double baseline = 0.0;
     auto flush = [&] {
         if (!rows.empty()) out += (out.empty() ? "" : "\n") + group + "\n" + render_table(header, rows, right);
         rows.clear();
@@ -47,13 +46,12 @@ std::string console_table(const RunRecord& run) {
         if (this_group != group) {
             flush();
             group = this_group;
-            baseline = c.ok ? c.gpu_frame.stats.median : 0.0;
         }
         const bool timed = c.gpu_frame.stats.count > 0;
         std::vector<std::string> row = {
             c.technique, shortened(c.params_shown, kConsoleParametersWidth),
             timed ? fmt::format("{:.3f}", c.gpu_frame.stats.median) : "-",
-            timed && baseline > 0 ? fmt::format("{:.2f}", c.gpu_frame.stats.median / baseline) : "-"};
+            c.ok ? ratio_cell(c.ratio.estimate) : "-"};
         if (errors) {
             if (const auto& m = c.image_error) {
                 for (double v : {m->psnr, m->flip_mean}) row.push_back(metric_cell(v));

@@ -31,7 +31,7 @@ std::string csv_report(const RunRecord& run) {
             if (seen.insert(p.name).second) pass_names.push_back(p.name);
 
     std::string out = "id,scene,technique,params,width,height,ok,gpu_ms_median,gpu_ms_min,gpu_ms_mean,gpu_ms_mad,gpu_cv,"
-                      "wall_ms_median,wall_ms_mad,wall_cv";
+                      "wall_ms_median,wall_ms_mad,wall_cv,cpu_ms_median,ratio,ratio_ci95_low,ratio_ci95_high,rounds,frames_per_sample";
     for (const auto& name : pass_names) out += fmt::format(",{0}_gpu_ms_median,{0}_gpu_ms_mad", name);
     out += ",technique_memory_bytes,target_memory_bytes,scene_memory_bytes,triangles,shadow_sampler,nonfinite_pixels,"
            "mae,rmse,psnr_db,max_error,ssim,flip_mean,flip_weighted_median,light_bleeding,over_darkening,penumbra_rmse,"
@@ -41,6 +41,10 @@ std::string csv_report(const RunRecord& run) {
                            quoted(c.params_summary), c.resolution.width, c.resolution.height, c.ok ? 1 : 0,
                            c.gpu_frame.stats.median, c.gpu_frame.stats.min, c.gpu_frame.stats.mean, c.gpu_frame.stats.mad,
                            c.gpu_frame.stats.cv, c.wall.stats.median, c.wall.stats.mad, c.wall.stats.cv);
+        const Estimate& r = c.ratio.estimate;
+        out += c.ratio.measured() ? fmt::format(",{},{},{},{}", c.cpu.stats.median, r.value, r.ci.low, r.ci.high)
+                                  : fmt::format(",{},,,", c.cpu.stats.median);
+        out += fmt::format(",{},{}", c.gpu_frame.stats.count, run.frames_per_sample);
         for (const auto& name : pass_names) {
             const TimingSeries* pass = nullptr;
             for (const auto& p : c.passes)

@@ -72,6 +72,32 @@ ImageMetrics read_error(const json& j) {
     return m;
 }
 
+RatioRecord read_ratio(const json& j) {
+    RatioRecord r;
+    if (j.is_null()) return r;
+    r.per_round = j.at("per_round").get<std::vector<double>>();
+    r.estimate = {metric(j.at("median")), {metric(j.at("ci95_low")), metric(j.at("ci95_high"))}, r.per_round.size()};
+    return r;
+}
+
+GroupRecord read_group(const json& j) {
+    GroupRecord g;
+    g.name = j.at("name").get<std::string>();
+    g.scene = j.at("scene").get<std::string>();
+    g.resolution = {j.at("width").get<int>(), j.at("height").get<int>()};
+    g.cases = j.at("cases").get<std::vector<std::string>>();
+    for (const json& c : j.at("chunks")) {
+        MeasurementChunk chunk;
+        chunk.cases = c.at("cases").get<std::vector<std::string>>();
+        chunk.started_at = c.at("started_at").get<std::string>();
+        chunk.seconds = c.at("seconds").get<double>();
+        chunk.orders = c.at("orders").get<std::vector<std::vector<size_t>>>();
+        chunk.baseline_gpu_ms = c.at("baseline_gpu_ms").get<std::vector<double>>();
+        g.chunks.push_back(std::move(chunk));
+    }
+    return g;
+}
+
 CaseResult read_case(const json& j) {
     CaseResult c;
     c.id = j.at("id").get<std::string>();
@@ -81,9 +107,15 @@ CaseResult read_case(const json& j) {
     for (const auto& [name, value] : j.at("params").items()) c.params.emplace_back(name, read_param(value));
     c.ok = j.at("ok").get<bool>();
     c.error = j.at("error").get<std::string>();
+    c.group = j.at("group").get<size_t>();
+    c.chunk = j.at("chunk").get<size_t>();
+    c.group_baseline = j.at("group_baseline").get<bool>();
+    c.ratio = read_ratio(j.at("ratio"));
     const json& timing = j.at("timing");
     c.gpu_frame = read_series(timing.at("gpu_frame"));
     c.wall = read_series(timing.at("wall"));
+    c.cpu = read_series(timing.at("cpu"));
+    c.sample_start_s = timing.at("sample_start_s").get<std::vector<double>>();
     for (const json& pass : timing.at("passes")) c.passes.push_back(read_series(pass));
     const json& memory = j.at("memory_bytes");
     c.memory = {memory.at("technique").get<uint64_t>(), memory.at("targets").get<uint64_t>(),
@@ -149,11 +181,14 @@ RunRecord read_json_report(const std::filesystem::path& file) {
         run.finished_at = j.at("finished_at").get<std::string>();
         run.resumed_at = j.at("resumed_at").get<std::vector<std::string>>();
         run.warmup_frames = j.at("warmup_frames").get<int>();
-        run.measured_frames = j.at("measured_frames").get<int>();
+        run.rounds = j.at("rounds").get<int>();
+        run.frames_per_sample = j.at("frames_per_sample").get<int>();
         run.quick = j.at("quick").get<bool>();
         run.planned_cases = j.at("planned_cases").get<size_t>();
         run.reference_enabled = j.at("reference_enabled").get<bool>();
+        run.environment = j.at("environment").get<Environment>();
         for (const json& r : j.at("references")) run.references.push_back(read_reference(r));
+        for (const json& g : j.at("groups")) run.groups.push_back(read_group(g));
         for (const json& c : j.at("cases")) run.cases.push_back(read_case(c));
         return run;
     } catch (const json::exception& e) {

@@ -77,6 +77,31 @@ nlohmann::json reference_json(const ReferenceRecord& r) {
               {"pixel_visibility_exr", r.pixel_visibility_exr}}}};
 }
 
+nlohmann::json ratio_json(const RatioRecord& r) {
+    if (!r.measured()) return nullptr;
+    return {{"median", metric(r.estimate.value)},
+            {"ci95_low", metric(r.estimate.ci.low)},
+            {"ci95_high", metric(r.estimate.ci.high)},
+            {"per_round", r.per_round}};
+}
+
+nlohmann::json group_json(const GroupRecord& g) {
+    nlohmann::json chunks = nlohmann::json::array();
+    for (const MeasurementChunk& c : g.chunks)
+        chunks.push_back({{"cases", c.cases},
+                          {"started_at", c.started_at},
+                          {"seconds", c.seconds},
+                          {"orders", c.orders},
+                          {"baseline_gpu_ms", c.baseline_gpu_ms}});
+    return {{"name", g.name},
+            {"scene", g.scene},
+            {"width", g.resolution.width},
+            {"height", g.resolution.height},
+            {"baseline", g.cases.empty() ? std::string() : g.baseline()},
+            {"cases", g.cases},
+            {"chunks", chunks}};
+}
+
 nlohmann::json case_json(const CaseResult& c) {
     nlohmann::json params = nlohmann::json::object();
     for (const auto& [name, value] : c.params) params[name] = param_json(value);
@@ -90,7 +115,16 @@ nlohmann::json case_json(const CaseResult& c) {
             {"params", params},
             {"ok", c.ok},
             {"error", c.error},
-            {"timing", {{"gpu_frame", series_json(c.gpu_frame)}, {"wall", series_json(c.wall)}, {"passes", passes}}},
+            {"group", c.group},
+            {"chunk", c.chunk},
+            {"group_baseline", c.group_baseline},
+            {"ratio", ratio_json(c.ratio)},
+            {"timing",
+             {{"gpu_frame", series_json(c.gpu_frame)},
+              {"wall", series_json(c.wall)},
+              {"cpu", series_json(c.cpu)},
+              {"passes", passes},
+              {"sample_start_s", c.sample_start_s}}},
             {"memory_bytes",
              {{"technique", c.memory.technique_bytes}, {"targets", c.memory.target_bytes}, {"scene", c.memory.scene_bytes}}},
             {"triangles", c.triangles},
@@ -106,6 +140,8 @@ nlohmann::json case_json(const CaseResult& c) {
 std::string json_report(const RunRecord& run) {
     nlohmann::json cases = nlohmann::json::array();
     for (const auto& c : run.cases) cases.push_back(case_json(c));
+    nlohmann::json groups = nlohmann::json::array();
+    for (const auto& g : run.groups) groups.push_back(group_json(g));
     nlohmann::json references = nlohmann::json::array();
     for (const auto& r : run.references) references.push_back(reference_json(r));
     nlohmann::json identity = nlohmann::json::object();
@@ -121,12 +157,15 @@ std::string json_report(const RunRecord& run) {
                         {"finished_at", run.finished_at},
                         {"resumed_at", run.resumed_at},
                         {"warmup_frames", run.warmup_frames},
-                        {"measured_frames", run.measured_frames},
+                        {"rounds", run.rounds},
+                        {"frames_per_sample", run.frames_per_sample},
+                        {"measured_frames", run.measured_frames()},
                         {"quick", run.quick},
                         {"planned_cases", run.planned_cases},
                         {"environment", run.environment},
                         {"reference_enabled", run.reference_enabled},
                         {"references", references},
+                        {"groups", groups},
                         {"cases", cases}};
     return j.dump(2) + "\n";
 }

@@ -10,7 +10,9 @@ namespace canopy {
 
 // 2: the run's identity (what a resumed run must match), resumed_at and the run's error.
 // 3: technique-isolated visibility errors and the columns a technique declares meaningful; shadow
-//    regions from the pixel-centre visibility; the references' pixel visibility.
+//    regions from the pixel-centre visibility; the references' pixel visibility; groups measured
+//    round by round: per case its group, chunk, per-round ratio to the group's baseline with its
+//    interval, CPU time and sample start times; samples are per round.
 inline constexpr int kResultsVersion = 3;
 
 std::string json_report(const RunRecord& run);

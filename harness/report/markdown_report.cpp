@@ -32,14 +32,7 @@ std::string markdown_table(const RunRecord& run) {
     right.push_back(false);
 
     std::vector<std::vector<std::string>> rows;
-    std::string group;
-    double baseline = 0.0;
     for (const auto& c : run.cases) {
-        const std::string this_group = fmt::format("{}@{}x{}", c.scene, c.resolution.width, c.resolution.height);
-        if (this_group != group) {
-            group = this_group;
-            baseline = c.ok ? c.gpu_frame.stats.median : 0.0;
-        }
         std::string passes;
         for (const auto& p : c.passes) passes += fmt::format("{}{} {:.3f}", passes.empty() ? "" : ", ", p.name, p.stats.median);
         const bool timed = c.gpu_frame.stats.count > 0;
@@ -48,7 +41,7 @@ std::string markdown_table(const RunRecord& run) {
             timed ? fmt::format("{:.3f}", c.gpu_frame.stats.median) : "-",
             timed ? fmt::format("{:.3f}", c.gpu_frame.stats.mad) : "-",
             timed ? fmt::format("{:.1f}", 100.0 * c.gpu_frame.stats.cv) : "-",
-            timed && baseline > 0 ? fmt::format("{:.2f}", c.gpu_frame.stats.median / baseline) : "-",
+            c.ok ? ratio_cell(c.ratio.estimate) : "-",
             timed ? fmt::format("{:.3f}", c.wall.stats.median) : "-", passes.empty() ? "-" : passes,
             mib(c.memory.technique_bytes)};
         if (errors) {
@@ -74,13 +67,18 @@ std::string markdown_report(const RunRecord& run) {
     if (!run.description.empty()) out += run.description + "\n\n";
     out += fmt::format("- device: {} ({}, {}), Vulkan {}\n", e.device.name, e.device.type, e.device.driver_info,
                        e.device.api_version);
-    out += fmt::format("- CPU: {}, nproc {}, LP_NUM_THREADS {}\n", e.cpu_model, e.nproc, e.lp_num_threads);
+    out += fmt::format("- CPU: {}, nproc {} (this process may use CPUs {}), LP_NUM_THREADS {}; load average at the "
+                       "start {:.2f} {:.2f} {:.2f}\n",
+                       e.cpu_model, e.nproc, e.cpus_allowed, e.lp_num_threads, e.load_average[0], e.load_average[1],
+                       e.load_average[2]);
     out += fmt::format("- canopy {} ({} build), commit {}{}, config hash {}\n", e.canopy_version, e.build_type,
                        e.git_commit, e.git_dirty ? " (with uncommitted changes)" : "", e.config_hash);
     std::string resumed;
     for (const std::string& at : run.resumed_at) resumed += (resumed.empty() ? ", resumed " : " and ") + at;
-    out += fmt::format("- {} warm-up and {} measured frames per case{}; started {}{}, finished {}; status: {}\n",
-                       run.warmup_frames, run.measured_frames, run.quick ? " (--quick)" : "", run.started_at, resumed,
+    out += fmt::format("- per case {} warm-up frames, then {} rounds of {} frame{} (each group's cases interleaved "
+                       "round by round){}; started {}{}, finished {}; status: {}\n",
+                       run.warmup_frames, run.rounds, run.frames_per_sample, run.frames_per_sample == 1 ? "" : "s",
+                       run.quick ? " (--quick)" : "", run.started_at, resumed,
                        run.finished_at.empty() ? "-" : run.finished_at, run.status);
     if (!run.error.empty()) out += fmt::format("- the run stopped: {}\n", run.error);
     out += "\n";
@@ -92,8 +90,10 @@ std::string markdown_report(const RunRecord& run) {
                                r.resolution.width, r.resolution.height, r.light_samples, r.pixel_samples, r.shadow_rays,
                                r.seconds, r.from_cache ? " (cached)" : "", r.image_png);
     }
-    out += "\nGPU ms: median over measured frames of the time from the first pass's start to the last pass's end "
-           "(Vulkan timestamps). ratio: GPU median relative to the first row of the same scene and resolution. "
+    out += "\nGPU ms: median over the rounds of a sample's mean frame time, from the first pass's start to the last "
+           "pass's end (Vulkan timestamps); CV over the rounds. ratio: GPU time relative to the first row of the same "
+           "scene and resolution (the group's baseline), each sample divided by the baseline's samples measured just "
+           "before and after it, median over the rounds with its 95 % block-bootstrap interval. "
            "memory: device memory the technique's own resources take (shadow maps, ...). "
            "Errors are against the ray-traced reference. How far the image is from the truth: RMSE, PSNR (peak 1), "
            "SSIM and FLIP over the whole image, in linear radiance (they include aliasing at silhouettes and "

@@ -1,6 +1,8 @@
 #include "report/paper_report.hpp"
 
 #include "report/atomic_file.hpp"
+#include "report/text_table.hpp"
+#include "run/case_ratio.hpp"
 
 #include <fmt/format.h>
 
@@ -101,36 +103,57 @@ std::vector<ClaimVerdict> judge_claims(const PaperComparison& paper, const RunRe
         std::string numbers;
         int measured = 0, holding = 0, failing = 0;
         size_t fewest_samples = std::numeric_limits<size_t>::max();
+        const bool timing = claim.metric == "time";
         for (size_t col = 0; col < paper.columns.size(); ++col) {
             if (!claim.column.empty() && paper.columns[col] != claim.column) continue;
             const CaseResult* l = find_case(paper, run, *left, col);
             const CaseResult* r = find_case(paper, run, *right, col);
             if (!l || !r) continue;
-            const double a = metric_of(*l, claim.metric), b = metric_of(*r, claim.metric);
-            if (std::isnan(a) || std::isnan(b)) continue;
-            ++measured;
-            if (claim.metric == "time")
-                fewest_samples = std::min({fewest_samples, l->gpu_frame.stats.count, r->gpu_frame.stats.count});
-            // Renders are deterministic; timings are not: their noise band is 2 x (MAD + MAD).
-            const double noise = claim.metric == "time" ? 2.0 * (l->gpu_frame.stats.mad + r->gpu_frame.stats.mad) : 0.0;
             bool holds = false, fails = false;
-            if (claim.relation == "less") {
-                holds = b - a > noise;
-                fails = a - b > noise || (noise == 0.0 && a >= b);
-            } else if (claim.relation == "greater") {
-                holds = a - b > noise;
-                fails = b - a > noise || (noise == 0.0 && a <= b);
+            if (timing) {
+                // left / right with its 95 % interval: a claim is decided only when the interval
+                // lies wholly on one side.
+                const CaseRatio ratio = time_ratio(*l, *r);
+                const Estimate& e = ratio.estimate;
+                if (std::isnan(e.value)) continue;
+                ++measured;
+                fewest_samples = std::min({fewest_samples, l->gpu_frame.stats.count, r->gpu_frame.stats.count});
+                if (claim.relation == "less") {
+                    holds = e.ci.high < 1.0;
+                    fails = e.ci.low > 1.0;
+                } else if (claim.relation == "greater") {
+                    holds = e.ci.low > 1.0;
+                    fails = e.ci.high < 1.0;
+                } else {
+                    holds = e.ci.low >= 1.0 - claim.tolerance && e.ci.high <= 1.0 + claim.tolerance;
+                    fails = e.ci.low > 1.0 + claim.tolerance || e.ci.high < 1.0 - claim.tolerance;
+                }
+                numbers += fmt::format("{}{}: {} vs {} ms, ratio {}{}", numbers.empty() ? "" : "; ", paper.columns[col],
+                                       number(l->gpu_frame.stats.median, "{:.4g}"),
+                                       number(r->gpu_frame.stats.median, "{:.4g}"), ratio_cell(e),
+                                       ratio.pairing == RatioPairing::unpaired ? " (not paired: other groups)" : "");
             } else {
-                const double allowed = claim.tolerance * std::abs(b);
-                holds = std::abs(a - b) <= allowed;
-                fails = std::abs(a - b) > allowed + noise;
+                const double a = metric_of(*l, claim.metric), b = metric_of(*r, claim.metric);
+                if (std::isnan(a) || std::isnan(b)) continue;
+                ++measured;
+                // Renders are deterministic: no noise band.
+                if (claim.relation == "less") {
+                    holds = a < b;
+                    fails = a >= b;
+                } else if (claim.relation == "greater") {
+                    holds = a > b;
+                    fails = a <= b;
+                } else {
+                    const double allowed = claim.tolerance * std::abs(b);
+                    holds = std::abs(a - b) <= allowed;
+                    fails = !holds;
+                }
+                numbers += fmt::format("{}{}: {} vs {}{}", numbers.empty() ? "" : "; ", paper.columns[col],
+                                       number(a, "{:.4g}"), number(b, "{:.4g}"),
+                                       claim.relation == "about" && b != 0.0 ? fmt::format(" (ratio {:.2f})", a / b) : "");
             }
             holding += holds ? 1 : 0;
             failing += fails ? 1 : 0;
-            numbers += fmt::format("{}{}: {} vs {}{}{}", numbers.empty() ? "" : "; ", paper.columns[col], number(a, "{:.4g}"),
-                                   number(b, "{:.4g}"),
-                                   claim.relation == "about" && b != 0.0 ? fmt::format(" (ratio {:.2f})", a / b) : "",
-                                   noise > 0.0 ? fmt::format(", noise ±{:.3g}", noise) : "");
         }
         const bool too_few = measured > 0 && fewest_samples < kMinTimingSamples;
         if (measured == 0) v.outcome = "not measured";
@@ -155,10 +178,11 @@ std::string paper_report(const PaperComparison& paper, const RunRecord& run) {
     if (!paper.source.empty()) out += fmt::format("Source: {}.\n\n", paper.source);
     const Environment& e = run.environment;
     out += fmt::format("canopy {} on {} ({}), nproc {}, LP_NUM_THREADS {}, commit {}{}; experiment `{}` (config hash {}); "
-                       "{} warm-up + {} measured frames per case{}.\n\n",
+                       "{} warm-up frames + {} rounds of {} frame{} per case{}.\n\n",
                        e.canopy_version, e.device.name, e.device.driver_info, e.nproc, e.lp_num_threads, e.git_commit,
                        e.git_dirty ? " (with uncommitted changes)" : "", run.config_file, e.config_hash,
-                       run.warmup_frames, run.measured_frames, run.quick ? " (--quick)" : "");
+                       run.warmup_frames, run.rounds, run.frames_per_sample, run.frames_per_sample == 1 ? "" : "s",
+                       run.quick ? " (--quick)" : "");
 
     const PaperRow* base = paper.baseline.empty() ? nullptr : row_named(paper, paper.baseline);
     std::vector<std::string> header{"row"};
@@ -173,14 +197,22 @@ std::string paper_report(const PaperComparison& paper, const RunRecord& run) {
                 const double paper_ratio = paper_time(paper, row, col) / paper_time(paper, *base, col);
                 const CaseResult* mine = find_case(paper, run, row, col);
                 const CaseResult* mine_base = find_case(paper, run, *base, col);
-                const double canopy_ratio = mine && mine_base ? mine->gpu_frame.stats.median / mine_base->gpu_frame.stats.median : kNaN;
-                cells.push_back(fmt::format("{} → **{}**", number(paper_ratio, "{:.2f}"), number(canopy_ratio, "{:.2f}")));
+                std::string canopy_ratio = "-";
+                if (mine && mine_base) {
+                    const Estimate e = time_ratio(*mine, *mine_base).estimate;
+                    if (!std::isnan(e.value))
+                        canopy_ratio = fmt::format("**{:.2f}** [{:.2f}, {:.2f}]", e.value, e.ci.low, e.ci.high);
+                }
+                cells.push_back(fmt::format("{} → {}", number(paper_ratio, "{:.2f}"), canopy_ratio));
             }
             rows.push_back(cells);
         }
         out += fmt::format("## Frame time relative to {} (paper → **canopy**)\n\n", paper.baseline);
         out += table(header, rows);
-        out += fmt::format("\nPaper: time = {}; canopy: median GPU time of all passes (Vulkan timestamps). Ratios "
+        out += fmt::format("\nPaper: time = {}; canopy: GPU time of all passes (Vulkan timestamps) relative to the "
+                           "baseline row, paired sample by sample (cases of one scene and resolution are measured "
+                           "together, round by round, each sample between two of the group's baseline), median over "
+                           "the rounds, [95 % block-bootstrap interval]. Ratios "
                            "compare, absolute times do not: the paper ran on a 2008-2010 GPU, canopy on {}.\n\n",
                            paper.unit == "fps" ? "1000 / fps" : "ms", e.device.name);
     }
@@ -253,10 +285,11 @@ std::string paper_report(const PaperComparison& paper, const RunRecord& run) {
     if (!verdicts.empty()) {
         out += "## Claims\n\n";
         for (const ClaimVerdict& v : verdicts) out += fmt::format("- **{}** — {} ({})\n", v.outcome, v.text, v.because);
-        out += fmt::format("\nA timing claim holds or fails only by more than its noise band, 2 × (MAD + MAD) of the two "
-                           "medians; inside it the verdict is \"within noise\". Timings of fewer than {} measured "
-                           "frames (--quick measures 3) judge no claim: \"too few samples\". Error claims compare "
-                           "deterministic renders.\n\n",
+        out += fmt::format("\nA timing claim compares the two rows' time ratio, paired round by round, and holds or "
+                           "fails only when its 95 % interval lies wholly on one side (for \"about\": wholly inside "
+                           "or outside the tolerance); otherwise the verdict is \"within noise\". Timings of fewer "
+                           "than {} rounds (--quick measures 3) judge no claim: \"too few samples\". Error claims "
+                           "compare deterministic renders.\n\n",
                            kMinTimingSamples);
     }
     if (!paper.notes.empty()) out += paper.notes + "\n";

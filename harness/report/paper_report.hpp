@@ -12,15 +12,15 @@
 
 namespace canopy {
 
-// Fewer measured frames than this decide no timing claim. Below 6 samples even a sample's whole
+// Fewer measured rounds than this decide no timing claim. Below 6 samples even a sample's whole
 // range [min, max] is not a 95 % confidence interval of the median (it covers it with probability
-// 1 - 2 * 0.5^n: 75 % for the 3 frames of --quick, 94 % for 5, 97 % for 6; distribution-free), so
-// no noise band made from them bounds where the medians lie.
+// 1 - 2 * 0.5^n: 75 % for the 3 rounds of --quick, 94 % for 5, 97 % for 6; distribution-free), so
+// no bootstrap interval made from them bounds where the median lies.
 inline constexpr size_t kMinTimingSamples = 6;
 
-// A claim's outcome on canopy's numbers. Timing claims account for noise: a difference smaller
-// than twice the summed MADs of the two medians decides nothing ("within noise"), nor do timings
-// of fewer than kMinTimingSamples frames ("too few samples").
+// A claim's outcome on canopy's numbers. Timing claims account for noise: a time ratio whose 95 %
+// interval (run/case_ratio.hpp) reaches across the claim's boundary decides nothing ("within
+// noise"), nor do timings of fewer than kMinTimingSamples rounds ("too few samples").
 struct ClaimVerdict {
     std::string text;
     std::string outcome = "not measured";  // holds | does not hold | within noise | too few samples | not measured

@@ -57,5 +57,9 @@ std::string metric_cell(double value) {
 }
 
 std::string metric_cell(double value, bool meaningful) { return meaningful ? metric_cell(value) : "n/a"; }
+std::string ratio_cell(const Estimate& ratio) {
+    if (ratio.count == 0 || std::isnan(ratio.value)) return "-";
+    return fmt::format("{:.2f} [{:.2f}, {:.2f}]", ratio.value, ratio.ci.low, ratio.ci.high);
+}
 
 }  // namespace canopy

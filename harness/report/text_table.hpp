@@ -1,6 +1,8 @@
 // Aligned Markdown tables, and the number formats every table of a run shares.
 #pragma once
 
+#include "run/block_bootstrap.hpp"
+
 #include <string>
 #include <vector>
 
@@ -14,5 +16,8 @@ std::string render_table(const std::vector<std::string>& header, const std::vect
 std::string metric_cell(double value);
 // The same, or "n/a" where the technique does not declare the metric meaningful (ErrorColumns).
 std::string metric_cell(double value, bool meaningful);
+
+// A time ratio and its 95 % interval, "1.93 [1.88, 1.99]"; "-" when not measured.
+std::string ratio_cell(const Estimate& ratio);
 
 }  // namespace canopy

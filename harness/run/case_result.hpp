@@ -3,6 +3,7 @@
 
 #include "config/experiment.hpp"
 #include "metrics/image_metrics.hpp"
+#include "run/block_bootstrap.hpp"
 #include "render/frame_renderer.hpp"
 #include "run/environment.hpp"
 #include "run/run_identity.hpp"
@@ -15,9 +16,18 @@
 namespace canopy {
 
 struct TimingSeries {
-    std::string name;               // pass name, "gpu_frame" or "wall"
-    std::vector<double> samples_ms; // one per measured frame
+    std::string name;               // pass name, "gpu_frame", "wall" or "cpu"
+    std::vector<double> samples_ms; // one per measured round: the mean over the sample's frames
     SampleStats stats;
+};
+
+// A case's GPU time relative to its group's baseline (the group's first case), round by round:
+// both were measured in the same round, so a load change that lasts longer than a round divides
+// out (run/group_measurement.hpp).
+struct RatioRecord {
+    std::vector<double> per_round;  // GPU time / the baseline's GPU time of the same round
+    Estimate estimate;              // median over the rounds, 95 % circular-block-bootstrap interval
+    bool measured() const { return !per_round.empty(); }
 };
 
 struct CaseResult {
@@ -31,6 +41,12 @@ struct CaseResult {
     std::vector<TimingSeries> passes;  // GPU time per pass
     TimingSeries gpu_frame;            // GPU time, first pass start to last pass end
     TimingSeries wall;                 // CPU wall time per frame, submit to completion
+    TimingSeries cpu;                  // the process's CPU time per frame (every thread, lavapipe's too)
+    std::vector<double> sample_start_s;  // when each sample began, seconds after its chunk's measurement began
+    size_t group = 0;                  // index into RunRecord::groups
+    size_t chunk = 0;                  // the group's chunk whose rounds measured it (the baseline's: the first)
+    bool group_baseline = false;       // the group's first case, which the others' ratios divide by
+    RatioRecord ratio;                 // empty when the group's baseline failed
     MemoryUse memory;
     size_t triangles = 0;
     std::string shadow_sampler;
@@ -65,13 +81,35 @@ struct ReferenceRecord {
     std::string pixel_visibility_exr;
 };
 
+// One chunk of a group: cases measured together, round after round. A group larger than a
+// chunk's limits is measured in several chunks, each with the group's baseline in it.
+struct MeasurementChunk {
+    std::vector<std::string> cases;            // case ids, the baseline first
+    std::string started_at;                    // ISO 8601, UTC
+    double seconds = 0;                        // warm-up and rounds
+    std::vector<std::vector<size_t>> orders;   // per round: positions in `cases`, in the order they ran
+    std::vector<double> baseline_gpu_ms;       // per round: the baseline's sample, which the others are divided by
+};
+
+// The cases that share a baseline: one scene at one resolution, in the experiment's order.
+struct GroupRecord {
+    std::string name;                  // "spheres 640x360"
+    std::string scene;
+    Resolution resolution;
+    std::vector<std::string> cases;    // ids, the baseline first
+    std::vector<MeasurementChunk> chunks;
+    const std::string& baseline() const { return cases.front(); }
+};
+
 struct RunRecord {
     std::string experiment;
     std::string description;
     std::string config_file;
     Environment environment;
-    int warmup_frames = 0;
-    int measured_frames = 0;
+    int warmup_frames = 0;         // per case, before the first round of its chunk
+    int rounds = 0;                // measured samples per case
+    int frames_per_sample = 0;     // frames each sample averages
+    int measured_frames() const { return rounds * frames_per_sample; }
     bool quick = false;
     RunIdentity identity;                 // what a run continuing this one must match
     std::string started_at, finished_at;  // ISO 8601, UTC
@@ -81,6 +119,7 @@ struct RunRecord {
     size_t planned_cases = 0;
     bool reference_enabled = false;
     std::vector<ReferenceRecord> references;
+    std::vector<GroupRecord> groups;  // those with recorded cases, in the experiment's order
     std::vector<CaseResult> cases;
 };
 

@@ -1,11 +1,15 @@
 #include "run/environment.hpp"
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
+
+#include <sched.h>
 
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <regex>
+#include <sstream>
 #include <thread>
 #include <unistd.h>
 
@@ -32,6 +36,69 @@ std::string cpu_model() {
     return "unknown";
 }
 
+double cpu_mhz() {
+    std::ifstream cpuinfo("/proc/cpuinfo");
+    std::string line;
+    while (std::getline(cpuinfo, line))
+        if (line.rfind("cpu MHz", 0) == 0) return std::atof(line.substr(line.find(':') + 1).c_str());
+    return 0.0;
+}
+
+std::string first_line(const std::filesystem::path& file) {
+    std::ifstream in(file);
+    std::string line;
+    std::getline(in, line);
+    return line;
+}
+
+// "0-3,8" -> 5
+int cpu_list_size(const std::string& list) {
+    int count = 0;
+    std::stringstream ranges(list);
+    std::string range;
+    while (std::getline(ranges, range, ',')) {
+        const size_t dash = range.find('-');
+        if (range.empty()) continue;
+        count += dash == std::string::npos ? 1 : std::atoi(range.c_str() + dash + 1) - std::atoi(range.c_str()) + 1;
+    }
+    return count;
+}
+
+std::vector<CpuCache> cpu_caches() {
+    std::vector<CpuCache> caches;
+    const std::filesystem::path dir = "/sys/devices/system/cpu/cpu0/cache";
+    for (int index = 0; index < 16; ++index) {
+        const std::filesystem::path entry = dir / ("index" + std::to_string(index));
+        if (!std::filesystem::exists(entry / "level")) break;
+        CpuCache c;
+        c.type = first_line(entry / "type");
+        c.level = std::atoi(first_line(entry / "level").c_str());
+        const std::string size = first_line(entry / "size");  // "48K"
+        long long bytes = std::atoll(size.c_str());
+        if (size.find('K') != std::string::npos) bytes <<= 10;
+        if (size.find('M') != std::string::npos) bytes <<= 20;
+        c.size_bytes = bytes;
+        c.num_sharing = cpu_list_size(first_line(entry / "shared_cpu_list"));
+        caches.push_back(c);
+    }
+    return caches;
+}
+
+std::string cpus_allowed() {
+    cpu_set_t set;
+    CPU_ZERO(&set);
+    if (sched_getaffinity(0, sizeof set, &set) != 0) return "unknown";
+    std::string list;
+    for (int cpu = 0; cpu < CPU_SETSIZE; ++cpu) {
+        if (!CPU_ISSET(cpu, &set)) continue;
+        int last = cpu;
+        while (last + 1 < CPU_SETSIZE && CPU_ISSET(last + 1, &set)) ++last;
+        list += (list.empty() ? "" : ",") + (last == cpu ? std::to_string(cpu) : fmt::format("{}-{}", cpu, last));
+        cpu = last;
+    }
+    return list;
+}
+
 std::string git_command() { return std::string("git -C '") + CANOPY_SOURCE_DIR + "' "; }
 
 }  // namespace
@@ -54,6 +121,12 @@ Environment collect_environment(const GpuContext& gpu, const std::string& config
     const char* threads = std::getenv("LP_NUM_THREADS");
     e.lp_num_threads = threads ? threads : "unset";
     e.cpu_model = cpu_model();
+    e.cpu_mhz = cpu_mhz();
+    const std::string governor = first_line("/sys/devices/system/cpu/cpu0/cpufreq/scaling_governor");
+    e.cpu_scaling = !governor.empty() && governor != "performance";
+    e.caches = cpu_caches();
+    e.cpus_allowed = cpus_allowed();
+    e.load_average = current_load_average();
     e.build_type = CANOPY_BUILD_TYPE;
     e.canopy_version = CANOPY_VERSION;
     e.git_commit = source_commit();
@@ -66,7 +139,17 @@ Environment collect_environment(const GpuContext& gpu, const std::string& config
     return e;
 }
 
+std::array<double, 3> current_load_average() {
+    std::array<double, 3> load{};
+    std::ifstream in("/proc/loadavg");
+    in >> load[0] >> load[1] >> load[2];
+    return load;
+}
+
 void to_json(nlohmann::json& j, const Environment& e) {
+    nlohmann::json caches = nlohmann::json::array();
+    for (const CpuCache& c : e.caches)
+        caches.push_back({{"type", c.type}, {"level", c.level}, {"size", c.size_bytes}, {"num_sharing", c.num_sharing}});
     j = {{"device", e.device.name},
          {"device_type", e.device.type},
          {"driver", e.device.driver_name},
@@ -76,12 +159,46 @@ void to_json(nlohmann::json& j, const Environment& e) {
          {"nproc", e.nproc},
          {"lp_num_threads", e.lp_num_threads},
          {"cpu_model", e.cpu_model},
+         {"cpu_mhz", e.cpu_mhz},
+         {"cpu_scaling", e.cpu_scaling},
+         {"cpu_caches", caches},
+         {"cpus_allowed", e.cpus_allowed},
+         {"load_average", e.load_average},
          {"build_type", e.build_type},
          {"canopy_version", e.canopy_version},
          {"commit", e.git_commit},
          {"commit_dirty", e.git_dirty},
          {"hostname", e.hostname},
          {"config_hash", e.config_hash}};
+}
+
+void from_json(const nlohmann::json& j, Environment& e) {
+    auto read = [&](const char* key, auto& field) {
+        if (j.contains(key) && !j.at(key).is_null()) j.at(key).get_to(field);
+    };
+    read("device", e.device.name);
+    read("device_type", e.device.type);
+    read("driver", e.device.driver_name);
+    read("driver_info", e.device.driver_info);
+    read("mesa_version", e.mesa_version);
+    read("vulkan_api", e.device.api_version);
+    read("nproc", e.nproc);
+    read("lp_num_threads", e.lp_num_threads);
+    read("cpu_model", e.cpu_model);
+    read("cpu_mhz", e.cpu_mhz);
+    read("cpu_scaling", e.cpu_scaling);
+    read("cpus_allowed", e.cpus_allowed);
+    read("load_average", e.load_average);
+    read("build_type", e.build_type);
+    read("canopy_version", e.canopy_version);
+    read("commit", e.git_commit);
+    read("commit_dirty", e.git_dirty);
+    read("hostname", e.hostname);
+    read("config_hash", e.config_hash);
+    if (j.contains("cpu_caches"))
+        for (const auto& c : j.at("cpu_caches"))
+            e.caches.push_back({c.at("type").get<std::string>(), c.at("level").get<int>(), c.at("size").get<long long>(),
+                                c.at("num_sharing").get<int>()});
 }
 
 }  // namespace canopy

@@ -6,9 +6,19 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include <filesystem>
+#include <array>
 #include <string>
+#include <vector>
 
 namespace canopy {
+
+// One CPU cache level as the kernel describes it (/sys/devices/system/cpu/cpu0/cache).
+struct CpuCache {
+    std::string type;  // "Data", "Instruction", "Unified"
+    int level = 0;
+    long long size_bytes = 0;
+    int num_sharing = 0;  // CPUs sharing it
+};
 
 struct Environment {
     DeviceInfo device;
@@ -16,6 +26,11 @@ struct Environment {
     unsigned nproc = 0;            // hardware threads available to this process
     std::string lp_num_threads;    // LP_NUM_THREADS as set, or "unset" (lavapipe then uses nproc)
     std::string cpu_model;
+    double cpu_mhz = 0;            // /proc/cpuinfo's "cpu MHz" of the first CPU, 0 if unknown
+    bool cpu_scaling = false;      // a cpufreq governor other than "performance" is active
+    std::vector<CpuCache> caches;
+    std::string cpus_allowed;      // the CPUs this process may run on ("0-1"), e.g. after taskset
+    std::array<double, 3> load_average{};  // 1, 5 and 15 minutes, when the environment was collected
     std::string build_type;        // CMAKE_BUILD_TYPE of this binary
     std::string canopy_version;
     std::string git_commit;        // "unknown" outside a git checkout
@@ -29,6 +44,9 @@ Environment collect_environment(const GpuContext& gpu, const std::string& config
 std::filesystem::path source_checkout();
 std::string source_commit();
 std::string canopy_build_type();  // CMAKE_BUILD_TYPE of this binary
+std::array<double, 3> current_load_average();  // /proc/loadavg: 1, 5 and 15 minutes; zeros if unknown
 void to_json(nlohmann::json& j, const Environment& e);
+// Reads back what to_json wrote; fields a record lacks keep their defaults.
+void from_json(const nlohmann::json& j, Environment& e);
 
 }  // namespace canopy

@@ -5,6 +5,7 @@
 #include "metrics/comparable_pair.hpp"
 #include "metrics/error_maps.hpp"
 #include "report/csv_report.hpp"
+#include "report/gbench_report.hpp"
 #include "report/image_files.hpp"
 #include "report/json_report.hpp"
 #include "report/markdown_report.hpp"
@@ -26,7 +27,6 @@
 #include <cmath>
 #include <map>
 #include <optional>
-#include <set>
 
 namespace canopy {
 
@@ -38,23 +38,6 @@ const TechniqueEntry* entry_for(const Experiment& experiment, const std::string&
     for (const auto& entry : experiment.techniques)
         if (entry.name == technique) return &entry;
     return nullptr;
-}
-
-TimingSeries series(std::string name, std::vector<double> samples) {
-    TimingSeries t{std::move(name), std::move(samples), {}};
-    t.stats = summarize(t.samples_ms);
-    return t;
-}
-
-CaseResult case_header(const Case& c, const Scene& scene) {
-    CaseResult result;
-    result.id = c.id;
-    result.scene = scene.name;
-    result.technique = c.technique;
-    result.resolution = c.resolution;
-    result.params = c.params.values();
-    result.params_summary = c.params.summary();
-    return result;
 }
 
 // Heat maps of every case of one reference share one scale: half the reference's 99th
@@ -79,6 +62,7 @@ void write_reports(const std::filesystem::path& dir, const RunRecord& run, const
     write_json_report(dir / "results.json", run);
     write_csv_report(dir / "results.csv", run);
     write_markdown_report(dir / "results.md", run);
+    write_gbench_report(dir / "results.gbench.json", run);
     if (experiment.paper) write_paper_report(dir / "paper.md", *experiment.paper, run);
 }
 
@@ -121,40 +105,6 @@ PreparedExperiment prepare_experiment(const Experiment& experiment, const Techni
     throw ConfigError(experiment.file, entry ? entry->where.line : 0, message, hint);
 }
 
-CaseResult measure_case(const Case& c, const Scene& scene, const std::vector<TriangleMesh>& meshes,
-                        const Technique& technique, const GpuContext& gpu, int warmup_frames, int measured_frames,
-                        Image* image_out, Image* visibility_out) {
-    CaseResult result = case_header(c, scene);
-    FrameRenderer renderer(gpu, scene, meshes, uint32_t(c.resolution.width), uint32_t(c.resolution.height),
-                           technique.plan(c.params));
-    for (int i = 0; i < warmup_frames && !interrupt_requested(); ++i) renderer.render();
-    std::vector<std::vector<double>> pass_samples(renderer.pass_names().size());
-    std::vector<double> gpu_samples, wall_samples;
-    for (int i = 0; i < measured_frames && !interrupt_requested(); ++i) {
-        FrameTiming t = renderer.render();
-        for (size_t p = 0; p < t.pass_gpu_ms.size(); ++p) pass_samples[p].push_back(t.pass_gpu_ms[p]);
-        gpu_samples.push_back(t.gpu_ms);
-        wall_samples.push_back(t.wall_ms);
-    }
-    for (size_t p = 0; p < pass_samples.size(); ++p)
-        result.passes.push_back(series(renderer.pass_names()[p], std::move(pass_samples[p])));
-    result.gpu_frame = series("gpu_frame", std::move(gpu_samples));
-    result.wall = series("wall", std::move(wall_samples));
-    result.memory = renderer.memory();
-    result.triangles = renderer.triangle_count();
-    result.shadow_sampler = renderer.shadow_sampler();
-
-    Image image = renderer.read_color();
-    result.nonfinite_pixels = count_nonfinite_pixels(image);
-    if (result.nonfinite_pixels > 0) {
-        result.ok = false;
-        result.error = fmt::format("{} pixels are NaN or Inf", result.nonfinite_pixels);
-    }
-    if (image_out) *image_out = std::move(image);
-    if (visibility_out) *visibility_out = renderer.read_pixel_visibility();
-    return result;
-}
-
 namespace {
 
 // Which of the previous run's cases (and references) this run keeps: finished, recorded, and with
@@ -192,10 +142,42 @@ KeptResults kept_results(const RunRecord* previous, const std::filesystem::path&
 
 }  // namespace
 
+MeasurementSettings measurement_settings(const Experiment& experiment, const RunOptions& options) {
+    MeasurementSettings m;
+    m.warmup_frames = options.quick ? std::min(experiment.warmup_frames, 1) : experiment.warmup_frames;
+    m.rounds = options.quick ? std::min(experiment.rounds, 3) : experiment.rounds;
+    m.frames_per_sample = options.quick ? 1 : experiment.frames_per_sample;
+    m.pairing = experiment.pairing;
+    return m;
+}
+
+std::vector<PlannedGroup> plan_groups(const std::vector<Case>& cases, const std::vector<Scene>& scenes) {
+    std::vector<PlannedGroup> groups;
+    for (size_t i = 0; i < cases.size(); ++i) {
+        const Case& c = cases[i];
+        auto same = [&](const PlannedGroup& g) {
+            return g.scene_index == c.scene_index && g.resolution.width == c.resolution.width &&
+                   g.resolution.height == c.resolution.height;
+        };
+        auto it = std::find_if(groups.begin(), groups.end(), same);
+        if (it == groups.end()) {
+            PlannedGroup g;
+            g.name = fmt::format("{} {}x{}", scenes[c.scene_index].name, c.resolution.width, c.resolution.height);
+            g.scene_index = c.scene_index;
+            g.resolution = c.resolution;
+            groups.push_back(std::move(g));
+            it = groups.end() - 1;
+        }
+        it->cases.push_back(i);
+    }
+    return groups;
+}
+
 RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegistry& registry, const GpuContext& gpu,
                          const RunOptions& options) {
     const Experiment& experiment = *prepared.experiment;
     const std::filesystem::path& out = options.out_dir;
+    const MeasurementSettings settings = measurement_settings(experiment, options);
     RunRecord run;
     run.experiment = experiment.name;
     run.description = experiment.description;
@@ -203,13 +185,24 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
     run.environment = collect_environment(gpu, experiment.config_hash);
     run.identity = make_run_identity(experiment, options, run.environment);
     run.quick = options.quick;
-    run.warmup_frames = options.quick ? std::min(experiment.warmup_frames, 1) : experiment.warmup_frames;
-    run.measured_frames = options.quick ? std::min(experiment.measured_frames, 3) : experiment.measured_frames;
+    run.warmup_frames = settings.warmup_frames;
+    run.rounds = settings.rounds;
+    run.frames_per_sample = settings.frames_per_sample;
     run.started_at = utc_now();
     run.planned_cases = prepared.cases.size();
     run.reference_enabled = options.reference && experiment.reference_enabled;
 
-    // A continued run keeps what the previous one finished; the rest is run in the planned order.
+    const std::vector<PlannedGroup> groups = plan_groups(prepared.cases, experiment.scenes);
+    for (const PlannedGroup& g : groups) {
+        GroupRecord record;
+        record.name = g.name;
+        record.scene = experiment.scenes[g.scene_index].name;
+        record.resolution = g.resolution;
+        for (size_t i : g.cases) record.cases.push_back(prepared.cases[i].id);
+        run.groups.push_back(std::move(record));
+    }
+
+    // A continued run keeps the groups the previous one finished whole; the rest run in the planned order.
     const KeptResults kept = kept_results(options.previous, out);
     if (options.previous) {
         run.started_at = options.previous->started_at;
@@ -219,13 +212,24 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
     }
     const CaseLabels labels(prepared.cases, registry);
     std::vector<std::optional<CaseResult>> slots(prepared.cases.size());  // planned order
-    for (size_t i = 0; i < prepared.cases.size(); ++i) {
-        const Case& c = prepared.cases[i];
-        if (auto it = kept.cases.find(c.id); it != kept.cases.end()) {
-            CaseResult result = it->second;  // measurements as recorded, labels from this run's cases
+    std::vector<bool> group_kept(groups.size(), false);
+    for (size_t g = 0; g < groups.size() && options.previous; ++g) {
+        const auto previous_group = std::find_if(options.previous->groups.begin(), options.previous->groups.end(),
+                                                 [&](const GroupRecord& r) { return r.name == run.groups[g].name; });
+        const bool whole = previous_group != options.previous->groups.end() &&
+                           previous_group->cases == run.groups[g].cases && !previous_group->chunks.empty() &&
+                           std::all_of(groups[g].cases.begin(), groups[g].cases.end(),
+                                       [&](size_t i) { return kept.cases.count(prepared.cases[i].id) > 0; });
+        if (!whole) continue;
+        group_kept[g] = true;
+        run.groups[g].chunks = previous_group->chunks;
+        for (size_t i : groups[g].cases) {
+            const Case& c = prepared.cases[i];
+            CaseResult result = kept.cases.at(c.id);  // measurements as recorded, labels from this run's cases
             result.params = c.params.values();
             result.params_summary = c.params.summary();
             result.params_shown = labels.parameters(c);
+            result.group = g;
             slots[i] = std::move(result);
         }
     }
@@ -236,58 +240,59 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
     };
     record_cases();
 
-    // References the cases still to run need, for the ETA.
-    std::set<std::string> references_needed;
-    for (size_t i = 0; i < prepared.cases.size(); ++i)
-        if (!slots[i])
-            references_needed.insert(fmt::format("{}@{}x{}", prepared.cases[i].scene_index, prepared.cases[i].resolution.width,
-                                                 prepared.cases[i].resolution.height));
-    Progress progress(prepared.cases.size(), run.reference_enabled ? references_needed.size() : 0);
+    // References the groups still to run need, for the ETA.
+    size_t references_needed = 0;
+    for (size_t g = 0; g < groups.size(); ++g) references_needed += group_kept[g] ? 0 : 1;
+    Progress progress(prepared.cases.size(), run.reference_enabled ? references_needed : 0);
     ReferenceProvider references(options.reference_cache_dir, experiment.reference);
-    size_t measured = 0;  // cases this process measured
+    size_t groups_measured = 0;  // groups this process measured
     try {
         std::filesystem::create_directories(out / "images");
         if (options.previous) remove_temporary_files(out);
         write_reports(out, run, experiment);
 
-        for (size_t i = 0; i < prepared.cases.size() && !interrupt_requested(); ++i) {
-            const Case& c = prepared.cases[i];
-            const Scene& scene = experiment.scenes[c.scene_index];
-            const Technique& technique = *registry.find(c.technique);
-            const std::string label = fmt::format("{} {}x{} {} {}", scene.name, c.resolution.width, c.resolution.height,
-                                                  c.technique, labels.parameters(c));
-            if (slots[i]) {
-                if (options.show_progress) progress.kept_case(i, label);
+        for (size_t g = 0; g < groups.size() && !interrupt_requested(); ++g) {
+            const PlannedGroup& planned = groups[g];
+            const Scene& scene = experiment.scenes[planned.scene_index];
+            const Resolution& resolution = planned.resolution;
+            const size_t first = planned.cases.front();
+            auto label_of = [&](size_t i) {
+                const Case& c = prepared.cases[i];
+                return fmt::format("{} {} {}", planned.name, c.technique, labels.parameters(c));
+            };
+            if (group_kept[g]) {
+                if (options.show_progress)
+                    for (size_t i : planned.cases) progress.kept_case(i, label_of(i));
                 continue;
             }
             // The reference first, so a case's record is complete when it is written.
             const ReferenceEntry* reference = nullptr;
             if (run.reference_enabled) {
-                const std::string stem = reference_stem(scene, c.resolution);
-                const std::string name = fmt::format("{} {}x{}", scene.name, c.resolution.width, c.resolution.height);
+                const std::string stem = reference_stem(scene, resolution);
                 bool obtained_now = false;
                 bool source_from_cache = false;
                 const auto reference_start = std::chrono::steady_clock::now();
                 reference = &references.get(
-                    scene, prepared.meshes[c.scene_index], c.resolution.width, c.resolution.height,
+                    scene, prepared.meshes[planned.scene_index], resolution.width, resolution.height,
                     [&](double fraction) {
-                        if (options.show_progress) progress.reference_progress(i, name, fraction);
+                        if (options.show_progress) progress.reference_progress(first, planned.name, fraction);
                     },
                     [&](bool from_cache) {
                         obtained_now = true;
                         source_from_cache = from_cache;
-                        if (options.show_progress) progress.reference_started(i, name, from_cache);
+                        if (options.show_progress) progress.reference_started(first, planned.name, from_cache);
                     });
                 if (obtained_now && options.show_progress)
                     progress.reference_finished(
-                        i, name, std::chrono::duration<double>(std::chrono::steady_clock::now() - reference_start).count(),
+                        first, planned.name,
+                        std::chrono::duration<double>(std::chrono::steady_clock::now() - reference_start).count(),
                         source_from_cache);
                 const bool recorded = std::any_of(run.references.begin(), run.references.end(),
-                                                  [&](const ReferenceRecord& r) { return same_reference(r, scene.name, c.resolution); });
+                                                  [&](const ReferenceRecord& r) { return same_reference(r, scene.name, resolution); });
                 if (!recorded) {
                     ReferenceRecord record;
                     record.scene = scene.name;
-                    record.resolution = c.resolution;
+                    record.resolution = resolution;
                     record.key = reference->key;
                     record.from_cache = reference->from_cache;
                     record.seconds = reference->images.seconds;
@@ -316,66 +321,78 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
                 }
             }
 
-            // The case's time leaves its reference out: Progress estimates the time left from case
+            // The group's time leaves its reference out: Progress estimates the time left from case
             // times and reference times separately (a reference is obtained once per scene and size).
             const auto start = std::chrono::steady_clock::now();
-            if (options.show_progress) progress.start_case(i, label);
-            CaseResult result;
-            Image image, visibility;
-            try {
-                result = measure_case(c, scene, prepared.meshes[c.scene_index], technique, gpu, run.warmup_frames,
-                                      run.measured_frames, &image, &visibility);
-            } catch (const GpuError& e) {
-                result = case_header(c, scene);
-                result.ok = false;
-                result.error = e.what();
+            GroupInput input;
+            input.name = planned.name;
+            input.scene = &scene;
+            input.meshes = &prepared.meshes[planned.scene_index];
+            for (size_t i : planned.cases) {
+                const Case& c = prepared.cases[i];
+                GroupCase gc{&c, registry.find(c.technique), 0};
+                if (options.ballast && options.ballast->technique == c.technique) gc.ballast_iterations = options.ballast->iterations;
+                input.cases.push_back(gc);
             }
-            if (interrupt_requested()) break;  // this case did not finish: keep only the finished ones
-            result.params_shown = labels.parameters(c);
-            ++measured;
+            if (options.show_progress) progress.start_group(first, planned.name, planned.cases.size(), settings.rounds);
 
-            if (!image.pixels.empty()) {
-                const bool pngs = options.images != ImageOutput::none;
-                if (options.images == ImageOutput::all) {
-                    result.image_exr = "images/" + c.id + ".exr";
-                    write_exr(out / result.image_exr, image);
-                    result.visibility_exr = "images/" + c.id + ".visibility.exr";
-                    write_exr(out / result.visibility_exr, visibility);
-                }
-                if (pngs) {
-                    result.image_png = "images/" + c.id + ".png";
-                    write_png_srgb(out / result.image_png, image);
-                }
-                if (reference) {
-                    const Image& truth = reference->images.radiance;
-                    std::vector<float> flip_map;
-                    // The pixel-centre visibility of the technique and of the reference: the
-                    // technique-isolated error and the shadow regions (metrics/pixel_classes.hpp).
-                    const PixelVisibilityPair pixel_visibility{visibility, reference->pixel_visibility.visibility};
-                    result.image_error =
-                        compute_metrics(image, truth, &pixel_visibility, technique.error_columns(), {}, &flip_map);
+            GroupCallbacks callbacks;
+            callbacks.round_started = [&](size_t chunk, size_t cases, int round, int rounds) {
+                if (options.show_progress) progress.group_round(planned.name, chunk, cases, round, rounds);
+            };
+            callbacks.case_measured = [&](size_t k, CaseResult& result, Image&& image, Image&& visibility) {
+                const Case& c = prepared.cases[planned.cases[k]];
+                result.params_shown = labels.parameters(c);
+                result.group = g;
+                if (!image.pixels.empty()) {
+                    const bool pngs = options.images != ImageOutput::none;
+                    if (options.images == ImageOutput::all) {
+                        result.image_exr = "images/" + c.id + ".exr";
+                        write_exr(out / result.image_exr, image);
+                        result.visibility_exr = "images/" + c.id + ".visibility.exr";
+                        write_exr(out / result.visibility_exr, visibility);
+                    }
                     if (pngs) {
-                        const auto record = std::find_if(run.references.begin(), run.references.end(),
-                                                         [&](const ReferenceRecord& r) { return same_reference(r, scene.name, c.resolution); });
-                        result.error_map_png = "images/" + c.id + ".error.png";
-                        result.flip_map_png = "images/" + c.id + ".flip.png";
-                        // Each with its scale drawn beside it.
-                        write_png_display(out / result.error_map_png,
-                                          with_colour_bar(absolute_error_heatmap(image, truth, record->error_map_scale),
-                                                          viridis_colormap(), record->error_map_scale));
-                        write_png_display(out / result.flip_map_png,
-                                          with_colour_bar(flip_heatmap(flip_map, image.width, image.height),
-                                                          magma_colormap(), 1.0));
+                        result.image_png = "images/" + c.id + ".png";
+                        write_png_srgb(out / result.image_png, image);
+                    }
+                    if (reference) {
+                        const Image& truth = reference->images.radiance;
+                        std::vector<float> flip_map;
+                        // The pixel-centre visibility of the technique and of the reference: the
+                        // technique-isolated error and the shadow regions (metrics/pixel_classes.hpp).
+                        const PixelVisibilityPair pixel_visibility{visibility, reference->pixel_visibility.visibility};
+                        result.image_error = compute_metrics(image, truth, &pixel_visibility,
+                                                             input.cases[k].technique->error_columns(), {}, &flip_map);
+                        if (pngs) {
+                            const auto record = std::find_if(run.references.begin(), run.references.end(),
+                                                             [&](const ReferenceRecord& r) { return same_reference(r, scene.name, resolution); });
+                            result.error_map_png = "images/" + c.id + ".error.png";
+                            result.flip_map_png = "images/" + c.id + ".flip.png";
+                            // Each with its scale drawn beside it.
+                            write_png_display(out / result.error_map_png,
+                                              with_colour_bar(absolute_error_heatmap(image, truth, record->error_map_scale),
+                                                              viridis_colormap(), record->error_map_scale));
+                            write_png_display(out / result.flip_map_png,
+                                              with_colour_bar(flip_heatmap(flip_map, image.width, image.height),
+                                                              magma_colormap(), 1.0));
+                        }
                     }
                 }
-            }
-            test_hooks::case_images_written(measured);
-            slots[i] = std::move(result);
+                test_hooks::case_images_written(groups_measured);
+            };
+            std::optional<MeasuredGroup> measured = measure_group(gpu, input, settings, options.chunk_limits, callbacks);
+            if (!measured || interrupt_requested()) break;  // this group did not finish: keep only the finished ones
+            ++groups_measured;
+            run.groups[g].chunks = std::move(measured->record.chunks);
+            for (size_t k = 0; k < planned.cases.size(); ++k) slots[planned.cases[k]] = std::move(measured->cases[k]);
             record_cases();
             write_reports(out, run, experiment);
-            test_hooks::case_recorded(measured);
+            test_hooks::group_recorded(groups_measured);
             const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            if (options.show_progress) progress.finish_case(i, label, seconds, slots[i]->ok);
+            if (options.show_progress)
+                for (size_t i : planned.cases)
+                    progress.finish_case(i, label_of(i), seconds / double(planned.cases.size()), slots[i]->ok);
         }
     } catch (const std::exception& e) {
         // The run cannot go on (a full disk, an unwritable folder, a reference that cannot be

@@ -1,9 +1,12 @@
-// Runs an experiment's cases: for each, builds the technique's frame, warms up, measures,
-// saves the image, and rewrites the reports so an interrupted run keeps every finished case.
+// Runs an experiment group by group (the cases of one scene at one resolution, measured together
+// round by round: run/group_measurement.hpp), saves each case's image and error, and rewrites the
+// reports after every group, so an interrupted run keeps every finished group.
 #pragma once
 
 #include "core/registry.hpp"
 #include "run/case_result.hpp"
+#include "run/group_measurement.hpp"
+#include "run/test_ballast.hpp"
 
 #include <filesystem>
 
@@ -13,7 +16,7 @@ enum class ImageOutput { all, png, none };  // EXR + PNG + error maps, PNGs only
 
 struct RunOptions {
     std::filesystem::path out_dir;
-    bool quick = false;          // 1 warm-up and 3 measured frames per case
+    bool quick = false;          // 1 warm-up frame, 3 rounds of 1 frame per case
     bool show_progress = true;
     ImageOutput images = ImageOutput::all;
     bool reference = true;                        // ray-trace references and compute errors (if the experiment enables it)
@@ -21,7 +24,21 @@ struct RunOptions {
     // The run this one continues (read from out_dir's results.json, same identity): its finished
     // cases whose files exist are kept, the others are run. Null: a new run.
     const RunRecord* previous = nullptr;
+    ChunkLimits chunk_limits;
+    std::optional<BallastSpec> ballast;  // TEST-ONLY (run/test_ballast.hpp)
 };
+
+// The measurement an experiment gets with these options (--quick shortens it).
+MeasurementSettings measurement_settings(const Experiment& experiment, const RunOptions& options);
+
+// The cases that share a baseline: one scene at one resolution, in the order of the cases.
+struct PlannedGroup {
+    std::string name;           // "spheres 640x360"
+    size_t scene_index = 0;
+    Resolution resolution;
+    std::vector<size_t> cases;  // indices into the experiment's cases, the baseline first
+};
+std::vector<PlannedGroup> plan_groups(const std::vector<Case>& cases, const std::vector<Scene>& scenes);
 
 // An experiment checked against the device: every case's plan fits its scene and the device,
 // every mesh loaded. Nothing is written before this succeeds.
@@ -35,17 +52,10 @@ struct PreparedExperiment {
 PreparedExperiment prepare_experiment(const Experiment& experiment, const TechniqueRegistry& registry,
                                       const GpuContext& gpu);
 
-// Writes results.json, results.csv, results.md and images/ under options.out_dir, rewriting the
-// reports after every case. A failure to write (a full disk, ...) ends the run with status
+// Writes results.json, results.csv, results.md, results.gbench.json and images/ under
+// options.out_dir, rewriting the reports after every group. A failure to write (a full disk, ...) ends the run with status
 // "failed" and the reason in RunRecord::error, recorded in results.json where the disk allows.
 RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegistry& registry, const GpuContext& gpu,
                          const RunOptions& options);
-
-// Renders one case and measures it (no files written). Used by the runner and by tests.
-// `image_out` receives the last frame, `visibility_out` its pixel-centre visibility
-// (FrameRenderer::read_pixel_visibility).
-CaseResult measure_case(const Case& c, const Scene& scene, const std::vector<TriangleMesh>& meshes,
-                        const Technique& technique, const GpuContext& gpu, int warmup_frames, int measured_frames,
-                        Image* image_out, Image* visibility_out = nullptr);
 
 }  // namespace canopy

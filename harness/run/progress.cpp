@@ -85,6 +85,20 @@ void Progress::start_case(size_t index, const std::string& label) {
     else line(fmt::format("[{}/{}] {} ...", index + 1, total_, label));
 }
 
+void Progress::start_group(size_t first_index, const std::string& group, size_t cases, int rounds) {
+    const std::string text = fmt::format("measuring {}: {} case{} interleaved, {} round{}", group, cases,
+                                         cases == 1 ? "" : "s", rounds, rounds == 1 ? "" : "s");
+    if (terminal_) draw_bar(done_, text);
+    else line(fmt::format("[{}/{}] {} ...", first_index + 1, total_, text));
+}
+
+void Progress::group_round(const std::string& group, size_t chunk, size_t cases, int round, int rounds) {
+    if (!terminal_) return;  // a line per round would bury the rest
+    draw_bar(done_, chunk == 0 ? fmt::format("measuring {}: round {}/{}", group, round, rounds)
+                               : fmt::format("measuring {} (chunk {}, {} cases): round {}/{}", group, chunk + 1, cases,
+                                             round, rounds));
+}
+
 void Progress::finish_case(size_t index, const std::string& label, double seconds, bool ok) {
     ++done_;
     ++measured_;

@@ -32,6 +32,9 @@ public:
     void reference_progress(size_t index, const std::string& name, double fraction);
     void reference_finished(size_t index, const std::string& name, double seconds, bool from_cache);
     void start_case(size_t index, const std::string& label);
+    // A group's cases are measured together, round by round (run/group_measurement.hpp).
+    void start_group(size_t first_index, const std::string& group, size_t cases, int rounds);
+    void group_round(const std::string& group, size_t chunk, size_t cases, int round, int rounds);
     void finish_case(size_t index, const std::string& label, double seconds, bool ok);
     void done();  // "finished N cases in 0:12"
 

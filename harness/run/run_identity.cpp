@@ -37,6 +37,15 @@ RunIdentity make_run_identity(const Experiment& experiment, const RunOptions& op
     add("quick", options.quick ? "true" : "false");
     add("images", images_name(options.images));
     add("reference", options.reference && experiment.reference_enabled ? "on" : "off");
+    // How the cases are timed: a run continuing another must pair its rounds the same way.
+    const MeasurementSettings measurement = measurement_settings(experiment, options);
+    add("warmup_frames", std::to_string(measurement.warmup_frames));
+    add("rounds", std::to_string(measurement.rounds));
+    add("frames_per_sample", std::to_string(measurement.frames_per_sample));
+    add("pairing", to_string(measurement.pairing));
+    add("round_order", "williams");
+    add("chunk_limits", fmt::format("{} cases, {} MiB", options.chunk_limits.max_cases, options.chunk_limits.max_bytes >> 20));
+    add("test_ballast", options.ballast ? fmt::format("{}={}", options.ballast->technique, options.ballast->iterations) : "none");
     add("device", environment.device.name);
     add("driver", environment.device.driver_info);
     // Timings of one run are compared with each other, so every part must come from one build on

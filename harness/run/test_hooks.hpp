@@ -1,18 +1,19 @@
 // TEST-ONLY hooks that stop a run at a fixed point, so tests can kill a real run and resume it.
 // They read environment variables that nothing else uses; unset, they do nothing:
-//   CANOPY_TEST_KILL_AFTER_CASES=N  after the N-th case this process measures is recorded (its
-//                                   images and results.json written), the process sends itself
-//                                   CANOPY_TEST_KILL_SIGNAL: KILL (default), TERM or INT;
-//   CANOPY_TEST_KILL_MID_CASE=1     instead, send it after the (N+1)-th case's images are written
-//                                   but before results.json records that case (a half-written case).
+//   CANOPY_TEST_KILL_AFTER_GROUPS=N  after the N-th group this process measures is recorded (its
+//                                    cases' images and results.json written), the process sends
+//                                    itself CANOPY_TEST_KILL_SIGNAL: KILL (default), TERM or INT;
+//   CANOPY_TEST_KILL_MID_GROUP=1     instead, send it once the first case of the (N+1)-th group
+//                                    has its images written, before results.json records that
+//                                    group (a half-written group).
 #pragma once
 
 #include <cstddef>
 
 namespace canopy::test_hooks {
 
-// `measured` counts the cases this process has measured so far, this one included.
-void case_images_written(size_t measured);
-void case_recorded(size_t measured);
+// `groups_recorded` counts the groups this process has measured and recorded so far.
+void case_images_written(size_t groups_recorded);
+void group_recorded(size_t groups_recorded);
 
 }  // namespace canopy::test_hooks

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # A run is never lost or clobbered, and says what it does: output-folder protection, resume after
-# SIGKILL / SIGTERM / a full disk (through the test-only hooks CANOPY_TEST_KILL_AFTER_CASES and
+# SIGKILL / SIGTERM / a full disk (through the test-only hooks CANOPY_TEST_KILL_AFTER_GROUPS and
 # CANOPY_TEST_FAIL_WRITE_AFTER), progress, the compact table, `canopy list`, `--version`, the
 # README's file list and committed paths. Usage: run_safety.sh CANOPY DATA_DIR CASE
 set -uo pipefail
@@ -14,6 +14,12 @@ fail() { echo "FAIL: $*"; exit 1; }
 run_tiny() {
   local out=$1; shift
   "$canopy" run "$data/experiments/tiny.toml" --out "$out" --quick --no-progress --reference-cache "$work/cache" "$@" \
+    >"$work/stdout" 2>"$work/stderr"
+}
+# Two groups (tiny at two resolutions, 6 cases): a run is recorded, and resumed, group by group.
+run_groups() {
+  local out=$1; shift
+  "$canopy" run "$work/groups.toml" --out "$out" --quick --no-progress --reference-cache "$work/cache" "$@" \
     >"$work/stdout" 2>"$work/stderr"
 }
 json() { python3 -c "import json,sys; j=json.load(open(sys.argv[1])); print($2)" "$1"; }
@@ -45,6 +51,8 @@ PY
 
 # An experiment other than tiny (another kernel sweep), with absolute scene paths.
 sed -e 's/kernel = \[3, 5\]/kernel = [3, 7]/' -e "s|\.\./scenes/|$data/scenes/|" "$data/experiments/tiny.toml" >"$work/other.toml"
+sed -e 's/^name = "tiny"/name = "tiny-groups"/' -e 's/resolutions = \[\[96, 64\]\]/resolutions = [[96, 64], [64, 48]]/' \
+  -e "s|\.\./scenes/|$data/scenes/|" "$data/experiments/tiny.toml" >"$work/groups.toml"
 
 case $case in
   folder_protection)
@@ -97,51 +105,52 @@ case $case in
     [ -s "$work/checkout/results/paper/G-X/results.json" ] || fail "nothing written with --force" ;;
 
   resume_after_kill)
-    run_tiny "$work/whole" || fail "uninterrupted run failed"
-    for n in 1 2; do
-      CANOPY_TEST_KILL_AFTER_CASES=$n run_tiny "$work/killed$n"; rc=$?
-      [ $rc -eq 137 ] || fail "exit code $rc after SIGKILL, expected 137"
-      [ "$(json "$work/killed$n/results.json" "j['status'], len(j['cases'])")" == "running $n" ] \
-        || fail "the killed run did not record $n cases"
-      kept=$(json "$work/killed$n/results.json" "j['cases'][0]['timing']")
-      run_tiny "$work/killed$n" --resume || fail "resume failed: $(cat "$work/stderr")"
-      cat "$work/stderr"
-      [ "$(json "$work/killed$n/results.json" "j['cases'][0]['timing']")" == "$kept" ] || fail "a finished case was redone"
-      [ "$(json "$work/killed$n/results.json" "len(j['resumed_at'])")" == 1 ] || fail "resumed_at not recorded"
-      same_results "$work/whole" "$work/killed$n"
-      no_temporary_files "$work/killed$n"
-    done ;;
+    run_groups "$work/whole" || fail "uninterrupted run failed"
+    CANOPY_TEST_KILL_AFTER_GROUPS=1 run_groups "$work/killed"; rc=$?
+    [ $rc -eq 137 ] || fail "exit code $rc after SIGKILL, expected 137"
+    [ "$(json "$work/killed/results.json" "j['status'], len(j['cases'])")" == "running 3" ] \
+      || fail "the killed run did not record its first group's 3 cases"
+    kept=$(json "$work/killed/results.json" "j['cases'][0]['timing'], j['groups'][0]['chunks']")
+    run_groups "$work/killed" --resume || fail "resume failed: $(cat "$work/stderr")"
+    cat "$work/stderr"
+    [ "$(json "$work/killed/results.json" "j['cases'][0]['timing'], j['groups'][0]['chunks']")" == "$kept" ] \
+      || fail "a finished group was redone"
+    [ "$(json "$work/killed/results.json" "len(j['resumed_at'])")" == 1 ] || fail "resumed_at not recorded"
+    same_results "$work/whole" "$work/killed"
+    no_temporary_files "$work/killed" ;;
 
-  resume_mid_case)
-    run_tiny "$work/whole" || fail "uninterrupted run failed"
-    # Killed after the second case's images are written, before results.json records it.
-    CANOPY_TEST_KILL_AFTER_CASES=1 CANOPY_TEST_KILL_MID_CASE=1 run_tiny "$work/half"; rc=$?
+  resume_mid_group)
+    run_groups "$work/whole" || fail "uninterrupted run failed"
+    # Killed after the second group's first case has its images written, before results.json records that group.
+    CANOPY_TEST_KILL_AFTER_GROUPS=1 CANOPY_TEST_KILL_MID_GROUP=1 run_groups "$work/half"; rc=$?
     [ $rc -eq 137 ] || fail "exit code $rc, expected 137"
-    [ "$(json "$work/half/results.json" "len(j['cases'])")" == 1 ] || fail "expected 1 recorded case"
-    ls "$work/half/images" | grep -q "kernel-3.png" || fail "the half-written case left no images (test premise)"
-    touch -d '2000-01-01' "$work/half/images/"*kernel-3*
+    [ "$(json "$work/half/results.json" "len(j['cases'])")" == 3 ] || fail "expected the first group's 3 cases recorded"
+    ls "$work/half/images" | grep -q "tiny_64x48_shadow.hard_resolution-256.png" \
+      || fail "the half-written group left no images (test premise)"
+    touch -d '2000-01-01' "$work/half/images/"tiny_64x48*
     touch "$work/half/images/.tiny_96x64_shadow.tmp999.png"  # as a write cut short would leave
-    # A recorded case that lost a file is run again too.
-    rm "$work/half/images/"*shadow.hard*.error.png
-    lost=$(json "$work/half/results.json" "j['cases'][0]['timing']['gpu_frame']['samples_ms']")
-    run_tiny "$work/half" || fail "resume failed: $(cat "$work/stderr")"
-    [ "$(json "$work/half/results.json" "j['cases'][0]['timing']['gpu_frame']['samples_ms']")" != "$lost" ] \
-      || fail "a case whose error map was gone was kept"
-    [ -n "$(find "$work/half/images" -name '*kernel-3.png' -newermt '2001-01-01')" ] || fail "the half-written case was not redone"
+    # A recorded group one of whose cases lost a file is run again, every case of it.
+    rm "$work/half/images/"tiny_96x64*shadow.hard*.error.png
+    lost=$(json "$work/half/results.json" "j['cases'][1]['timing']['gpu_frame']['samples_ms']")
+    run_groups "$work/half" || fail "resume failed: $(cat "$work/stderr")"
+    [ "$(json "$work/half/results.json" "j['cases'][1]['timing']['gpu_frame']['samples_ms']")" != "$lost" ] \
+      || fail "a group whose baseline's error map was gone was kept"
+    [ -n "$(find "$work/half/images" -name 'tiny_64x48*hard*.png' -newermt '2001-01-01')" ] \
+      || fail "the half-written group was not redone"
     same_results "$work/whole" "$work/half"
     no_temporary_files "$work/half" ;;
 
   resume_after_term)
-    run_tiny "$work/whole" || fail "uninterrupted run failed"
+    run_groups "$work/whole" || fail "uninterrupted run failed"
     for signal in TERM INT; do
-      CANOPY_TEST_KILL_SIGNAL=$signal CANOPY_TEST_KILL_AFTER_CASES=1 run_tiny "$work/$signal"; rc=$?
+      CANOPY_TEST_KILL_SIGNAL=$signal CANOPY_TEST_KILL_AFTER_GROUPS=1 run_groups "$work/$signal"; rc=$?
       cat "$work/stderr"
       expected=$([ $signal == TERM ] && echo 143 || echo 130)
       [ $rc -eq "$expected" ] || fail "exit code $rc after SIG$signal, expected $expected"
-      [ "$(json "$work/$signal/results.json" "j['status'], len(j['cases'])")" == "interrupted 1" ] \
-        || fail "SIG$signal did not leave an interrupted record of the finished case"
-      grep -q "interrupted after 1 of 3 cases" "$work/stderr" || fail "no message"
-      run_tiny "$work/$signal" || fail "resume failed: $(cat "$work/stderr")"
+      [ "$(json "$work/$signal/results.json" "j['status'], len(j['cases'])")" == "interrupted 3" ] \
+        || fail "SIG$signal did not leave an interrupted record of the finished group"
+      grep -q "interrupted after 3 of 6 cases" "$work/stderr" || fail "no message"
+      run_groups "$work/$signal" || fail "resume failed: $(cat "$work/stderr")"
       same_results "$work/whole" "$work/$signal"
     done
     # A real SIGTERM from outside, in the middle of a long case.
@@ -170,24 +179,26 @@ case $case in
     [ "$(json "$work/a/results.json" "j['status']")" == interrupted ] || fail "the first run's record was disturbed" ;;
 
   disk_full)
-    run_tiny "$work/whole" || fail "uninterrupted run failed"
-    # Writes: 3 reports, 4 reference images, 5 images of case 1, 3 reports; the 16th (case 2's EXR) fails.
-    CANOPY_TEST_FAIL_WRITE_AFTER=15 run_tiny "$work/full"; rc=$?
+    run_groups "$work/whole" || fail "uninterrupted run failed"
+    # Writes: 4 reports, then per group 4 reference images, 5 images per case (3 cases), 4 reports:
+    # 27 up to the first group's record; the 32nd (the second group's first EXR) fails.
+    CANOPY_TEST_FAIL_WRITE_AFTER=31 run_groups "$work/full"; rc=$?
     cat "$work/stderr"
     [ $rc -eq 1 ] || fail "exit code $rc, expected 1"
-    grep -Eq "cannot write .*kernel-3\.exr: No space left on device" "$work/stderr" || fail "no reason on stderr"
-    [ "$(json "$work/full/results.json" "j['status'], len(j['cases'])")" == "failed 1" ] || fail "results.json is not 'failed'"
+    grep -Eq "cannot write .*tiny_64x48_shadow\.hard_resolution-256\.exr: No space left on device" "$work/stderr" \
+      || fail "no reason on stderr"
+    [ "$(json "$work/full/results.json" "j['status'], len(j['cases'])")" == "failed 3" ] || fail "results.json is not 'failed'"
     json "$work/full/results.json" "j['error']" | grep -q "No space left on device" || fail "the reason is not recorded"
     no_temporary_files "$work/full"
     # Space again: the same command continues it.
-    run_tiny "$work/full" || fail "resume after a full disk failed: $(cat "$work/stderr")"
+    run_groups "$work/full" || fail "resume after a full disk failed: $(cat "$work/stderr")"
     same_results "$work/whole" "$work/full"
     # The very first write failing is reported the same way.
     CANOPY_TEST_FAIL_WRITE_AFTER=0 run_tiny "$work/first"; rc=$?
     [ $rc -eq 1 ] && grep -q "results.json: No space left on device" "$work/stderr" || fail "first write: rc $rc, $(cat "$work/stderr")" ;;
 
   disk_stays_full)
-    # Every write from the reports after case 1 on fails: not even the failure can be recorded.
+    # Every write from case 1's fifth image on fails: not even the failure can be recorded.
     CANOPY_TEST_FAIL_WRITE_AFTER=12+ run_tiny "$work/full"; rc=$?
     cat "$work/stderr"
     [ $rc -eq 1 ] || fail "exit code $rc, expected 1"

@@ -1,0 +1,342 @@
+#include "run/group_measurement.hpp"
+
+#include "metrics/comparable_pair.hpp"
+#include "render/frame_renderer.hpp"
+#include "run/interrupt.hpp"
+#include "run/round_order.hpp"
+#include "run/test_ballast.hpp"
+
+#include <fmt/chrono.h>
+#include <fmt/format.h>
+
+#include <chrono>
+#include <ctime>
+#include <memory>
+#include <optional>
+
+namespace canopy {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_between(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); }
+
+double process_cpu_ms() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
+}
+
+std::string utc_now() { return fmt::format("{:%Y-%m-%dT%H:%M:%SZ}", fmt::gmtime(std::time(nullptr))); }
+
+TimingSeries series(std::string name, std::vector<double> samples) {
+    TimingSeries t{std::move(name), std::move(samples), {}};
+    t.stats = summarize(t.samples_ms);
+    return t;
+}
+
+// One case while its group is measured: its renderer and the samples taken so far.
+struct LiveCase {
+    size_t index = 0;  // in the group
+    CaseResult result;
+    std::unique_ptr<FrameRenderer> renderer;
+    std::unique_ptr<Ballast> ballast;
+    std::vector<std::string> pass_names;
+    std::vector<std::vector<double>> pass_samples;
+    std::vector<double> gpu, wall, cpu, start;
+    std::vector<double> ratios;  // per round: GPU time / the baseline's it is paired with
+    bool failed = false;
+
+    void fail(const std::string& why) {
+        failed = true;
+        result.ok = false;
+        result.error = why;
+    }
+    uint64_t bytes() const {
+        if (!renderer) return 0;
+        const MemoryUse m = renderer->memory();
+        return m.technique_bytes + m.target_bytes + m.scene_bytes;
+    }
+
+    // One frame, with the test ballast after it when there is one.
+    FrameTiming frame() {
+        FrameTiming t = renderer->render();
+        if (ballast) {
+            const auto before = Clock::now();
+            const double ballast_ms = ballast->run_ms();
+            t.wall_ms += 1e3 * seconds_between(before, Clock::now());
+            t.gpu_ms += ballast_ms;
+            t.pass_gpu_ms.push_back(ballast_ms);
+        }
+        return t;
+    }
+
+    // One sample: `frames` frames, each series the mean over them.
+    struct Sample {
+        std::vector<double> passes;
+        double gpu = 0, wall = 0, cpu = 0, start = 0;
+        int count = 0;  // samples summed into this one
+
+        void add(const Sample& s) {
+            if (passes.size() < s.passes.size()) passes.resize(s.passes.size(), 0.0);
+            for (size_t p = 0; p < s.passes.size(); ++p) passes[p] += s.passes[p];
+            gpu += s.gpu;
+            wall += s.wall;
+            cpu += s.cpu;
+            if (count == 0) start = s.start;
+            count += s.count;
+        }
+    };
+    Sample sample(int frames, double started_s) {
+        Sample s;
+        s.passes.assign(pass_names.size(), 0.0);
+        s.start = started_s;
+        s.count = 1;
+        const double cpu_before = process_cpu_ms();
+        for (int f = 0; f < frames; ++f) {
+            const FrameTiming t = frame();
+            for (size_t p = 0; p < s.passes.size() && p < t.pass_gpu_ms.size(); ++p) s.passes[p] += t.pass_gpu_ms[p];
+            s.gpu += t.gpu_ms;
+            s.wall += t.wall_ms;
+        }
+        const double n = double(frames);
+        for (double& p : s.passes) p /= n;
+        s.gpu /= n;
+        s.wall /= n;
+        s.cpu = (process_cpu_ms() - cpu_before) / n;
+        return s;
+    }
+    // Records a round's sample (for the baseline under adjacent pairing: the mean of its samples
+    // in the round).
+    void record(const Sample& sum) {
+        const double n = double(std::max(sum.count, 1));
+        for (size_t p = 0; p < pass_samples.size(); ++p) pass_samples[p].push_back(p < sum.passes.size() ? sum.passes[p] / n : 0.0);
+        gpu.push_back(sum.gpu / n);
+        wall.push_back(sum.wall / n);
+        cpu.push_back(sum.cpu / n);
+        start.push_back(sum.start);
+    }
+
+    // Forgets the samples taken so far (the baseline's, between chunks: its record keeps the first
+    // chunk's, each later chunk pairs with its own).
+    void clear_samples() {
+        for (auto& p : pass_samples) p.clear();
+        gpu.clear();
+        wall.clear();
+        cpu.clear();
+        start.clear();
+        ratios.clear();
+    }
+
+    void finish_timings(size_t chunk) {
+        result.chunk = chunk;
+        for (size_t p = 0; p < pass_names.size(); ++p) result.passes.push_back(series(pass_names[p], pass_samples[p]));
+        result.gpu_frame = series("gpu_frame", gpu);
+        result.wall = series("wall", wall);
+        result.cpu = series("cpu", cpu);
+        result.sample_start_s = start;
+    }
+};
+
+// Builds a case's renderer (and ballast); a GpuError fails the case alone.
+void build(LiveCase& live, const GpuContext& gpu, const GroupInput& group) {
+    const GroupCase& gc = group.cases[live.index];
+    try {
+        live.renderer = std::make_unique<FrameRenderer>(gpu, *group.scene, *group.meshes, uint32_t(gc.c->resolution.width),
+                                                        uint32_t(gc.c->resolution.height), gc.technique->plan(gc.c->params));
+        live.pass_names = live.renderer->pass_names();
+        if (gc.ballast_iterations > 0) {
+            live.ballast = std::make_unique<Ballast>(gpu, uint32_t(gc.c->resolution.width),
+                                                     uint32_t(gc.c->resolution.height), gc.ballast_iterations);
+            live.pass_names.push_back("test_ballast");
+        }
+        live.pass_samples.assign(live.pass_names.size(), {});
+        live.result.memory = live.renderer->memory();
+        live.result.triangles = live.renderer->triangle_count();
+        live.result.shadow_sampler = live.renderer->shadow_sampler();
+    } catch (const GpuError& e) {
+        live.renderer.reset();
+        live.ballast.reset();
+        live.fail(e.what());
+    }
+}
+
+// Warm-up and rounds of one chunk. False when interrupted.
+bool measure_chunk(std::vector<LiveCase*>& members, const MeasurementSettings& settings, size_t chunk_index,
+                   MeasurementChunk& chunk, const GroupCallbacks& callbacks, bool with_baseline) {
+    const auto begin = Clock::now();
+    chunk.started_at = utc_now();
+    if (with_baseline) members.front()->clear_samples();
+    for (LiveCase* m : members) {
+        chunk.cases.push_back(m->result.id);
+        for (int i = 0; i < settings.warmup_frames && !m->failed; ++i) {
+            if (interrupt_requested()) return false;
+            try {
+                m->frame();
+            } catch (const GpuError& e) {
+                m->fail(e.what());
+            }
+        }
+    }
+    // One sample of `m` (a failure ends the case alone); nullopt when it failed.
+    auto take = [&](LiveCase& m) -> std::optional<LiveCase::Sample> {
+        if (m.failed) return std::nullopt;
+        try {
+            return m.sample(settings.frames_per_sample, seconds_between(begin, Clock::now()));
+        } catch (const GpuError& e) {
+            m.fail(e.what());
+            return std::nullopt;
+        }
+    };
+    const bool adjacent = settings.pairing == BaselinePairing::adjacent && with_baseline && members.size() > 1;
+    for (int round = 0; round < settings.rounds; ++round) {
+        if (callbacks.round_started) callbacks.round_started(chunk_index, members.size(), round + 1, settings.rounds);
+        std::vector<size_t> sequence;  // positions in `members`, in the order they ran
+        if (adjacent) {
+            // B X B Y B Z B: each case between two baseline samples, divided by their mean.
+            LiveCase& baseline = *members.front();
+            LiveCase::Sample baseline_sum;
+            if (interrupt_requested()) return false;
+            std::optional<LiveCase::Sample> before = take(baseline);
+            sequence.push_back(0);
+            if (before) baseline_sum.add(*before);
+            for (size_t k : round_order(members.size() - 1, size_t(round))) {
+                LiveCase& m = *members[k + 1];
+                if (m.failed) continue;
+                if (interrupt_requested()) return false;
+                const std::optional<LiveCase::Sample> sample = take(m);
+                const std::optional<LiveCase::Sample> after = take(baseline);
+                sequence.insert(sequence.end(), {k + 1, 0});
+                if (after) baseline_sum.add(*after);
+                if (sample) {
+                    m.record(*sample);
+                    if (before && after) m.ratios.push_back(sample->gpu / (0.5 * (before->gpu + after->gpu)));
+                }
+                before = after;
+            }
+            if (!baseline.failed) {
+                baseline.record(baseline_sum);
+                baseline.ratios.push_back(1.0);
+            }
+        } else {
+            for (size_t k : round_order(members.size(), size_t(round))) {
+                if (interrupt_requested()) return false;
+                if (const std::optional<LiveCase::Sample> sample = take(*members[k])) members[k]->record(*sample);
+                sequence.push_back(k);
+            }
+            // Each case divided by the baseline's sample of the same round.
+            const LiveCase& baseline = *members.front();
+            if (with_baseline && !baseline.failed && baseline.gpu.size() == size_t(round) + 1)
+                for (LiveCase* m : members)
+                    if (!m->failed && m->gpu.size() == size_t(round) + 1) m->ratios.push_back(m->gpu.back() / baseline.gpu.back());
+        }
+        chunk.orders.push_back(std::move(sequence));
+    }
+    if (with_baseline) chunk.baseline_gpu_ms = members.front()->gpu;
+    chunk.seconds = seconds_between(begin, Clock::now());
+    return true;
+}
+
+// Its timings, its ratio, its last image; then the callback.
+void finish(LiveCase& live, size_t chunk_index, const MeasurementChunk& chunk, const GroupCallbacks& callbacks) {
+    live.finish_timings(chunk_index);
+    if (!chunk.baseline_gpu_ms.empty() && !live.failed && !live.ratios.empty()) {
+        live.result.ratio.per_round = live.ratios;
+        live.result.ratio.estimate = median_with_ci(live.ratios, bootstrap_seed(live.result.id));
+    }
+    Image image, visibility;
+    if (live.renderer && !live.failed) {
+        try {
+            image = live.renderer->read_color();
+            visibility = live.renderer->read_pixel_visibility();
+            live.result.nonfinite_pixels = count_nonfinite_pixels(image);
+            if (live.result.nonfinite_pixels > 0)
+                live.fail(fmt::format("{} pixels are NaN or Inf", live.result.nonfinite_pixels));
+        } catch (const GpuError& e) {
+            live.fail(e.what());
+        }
+    }
+    if (callbacks.case_measured) callbacks.case_measured(live.index, live.result, std::move(image), std::move(visibility));
+}
+
+}  // namespace
+
+RatioRecord paired_ratio(const std::vector<double>& series, const std::vector<double>& baseline, const std::string& label) {
+    RatioRecord r;
+    const size_t n = std::min(series.size(), baseline.size());
+    for (size_t i = 0; i < n; ++i)
+        if (series[i] > 0 && baseline[i] > 0) r.per_round.push_back(series[i] / baseline[i]);
+    r.estimate = median_with_ci(r.per_round, bootstrap_seed(label));
+    return r;
+}
+
+std::optional<MeasuredGroup> measure_group(const GpuContext& gpu, const GroupInput& group,
+                                           const MeasurementSettings& settings, const ChunkLimits& limits,
+                                           const GroupCallbacks& callbacks) {
+    MeasuredGroup measured;
+    measured.record.name = group.name;
+    std::vector<LiveCase> live(group.cases.size());
+    for (size_t i = 0; i < group.cases.size(); ++i) {
+        const Case& c = *group.cases[i].c;
+        live[i].index = i;
+        live[i].result.id = c.id;
+        live[i].result.group_baseline = i == 0;
+        live[i].result.scene = group.scene->name;
+        live[i].result.technique = c.technique;
+        live[i].result.resolution = c.resolution;
+        live[i].result.params = c.params.values();
+        live[i].result.params_summary = c.params.summary();
+        measured.record.cases.push_back(c.id);
+    }
+    measured.record.scene = group.scene->name;
+    if (!group.cases.empty()) measured.record.resolution = group.cases.front().c->resolution;
+
+    // The baseline first; it stays built through every chunk.
+    build(live[0], gpu, group);
+    const bool baseline_ok = !live[0].failed;
+    if (!baseline_ok && callbacks.case_measured) finish(live[0], 0, MeasurementChunk{}, callbacks);
+    size_t next = 1;
+    bool baseline_finished = !baseline_ok;
+    do {
+        std::vector<LiveCase*> members;
+        uint64_t bytes = 0;
+        if (baseline_ok) {
+            members.push_back(&live[0]);
+            bytes = live[0].bytes();
+        }
+        while (next < live.size() && members.size() < std::max<size_t>(limits.max_cases, 2)) {
+            if (interrupt_requested()) return std::nullopt;
+            LiveCase& candidate = live[next++];
+            build(candidate, gpu, group);
+            if (candidate.failed) {
+                finish(candidate, measured.record.chunks.size(), MeasurementChunk{}, callbacks);
+                continue;
+            }
+            members.push_back(&candidate);
+            bytes += candidate.bytes();
+            if (bytes > limits.max_bytes) break;
+        }
+        if (members.empty()) break;  // every remaining case failed to build
+        const size_t chunk_index = measured.record.chunks.size();
+        MeasurementChunk chunk;
+        if (!measure_chunk(members, settings, chunk_index, chunk, callbacks, baseline_ok)) return std::nullopt;
+        for (LiveCase* m : members) {
+            const bool is_baseline = baseline_ok && m == &live[0];
+            if (is_baseline && baseline_finished) continue;
+            finish(*m, chunk_index, chunk, callbacks);
+            if (is_baseline) {
+                baseline_finished = true;
+            } else {
+                m->renderer.reset();  // its memory goes back before the next chunk's renderers are built
+                m->ballast.reset();
+            }
+        }
+        measured.record.chunks.push_back(std::move(chunk));
+    } while (next < live.size());
+
+    for (LiveCase& l : live) measured.cases.push_back(std::move(l.result));
+    return measured;
+}
+
+}  // namespace canopy
