@@ -45,7 +45,7 @@ struct Experiment {
     // Timing (run/group_measurement.hpp): warm-up frames per case, then `rounds` measured rounds,
     // each one sample of every case of a group, a sample the mean of `frames_per_sample` frames.
     int warmup_frames = 5;
-    int rounds = 20;  // the `repetitions` key
+    int rounds = 30;  // the `repetitions` key
     int frames_per_sample = kDefaultFramesPerSample;
     BaselinePairing pairing = BaselinePairing::adjacent;  // the `pairing` key
     // The ray-traced reference every case's image is compared with ([reference] table).

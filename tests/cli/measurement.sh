@@ -14,9 +14,13 @@ suite=$checkout/configs/experiments/quick-suite.toml
 baseline=$checkout/results/baselines/quick-suite
 
 # The technique the slowdown is injected into, and how much work: 400 xorshift rounds per pixel
-# add about 15 ms per frame at 320x180 on lavapipe (one thread), +60 % to +100 % of the case.
+# add about 12 ms per frame at 320x180 on lavapipe, about +100 % of the case.
 ballast_technique=shadow.pcf
 ballast_iterations=400
+# The threshold of the time comparison: on a shared 2-core machine a case's ratio moves by up to
+# about 10 % between two runs of one build (results/stability/, README "Timing"), more than any
+# interval from one run's rounds shows, so the 5 % default would flag reruns here.
+threshold=15%
 
 case $case in
   baseline_errors)
@@ -38,22 +42,22 @@ intended, regenerate the baseline (README, Catching regressions)"
     run before
     run again
     CANOPY_TEST_BALLAST=$ballast_technique=$ballast_iterations run slower
-    "$canopy" compare "$work/before" "$work/again" >"$work/rerun" 2>&1; rc=$?
+    "$canopy" compare "$work/before" "$work/again" --threshold $threshold >"$work/rerun" 2>&1; rc=$?
     cat "$work/rerun"
     [ $rc -eq 0 ] || fail "an unchanged rerun was flagged (exit $rc)"
-    ! grep -q REGRESSION "$work/rerun" || fail "an unchanged rerun shows a regression"
-    "$canopy" compare "$work/before" "$work/slower" >"$work/slowdown" 2>&1; rc=$?
+    ! grep -Eq "\| REGRESSION +\|" "$work/rerun" || fail "an unchanged rerun shows a regression"
+    "$canopy" compare "$work/before" "$work/slower" --threshold $threshold >"$work/slowdown" 2>&1; rc=$?
     cat "$work/slowdown"
     [ $rc -eq 1 ] || fail "the injected slowdown was not flagged (exit $rc)"
-    [ "$(grep -c REGRESSION "$work/slowdown")" -eq 2 ] || fail "expected exactly the 2 $ballast_technique cases flagged"
-    grep REGRESSION "$work/slowdown" | grep -vq "$ballast_technique" && fail "a case without the slowdown was flagged"
+    [ "$(grep -Ec "\| REGRESSION +\|" "$work/slowdown")" -eq 2 ] || fail "expected exactly the 2 $ballast_technique cases flagged"
+    grep -E "\| REGRESSION +\|" "$work/slowdown" | grep -vq "$ballast_technique" && fail "a case without the slowdown was flagged"
     grep -q "test_ballast: none -> $ballast_technique=$ballast_iterations" "$work/slowdown" \
       || fail "the report does not name the difference between the runs"
-    # The slowdown must be large against the noise: at least 3 x the threshold (5 %) and 3 x the
+    # The slowdown must be large against the noise: at least 3 x the threshold and 3 x the
     # largest change the rerun showed for any case.
-    python3 - "$work" <<'PY' || fail "the injected slowdown is too small to be a fair test"
+    python3 - "$work" "${threshold%\%}" <<'PY' || fail "the injected slowdown is too small to be a fair test"
 import json, statistics, sys
-work = sys.argv[1]
+work, threshold = sys.argv[1], float(sys.argv[2]) / 100
 load = lambda name: {c["id"]: c for c in json.load(open(f"{work}/{name}/results.json"))["cases"]}
 before, again, slower = load("before"), load("again"), load("slower")
 spread = max(abs(again[i]["ratio"]["median"] / c["ratio"]["median"] - 1)
@@ -64,7 +68,7 @@ for c in slower.values():
         continue
     added = passes["test_ballast"] / (c["timing"]["gpu_frame"]["stats_ms"]["median"] - passes["test_ballast"])
     print(f"{c['id']}: +{100 * added:.0f} % injected; largest change in the rerun {100 * spread:.1f} %")
-    assert added >= 3 * max(0.05, spread), (added, spread)
+    assert added >= 3 * max(threshold, spread), (added, spread)
 PY
     ;;
 
