@@ -297,8 +297,11 @@ int run(const RunCommand& command, const ReferenceOptions& reference_options) {
 
     fmt::print("{}\n", console_table(record));
     fmt::print("results: {}\n", fs::absolute(options.out_dir).string());
-    fmt::print("  results.json, results.csv, results.md (every column){}; images in images/ (EXR linear, PNG sRGB)\n",
-               experiment.paper ? ", paper.md" : "");
+    const char* images = options.images == ImageOutput::all   ? "; images in images/ (EXR linear, PNG sRGB)"
+                         : options.images == ImageOutput::png ? "; images in images/ (PNG sRGB)"
+                                                              : "";
+    fmt::print("  results.json, results.csv, results.md (every column), results.gbench.json{}{}\n",
+               experiment.paper ? ", paper.md" : "", images);
     if (experiment.paper) {
         fmt::print("\n{} ({}): claims\n", experiment.paper->id, experiment.paper->source);
         for (const ClaimVerdict& v : judge_claims(*experiment.paper, record))
@@ -412,7 +415,7 @@ int main(int argc, char** argv) {
     bench_scaling_cmd->add_option("scene", scaling.scene_file, default_scene_doc);
     bench_scaling_cmd->add_option("--width", scaling.width, "image width")->capture_default_str()->check(CLI::Range(1, 8192));
     bench_scaling_cmd->add_option("--height", scaling.height, "image height")->capture_default_str()->check(CLI::Range(1, 8192));
-    bench_scaling_cmd->add_option("--measured", scaling.measured, "measured frames per point")
+    bench_scaling_cmd->add_option("--measured", scaling.measured, "measured rounds per point (each width of a technique renders one frame per round, interleaved)")
         ->capture_default_str()
         ->check(CLI::Range(1, 1000000));
     bench_scaling_cmd->add_option("--out", out_dir, "also write the Markdown report to this file");

@@ -1,12 +1,14 @@
 #include "run/kernel_scaling.hpp"
 
 #include "config/scene_config.hpp"
-#include "render/frame_renderer.hpp"
+#include "gpu/context.hpp"
+#include "run/group_measurement.hpp"
 #include "run/recorded_path.hpp"
 #include "run/statistics.hpp"
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -90,26 +92,45 @@ std::vector<ScalingSeries> run_kernel_scaling(const TechniqueRegistry& registry,
         const Technique* technique = registry.find(sweep.technique);
         if (!technique) continue;
         ScalingSeries s{sweep.technique, sweep.parameter, sweep.passes, {}, {}, {}, {}, sweep.expected};
+        // A technique's widths are measured together, round by round (run/group_measurement.hpp), so
+        // a change of the machine's load falls on every width alike instead of bending the curve.
+        std::vector<Case> cases;
         for (long long width : sweep.widths) {
             auto given = sweep.fixed;
             given[sweep.parameter] = width;
-            const ParamSet params = ParamSet::resolve(technique->params(), given, {}, {}, sweep.technique);
-            if (options.show_progress)
-                fmt::print(stderr, "scaling: {} {}={}\n", sweep.technique, sweep.parameter, width);
-            FrameRenderer renderer(gpu, scene, meshes, uint32_t(options.width), uint32_t(options.height),
-                                   technique->plan(params));
-            for (int i = 0; i < options.warmup; ++i) renderer.render();
-            std::vector<double> samples;
-            for (int i = 0; i < options.measured; ++i) {
-                const FrameTiming t = renderer.render();
-                double sum = 0;
-                for (size_t p = 0; p < t.pass_gpu_ms.size(); ++p)
-                    for (const auto& name : sweep.passes)
-                        if (renderer.pass_names()[p] == name) sum += t.pass_gpu_ms[p];
-                samples.push_back(sum);
-            }
+            Case c;
+            c.technique = sweep.technique;
+            c.resolution = {options.width, options.height};
+            c.params = ParamSet::resolve(technique->params(), given, {}, {}, sweep.technique);
+            c.id = fmt::format("{}_{}-{}", sweep.technique, sweep.parameter, width);
+            cases.push_back(std::move(c));
+        }
+        GroupInput input;
+        input.name = fmt::format("{} {}x{}", scene.name, options.width, options.height);
+        input.scene = &scene;
+        input.meshes = &meshes;
+        for (const Case& c : cases) input.cases.push_back({&c, technique, 0});
+        MeasurementSettings settings;
+        settings.warmup_frames = options.warmup;
+        settings.rounds = options.measured;
+        GroupCallbacks callbacks;
+        if (options.show_progress)
+            callbacks.round_started = [&](size_t, size_t widths, int round, int rounds) {
+                fmt::print(stderr, "scaling: {}, {} widths interleaved, round {}/{}\n", sweep.technique, widths, round,
+                           rounds);
+            };
+        const std::optional<MeasuredGroup> measured = measure_group(gpu, input, settings, ChunkLimits{}, callbacks);
+        if (!measured) break;  // interrupted
+        for (size_t k = 0; k < cases.size(); ++k) {
+            const CaseResult& result = measured->cases[k];
+            if (!result.ok) throw GpuError(fmt::format("{}: {}", result.id, result.error));
+            // Per round, the sum of the passes the kernel affects.
+            std::vector<double> samples(result.gpu_frame.samples_ms.size(), 0.0);
+            for (const TimingSeries& pass : result.passes)
+                if (std::find(sweep.passes.begin(), sweep.passes.end(), pass.name) != sweep.passes.end())
+                    for (size_t i = 0; i < samples.size() && i < pass.samples_ms.size(); ++i) samples[i] += pass.samples_ms[i];
             const SampleStats stats = summarize(samples);
-            s.widths.push_back(double(width));
+            s.widths.push_back(double(sweep.widths[k]));
             s.median_ms.push_back(stats.median);
             s.mad_ms.push_back(stats.mad);
         }
@@ -124,8 +145,9 @@ std::string kernel_scaling_report(const std::vector<ScalingSeries>& series, cons
     std::string out = "# Kernel-size scaling\n\n";
     out += fmt::format("Time of the passes a kernel affects against its width, fitted as t = a + b·width^p "
                        "(least squares over p in [0.2, 3.5], a ≥ 0 and b linear). Separable filters should give p ≈ 1, "
-                       "K×K kernels (PCF, PCSS) p ≈ 2. Scene `{}` at {}x{}, {} warm-up + {} measured frames per "
-                       "point; canopy {} on {} ({}), nproc {}, LP_NUM_THREADS {}, commit {}{}.\n\n",
+                       "K×K kernels (PCF, PCSS) p ≈ 2. Scene `{}` at {}x{}; per technique, every width renders {} "
+                       "warm-up frames, then {} rounds in which each width renders one frame in turn (interleaved, "
+                       "the median over the rounds is the point); canopy {} on {} ({}), nproc {}, LP_NUM_THREADS {}, commit {}{}.\n\n",
                        recorded_path(options.scene_file), options.width, options.height, options.warmup, options.measured,
                        e.canopy_version, e.device.name, e.device.driver_info, e.nproc, e.lp_num_threads, e.git_commit,
                        e.git_dirty ? " (with uncommitted changes)" : "");
