@@ -33,7 +33,7 @@ struct ScalingSeries {
 struct ScalingOptions {
     std::string scene_file;
     int width = 640, height = 360;
-    int warmup = 2, measured = 7;
+    int warmup = 2, measured = 30;  // rounds: every width of a technique renders one frame per round
     bool show_progress = true;
 };
 
