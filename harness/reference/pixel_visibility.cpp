@@ -2,23 +2,20 @@
 
 #include "reference/light_integrator.hpp"
 #include "reference/light_sampling.hpp"
-#include "reference/parallel_for.hpp"
 #include "reference/primary_hit.hpp"
 #include "reference/sample_patterns.hpp"
+#include "reference/tiled_trace.hpp"
 #include "scene/camera.hpp"
 
 #include <fmt/format.h>
 
-#include <atomic>
 #include <chrono>
-#include <mutex>
 #include <stdexcept>
 
 namespace canopy {
 
 namespace {
 
-constexpr int kTileSize = 16;
 constexpr uint64_t kSampleDomain = 0x5c3e7e4du;  // keeps these samples apart from the radiance reference's
 
 }  // namespace
@@ -42,42 +39,23 @@ PixelVisibilityRender render_pixel_visibility(const Scene& scene, const EmbreeSc
 
     PixelVisibilityRender result;
     result.visibility = Image(width, height);
-    const int tiles_x = (width + kTileSize - 1) / kTileSize;
-    const int tiles_y = (height + kTileSize - 1) / kTileSize;
-    const size_t tile_count = size_t(tiles_x) * size_t(tiles_y);
-    std::atomic<uint64_t> shadow_rays{0};
-    size_t tiles_done = 0;
-    std::mutex progress_mutex;
-
-    parallel_for(tile_count, settings.threads, [&](size_t tile, int) {
-        const int x0 = int(tile % size_t(tiles_x)) * kTileSize, y0 = int(tile / size_t(tiles_x)) * kTileSize;
-        const int x1 = std::min(x0 + kTileSize, width), y1 = std::min(y0 + kTileSize, height);
-        EmbreeShadowTracer tracer(embree.shadow_scene());
-        for (int y = y0; y < y1; ++y) {
-            for (int x = x0; x < x1; ++x) {
-                float* out = result.visibility.at(x, y);
-                const Ray ray = primary_ray(camera, width, height, float(x) + settings.position_in_pixel_x,
-                                            float(y) + settings.position_in_pixel_y);
-                const std::optional<PrimaryHit> hit = trace_primary(embree, camera, forward, ray);
-                out[pv::kVisibility] = pv::kNotLit;
-                if (!hit) continue;  // background: depth 0, no surface
-                out[pv::kViewDepth] = hit->view_depth;
-                out[pv::kSurface] = 1.0f;
-                if (!light) continue;
-                const uint64_t pixel = uint64_t(y) * uint64_t(width) + uint64_t(x);
-                const LightEstimate estimate =
-                    integrate_light(*light, hit->surface, random_key(settings.seed, kSampleDomain, pixel), false, tracer);
-                out[pv::kVisibility] = estimate.weighted_visibility >= 0.0f ? estimate.weighted_visibility : pv::kNotLit;
-            }
-        }
-        shadow_rays += tracer.rays();
-        if (progress) {
-            std::lock_guard lock(progress_mutex);  // serialised and monotonic
-            progress(double(++tiles_done) / double(tile_count));
-        }
+    result.shadow_rays = trace_tiles(width, height, settings.threads, embree.shadow_scene(), progress,
+                                     [&](int x, int y, EmbreeShadowTracer& tracer) {
+        float* out = result.visibility.at(x, y);
+        const Ray ray = primary_ray(camera, width, height, float(x) + settings.position_in_pixel_x,
+                                    float(y) + settings.position_in_pixel_y);
+        const std::optional<PrimaryHit> hit = trace_primary(embree, camera, forward, ray);
+        out[pv::kVisibility] = pv::kNotLit;
+        if (!hit) return;  // background: depth 0, no surface
+        out[pv::kViewDepth] = hit->view_depth;
+        out[pv::kSurface] = 1.0f;
+        if (!light) return;
+        const uint64_t pixel = uint64_t(y) * uint64_t(width) + uint64_t(x);
+        const LightEstimate estimate =
+            integrate_light(*light, hit->surface, random_key(settings.seed, kSampleDomain, pixel), false, tracer);
+        out[pv::kVisibility] = estimate.weighted_visibility >= 0.0f ? estimate.weighted_visibility : pv::kNotLit;
     });
 
-    result.shadow_rays = shadow_rays;
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;
 }

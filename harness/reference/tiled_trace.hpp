@@ -1,0 +1,19 @@
+// The loop both reference images share: the image in 16x16 tiles spread over threads, each tile
+// with its own shadow-ray tracer (packets are per thread), progress reported once per finished
+// tile, serialised and monotonic.
+#pragma once
+
+#include "reference/shadow_packet.hpp"
+
+#include <cstdint>
+#include <functional>
+
+namespace canopy {
+
+// Calls `pixel(x, y, tracer)` once for every pixel of a width x height image, on `threads`
+// threads (0: every hardware thread). Returns the shadow rays the tracers traced.
+uint64_t trace_tiles(int width, int height, int threads, RTCScene shadow_scene,
+                     const std::function<void(double fraction_done)>& progress,
+                     const std::function<void(int x, int y, EmbreeShadowTracer& tracer)>& pixel);
+
+}  // namespace canopy
