@@ -166,6 +166,10 @@ void check_every_metric_everywhere() {
         CHECK(columns.insert(std::string(metric.column)).second);
         CHECK_FALSE(metric.doc.empty());
         CHECK_FALSE(metric.title.empty());
+        // Nothing that would split a Markdown cell or a CSV column.
+        for (std::string_view text : {metric.name, metric.claim, metric.column, metric.title, metric.unit, metric.doc})
+            CHECK(text.find('|') == std::string_view::npos);
+        CHECK(name.find_first_of(",\" ") == std::string::npos);
         CHECK(find_metric(name) == &metric);
         CHECK(find_claim_metric(metric.claim) == &metric);
 

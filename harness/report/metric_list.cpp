@@ -24,7 +24,7 @@ std::string metric_list() {
     for (const MetricInfo& m : registered_metrics())
         rows.push_back({std::string(m.name), std::string(m.claim), std::string(m.column), m.unit.empty() ? "-" : std::string(m.unit),
                         to_string(m.better), std::string(group_info(m.group).key.empty() ? "whole_image" : group_info(m.group).key),
-                        fmt::format("{:g} + {:g} x |baseline|", m.tolerance.absolute, m.tolerance.relative),
+                        fmt::format("{:g} + {:g} x abs(baseline)", m.tolerance.absolute, m.tolerance.relative),
                         shown_where(m), std::string(m.doc)});
     std::string out = render_table({"results.json / csv", "[paper] claim", "column", "unit", "better", "group",
                                     "compare tolerance", "shown in", "meaning"},
