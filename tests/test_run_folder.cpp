@@ -166,7 +166,7 @@ TEST_CASE("a run's identity: what differs is named, field by field") {
     REQUIRE(quick.size() == 3);
     CHECK(quick[0] == "quick: the folder's run has 'true', this one 'false'");
     CHECK(quick[1] == "warmup_frames: the folder's run has '1', this one '5'");
-    CHECK(quick[2] == "rounds: the folder's run has '3', this one '20'");
+    CHECK(quick[2] == "rounds: the folder's run has '3', this one '30'");
     const auto two = identity_differences(identity(true, ImageOutput::png, "aaaa"), identity(true, ImageOutput::all));
     REQUIRE(two.size() == 2);
     CHECK(two[0].find("config_hash") == 0);
