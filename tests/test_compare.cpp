@@ -1,6 +1,7 @@
 // `canopy compare` on recorded samples (run/run_comparison.hpp): synthetic per-round ratios with a
 // known shift must be flagged, the same ratios with fresh noise and no shift must not, and the
 // bookkeeping around them (one-sided cases, refusals, error tolerances) must say what happened.
+#include "metrics/metric_registry.hpp"
 #include "report/comparison_report.hpp"
 #include "run/run_comparison.hpp"
 
@@ -173,9 +174,9 @@ TEST_CASE("runs of other experiments or configs are refused; other commits are c
 
 TEST_CASE("error metrics: within tolerance passes, beyond it is flagged; NaN only matches NaN") {
     RunRecord before = suite(1000), after = suite(2000);
-    const MetricTolerance& rmse = error_tolerances()[1];
-    REQUIRE(rmse.name == "rmse");
-    const double allowed = rmse.absolute + rmse.relative * 0.02;
+    const MetricInfo* rmse = find_metric("rmse");
+    REQUIRE(rmse);
+    const double allowed = rmse->tolerance.absolute + rmse->tolerance.relative * 0.02;
     after.cases[2].image_error->rmse = 0.02 + 0.5 * allowed;
     CHECK(compare_runs(before, after, {}).passed());
     after.cases[2].image_error->rmse = 0.02 + 2.0 * allowed;

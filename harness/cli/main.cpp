@@ -16,6 +16,7 @@
 #include "report/comparison_report.hpp"
 #include "report/console_table.hpp"
 #include "report/json_record_reader.hpp"
+#include "report/metric_list.hpp"
 #include "run/run_comparison.hpp"
 #include "run/stability_bench.hpp"
 #include "report/stability_report.hpp"
@@ -386,8 +387,8 @@ int main(int argc, char** argv) {
                     "absolute-error heat map and a FLIP map with colour bars, plus the reference images. Errors:\n"
                     "whole-image (RMSE, PSNR, SSIM, FLIP: how far the image is from the truth) and technique-isolated\n"
                     "(visibility RMSE/MAE: how wrong the technique's shadow is, at the same pixel centres as a\n"
-                    "1024-light-sample reference). The reference's sample counts come from the experiment's\n"
-                    "[reference] table; references are cached by content.\n"
+                    "1024-light-sample reference); `canopy metrics` lists them all. The reference's sample counts\n"
+                    "come from the experiment's [reference] table; references are cached by content.\n"
                     "Output folder: a new or empty one starts a run; one holding a run of the same experiment, config\n"
                     "(content hash), options (--quick, --images, --no-reference), measurement settings, device, build\n"
                     "and thread count continues it, keeping its finished groups; anything else, and results/paper/ or\n"
@@ -438,8 +439,8 @@ int main(int argc, char** argv) {
         "Cases are matched by id; cases in one run only are listed. Time: per case, the relative change of its time\n"
         "ratio to its group's baseline (both measured in the same rounds), candidate / baseline - 1, with a 95 %\n"
         "interval from resampling each run's rounds (block bootstrap). Errors: every metric within |change| <=\n"
-        "absolute + relative x |baseline| (tolerances in the README). Runs of different experiments or configs are\n"
-        "refused (exit 2); different commits, devices or builds are compared and named.\n"
+        "absolute + relative x |baseline| (each metric's tolerance: `canopy metrics`). Runs of different\n"
+        "experiments or configs are refused (exit 2); different commits, devices or builds are compared and named.\n"
         "Exit codes: 0 nothing flagged, 1 a regression, an error out of tolerance or a case that failed only in\n"
         "the candidate, 2 bad input.");
 
@@ -471,6 +472,9 @@ int main(int argc, char** argv) {
 
     CLI::App* list_cmd = app.add_subcommand("list", "List every technique with its parameters (type, range, default).");
     CLI::App* devices_cmd = app.add_subcommand("devices", "List the Vulkan devices canopy can run on.");
+    CLI::App* metrics_cmd = app.add_subcommand(
+        "metrics", "List every error metric: its names in results and [paper] claims, unit, better direction, group, "
+                   "compare tolerance.");
 
     try {
         app.parse(argc, argv);
@@ -482,6 +486,10 @@ int main(int argc, char** argv) {
     try {
         if (*list_cmd) return list_techniques();
         if (*devices_cmd) return list_devices();
+        if (*metrics_cmd) {
+            fmt::print("{}", metric_list());
+            return kExitOk;
+        }
         if (*run_cmd) {
             RunCommand command;
             command.config = config_path;

@@ -28,11 +28,10 @@ struct PaperRow {
 struct PaperClaim {
     std::string text;        // the paper's claim in words
     std::string left, right; // row labels
-    // "time" (GPU median ms) or an error metric: rmse, psnr, ssim, flip (whole image); bleeding,
-    // over_darkening, penumbra_rmse (shadow regions); visibility_rmse, visibility_mae,
-    // visibility_penumbra_rmse (technique-isolated).
+    // "time" (GPU median ms) or a registered metric's claim name (metrics/metric_registry.hpp,
+    // `canopy metrics`).
     std::string metric = "time";
-    std::string relation = "less";  // less | greater | about
+    std::string relation = "less";  // less | greater | about ("better" in the config is read as less or greater)
     double tolerance = 0.15; // about: |left/right - 1| <= tolerance
     std::string column;      // only this column ("" = every column)
     SourceLocation where;

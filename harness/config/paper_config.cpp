@@ -1,5 +1,7 @@
 #include "config/paper_config.hpp"
 
+#include "metrics/metric_registry.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -10,10 +12,9 @@ namespace canopy {
 
 namespace {
 
-const std::vector<std::string> kMetrics = {"time",          "rmse",           "psnr",           "ssim",
-                                           "flip",          "bleeding",       "over_darkening", "penumbra_rmse",
-                                           "visibility_rmse", "visibility_mae", "visibility_penumbra_rmse"};
-const std::vector<std::string> kRelations = {"less", "greater", "about"};
+// "better": left is better than right in the metric's direction (metrics/metric_registry.hpp),
+// read as "less" or "greater".
+const std::vector<std::string> kRelations = {"less", "greater", "about", "better"};
 
 std::string one_of(TomlReader& reader, std::string_view key, const std::string& fallback,
                    const std::vector<std::string>& allowed) {
@@ -102,8 +103,9 @@ PaperComparison read_paper(TomlReader& section, const TechniqueRegistry& registr
         claim.right = r.require_string("right", "right = \"Chebyshev\"");
         check_row(r, "left", claim.left);
         check_row(r, "right", claim.right);
-        claim.metric = one_of(r, "metric", "time", kMetrics);
+        claim.metric = one_of(r, "metric", std::string(kTimeClaim), claim_metric_names());
         claim.relation = one_of(r, "relation", "less", kRelations);
+        if (claim.relation == "better") claim.relation = claim_metric_better(claim.metric) == Better::lower ? "less" : "greater";
         claim.tolerance = r.get_float("tolerance", claim.tolerance);
         if (claim.tolerance < 0) throw r.error("tolerance", "'tolerance' must not be negative", "tolerance = 0.15");
         claim.column = r.get_string("column", "");

@@ -9,13 +9,12 @@
 
 namespace canopy {
 
+// Which metric belongs to which group: metrics/metric_registry.cpp (MetricGroup).
 struct ErrorColumns {
-    // visibility_mae, visibility_rmse, visibility_penumbra_rmse: the visibility the lit pass
-    // multiplied into the light's irradiance against the reference's at the same primary hits
-    // ("how wrong is the technique's shadow").
+    // The visibility the lit pass multiplied into the light's irradiance against the reference's
+    // at the same primary hits ("how wrong is the technique's shadow").
     bool visibility = false;
-    // light_bleeding, over_darkening, penumbra_rmse: luminance errors over the reference's umbra,
-    // lit and penumbra pixels.
+    // Luminance errors over the reference's umbra, lit and penumbra pixels.
     bool shadow_regions = false;
 
     bool operator==(const ErrorColumns&) const = default;

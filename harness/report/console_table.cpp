@@ -1,5 +1,6 @@
 #include "report/console_table.hpp"
 
+#include "metrics/metric_registry.hpp"
 #include "report/text_table.hpp"
 
 #include <fmt/format.h>
@@ -25,9 +26,12 @@ std::string console_table(const RunRecord& run) {
     const bool failures = std::any_of(run.cases.begin(), run.cases.end(), [](const CaseResult& c) { return !c.ok; });
     std::vector<std::string> header = {"technique", "parameters", "GPU ms", "ratio [95% CI]"};
     std::vector<bool> right = {false, false, true, true};
-    if (errors) {
-        header.insert(header.end(), {"PSNR dB", "FLIP", "penumbra RMSE", "V RMSE"});
-        right.insert(right.end(), {true, true, true, true});
+    std::vector<const MetricInfo*> metrics;  // the registered metrics the compact table shows
+    for (const MetricInfo& metric : registered_metrics())
+        if (errors && metric.shown_in(shown_in_console)) metrics.push_back(&metric);
+    for (const MetricInfo* metric : metrics) {
+        header.emplace_back(metric->column);
+        right.push_back(true);
     }
     if (failures) {
         header.push_back("status");
@@ -52,15 +56,7 @@ std::string console_table(const RunRecord& run) {
             c.technique, shortened(c.params_shown, kConsoleParametersWidth),
             timed ? fmt::format("{:.3f}", c.gpu_frame.stats.median) : "-",
             c.ok ? ratio_cell(c.ratio.estimate) : "-"};
-        if (errors) {
-            if (const auto& m = c.image_error) {
-                for (double v : {m->psnr, m->flip_mean}) row.push_back(metric_cell(v));
-                row.push_back(metric_cell(m->penumbra_rmse, m->columns.shadow_regions));
-                row.push_back(metric_cell(m->visibility_rmse, m->columns.visibility));
-            } else {
-                row.insert(row.end(), 4, "-");
-            }
-        }
+        for (const MetricInfo* metric : metrics) row.push_back(c.image_error ? table_cell(*metric, *c.image_error) : "-");
         if (failures) row.push_back(c.ok ? "ok" : "FAILED");
         rows.push_back(std::move(row));
     }

@@ -1,10 +1,12 @@
 #include "report/csv_report.hpp"
 
+#include "metrics/metric_registry.hpp"
 #include "report/atomic_file.hpp"
 
 #include <fmt/format.h>
 
 #include <set>
+#include <span>
 
 namespace canopy {
 
@@ -33,9 +35,10 @@ std::string csv_report(const RunRecord& run) {
     std::string out = "id,scene,technique,params,width,height,ok,gpu_ms_median,gpu_ms_min,gpu_ms_mean,gpu_ms_mad,gpu_cv,"
                       "wall_ms_median,wall_ms_mad,wall_cv,cpu_ms_median,ratio,ratio_ci95_low,ratio_ci95_high,rounds,frames_per_sample";
     for (const auto& name : pass_names) out += fmt::format(",{0}_gpu_ms_median,{0}_gpu_ms_mad", name);
-    out += ",technique_memory_bytes,target_memory_bytes,scene_memory_bytes,triangles,shadow_sampler,nonfinite_pixels,"
-           "mae,rmse,psnr_db,max_error,ssim,flip_mean,flip_weighted_median,light_bleeding,over_darkening,penumbra_rmse,"
-           "visibility_mae,visibility_rmse,visibility_penumbra_rmse,visibility_excluded,device,commit\n";
+    out += ",technique_memory_bytes,target_memory_bytes,scene_memory_bytes,triangles,shadow_sampler,nonfinite_pixels";
+    const std::span<const MetricInfo> metrics = registered_metrics();
+    for (const MetricInfo& metric : metrics) out += fmt::format(",{}", metric.name);
+    out += ",device,commit\n";
     for (const auto& c : run.cases) {
         out += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}", quoted(c.id), quoted(c.scene), quoted(c.technique),
                            quoted(c.params_summary), c.resolution.width, c.resolution.height, c.ok ? 1 : 0,
@@ -53,14 +56,9 @@ std::string csv_report(const RunRecord& run) {
         }
         out += fmt::format(",{},{},{},{},{},{}", c.memory.technique_bytes, c.memory.target_bytes, c.memory.scene_bytes,
                            c.triangles, quoted(c.shadow_sampler), c.nonfinite_pixels);
-        if (const auto& m = c.image_error) {
-            out += fmt::format(",{},{},{},{},{},{},{}", m->mae, m->rmse, m->psnr, m->max_error, m->ssim, m->flip_mean,
-                               m->flip_median_weighted);
-            for (double v : {m->light_bleeding, m->over_darkening, m->penumbra_rmse}) out += value_or_na(v, m->columns.shadow_regions);
-            for (double v : {m->visibility_mae, m->visibility_rmse, m->visibility_penumbra_rmse, m->visibility_excluded})
-                out += value_or_na(v, m->columns.visibility);
-        } else {
-            out += ",,,,,,,,,,,,,,";
+        for (const MetricInfo& metric : metrics) {
+            const auto& m = c.image_error;
+            out += m ? value_or_na((*m).*metric.value, group_declared(metric.group, m->columns)) : std::string(",");
         }
         out += fmt::format(",{},{}\n", quoted(run.environment.device.name), quoted(run.environment.git_commit));
     }

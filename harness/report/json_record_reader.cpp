@@ -1,5 +1,6 @@
 #include "report/json_record_reader.hpp"
 
+#include "metrics/metric_registry.hpp"
 #include "report/json_report.hpp"
 
 #include <fmt/format.h>
@@ -43,32 +44,25 @@ ParamValue read_param(const json& j) {
     return j.get<std::string>();
 }
 
+// Every registered metric and count (metrics/metric_registry.hpp). A metric added to canopy after
+// the file was written is missing from it and reads as NaN: not measured.
 ImageMetrics read_error(const json& j) {
     ImageMetrics m{};
-    m.mae = metric(j.at("mae"));
-    m.rmse = metric(j.at("rmse"));
-    m.psnr = j.at("psnr_infinite").get<bool>() ? std::numeric_limits<double>::infinity() : metric(j.at("psnr_db"));
-    m.max_error = metric(j.at("max_error"));
+    for (const MetricInfo& info : registered_metrics()) {
+        const std::string name(info.name);
+        if (!info.infinite_key.empty() && j.value(std::string(info.infinite_key), false))
+            m.*info.value = std::numeric_limits<double>::infinity();
+        else
+            m.*info.value = j.contains(name) ? metric(j.at(name)) : kNaN;
+    }
+    for (const MetricCountInfo& count : registered_metric_counts()) {
+        const std::string name(count.name);
+        m.*count.value = j.contains(name) ? j.at(name).get<long long>() : 0;
+    }
     m.max_x = j.at("max_error_pixel").at(0).get<int>();
     m.max_y = j.at("max_error_pixel").at(1).get<int>();
-    m.ssim = metric(j.at("ssim"));
-    m.flip_mean = metric(j.at("flip_mean"));
-    m.flip_median_weighted = metric(j.at("flip_weighted_median"));
-    m.nonfinite_pixels = j.at("nonfinite_pixels").get<long long>();
-    m.light_bleeding = metric(j.at("light_bleeding"));
-    m.over_darkening = metric(j.at("over_darkening"));
-    m.penumbra_rmse = metric(j.at("penumbra_rmse"));
-    m.umbra_pixels = j.at("umbra_pixels").get<long long>();
-    m.lit_pixels = j.at("lit_pixels").get<long long>();
-    m.penumbra_pixels = j.at("penumbra_pixels").get<long long>();
-    m.visibility_mae = metric(j.at("visibility_mae"));
-    m.visibility_rmse = metric(j.at("visibility_rmse"));
-    m.visibility_penumbra_rmse = metric(j.at("visibility_penumbra_rmse"));
-    m.visibility_pixels = j.at("visibility_pixels").get<long long>();
-    m.visibility_penumbra_pixels = j.at("visibility_penumbra_pixels").get<long long>();
-    m.visibility_excluded = metric(j.at("visibility_excluded"));
-    m.columns.visibility = j.at("columns").at("visibility").get<bool>();
-    m.columns.shadow_regions = j.at("columns").at("shadow_regions").get<bool>();
+    for (const MetricGroupInfo& group : metric_groups())
+        if (group.declared) m.columns.*group.declared = j.at("columns").at(std::string(group.key)).get<bool>();
     return m;
 }
 

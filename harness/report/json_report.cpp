@@ -1,5 +1,6 @@
 #include "report/json_report.hpp"
 
+#include "metrics/metric_registry.hpp"
 #include "report/atomic_file.hpp"
 
 #include <nlohmann/json.hpp>
@@ -26,31 +27,22 @@ nlohmann::json series_json(const TimingSeries& t) {
 // NaN (not applicable) and infinities (PSNR of identical images) become null in JSON.
 nlohmann::json metric(double value) { return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr); }
 
+// Every registered metric and count (metrics/metric_registry.hpp) under its name, and the
+// groups the technique declares meaningful (the others are null and read "n/a").
 nlohmann::json error_json(const ImageMetrics& m) {
-    return {{"mae", metric(m.mae)},
-            {"rmse", metric(m.rmse)},
-            {"psnr_db", metric(m.psnr)},
-            {"psnr_infinite", std::isinf(m.psnr) && m.psnr > 0},
-            {"max_error", metric(m.max_error)},
-            {"max_error_pixel", {m.max_x, m.max_y}},
-            {"ssim", metric(m.ssim)},
-            {"flip_mean", metric(m.flip_mean)},
-            {"flip_weighted_median", metric(m.flip_median_weighted)},
-            {"nonfinite_pixels", m.nonfinite_pixels},
-            {"light_bleeding", metric(m.light_bleeding)},
-            {"over_darkening", metric(m.over_darkening)},
-            {"penumbra_rmse", metric(m.penumbra_rmse)},
-            {"umbra_pixels", m.umbra_pixels},
-            {"lit_pixels", m.lit_pixels},
-            {"penumbra_pixels", m.penumbra_pixels},
-            {"visibility_mae", metric(m.visibility_mae)},
-            {"visibility_rmse", metric(m.visibility_rmse)},
-            {"visibility_penumbra_rmse", metric(m.visibility_penumbra_rmse)},
-            {"visibility_pixels", m.visibility_pixels},
-            {"visibility_penumbra_pixels", m.visibility_penumbra_pixels},
-            {"visibility_excluded", metric(m.visibility_excluded)},
-            // The groups the technique declares meaningful; the others are null and read "n/a".
-            {"columns", {{"visibility", m.columns.visibility}, {"shadow_regions", m.columns.shadow_regions}}}};
+    nlohmann::json j = nlohmann::json::object();
+    for (const MetricInfo& info : registered_metrics()) {
+        const double value = m.*info.value;
+        j[std::string(info.name)] = metric(value);
+        if (!info.infinite_key.empty()) j[std::string(info.infinite_key)] = std::isinf(value) && value > 0;
+    }
+    for (const MetricCountInfo& count : registered_metric_counts()) j[std::string(count.name)] = m.*count.value;
+    j["max_error_pixel"] = {m.max_x, m.max_y};  // where max_error is: a place, not a metric
+    nlohmann::json columns = nlohmann::json::object();
+    for (const MetricGroupInfo& group : metric_groups())
+        if (group.declared) columns[std::string(group.key)] = m.columns.*group.declared;
+    j["columns"] = columns;
+    return j;
 }
 
 nlohmann::json reference_json(const ReferenceRecord& r) {

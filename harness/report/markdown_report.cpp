@@ -1,5 +1,6 @@
 #include "report/markdown_report.hpp"
 
+#include "metrics/metric_registry.hpp"
 #include "report/atomic_file.hpp"
 #include "report/text_table.hpp"
 
@@ -21,12 +22,12 @@ std::string markdown_table(const RunRecord& run) {
                                        "CV %",  "ratio",      "wall ms",   "passes (GPU ms)", "memory MiB"};
     std::vector<bool> right = {false, false, false, false, true, true, true, true, true, false, true};
     const bool errors = std::any_of(run.cases.begin(), run.cases.end(), [](const CaseResult& c) { return c.image_error.has_value(); });
-    if (errors) {
-        for (const char* column : {"RMSE", "PSNR dB", "SSIM", "FLIP", "bleeding", "over-dark", "penumbra RMSE",
-                                   "V RMSE", "V MAE", "V penumbra RMSE", "V excluded %"}) {
-            header.push_back(column);
-            right.push_back(true);
-        }
+    std::vector<const MetricInfo*> metrics;  // the registered metrics results.md shows
+    for (const MetricInfo& metric : registered_metrics())
+        if (errors && metric.shown_in(shown_in_markdown)) metrics.push_back(&metric);
+    for (const MetricInfo* metric : metrics) {
+        header.emplace_back(metric->column);
+        right.push_back(true);
     }
     header.push_back("status");
     right.push_back(false);
@@ -44,17 +45,7 @@ std::string markdown_table(const RunRecord& run) {
             c.ok ? ratio_cell(c.ratio.estimate) : "-",
             timed ? fmt::format("{:.3f}", c.wall.stats.median) : "-", passes.empty() ? "-" : passes,
             mib(c.memory.technique_bytes)};
-        if (errors) {
-            if (const auto& m = c.image_error) {
-                for (double v : {m->rmse, m->psnr, m->ssim, m->flip_mean}) row.push_back(metric_cell(v));
-                for (double v : {m->light_bleeding, m->over_darkening, m->penumbra_rmse})
-                    row.push_back(metric_cell(v, m->columns.shadow_regions));
-                for (double v : {m->visibility_rmse, m->visibility_mae, m->visibility_penumbra_rmse, 100.0 * m->visibility_excluded})
-                    row.push_back(metric_cell(v, m->columns.visibility));
-            } else {
-                row.insert(row.end(), 11, "-");
-            }
-        }
+        for (const MetricInfo* metric : metrics) row.push_back(c.image_error ? table_cell(*metric, *c.image_error) : "-");
         row.push_back(c.ok ? "ok" : "FAILED: " + c.error);
         rows.push_back(std::move(row));
     }

@@ -1,5 +1,6 @@
 #include "report/paper_report.hpp"
 
+#include "metrics/metric_registry.hpp"
 #include "report/atomic_file.hpp"
 #include "report/text_table.hpp"
 #include "run/case_ratio.hpp"
@@ -53,22 +54,19 @@ double paper_time(const PaperComparison& paper, const PaperRow& row, size_t colu
     return paper.unit == "fps" ? 1000.0 / v : v;
 }
 
-double metric_of(const CaseResult& c, const std::string& metric) {
-    if (metric == "time") return c.gpu_frame.stats.median;
-    if (!c.image_error) return kNaN;
-    const ImageMetrics& m = *c.image_error;
-    if (metric == "rmse") return m.rmse;
-    if (metric == "psnr") return m.psnr;
-    if (metric == "ssim") return m.ssim;
-    if (metric == "flip") return m.flip_mean;
-    // A column the technique does not declare meaningful (ErrorColumns) judges nothing.
-    if (metric == "bleeding") return m.columns.shadow_regions ? m.light_bleeding : kNaN;
-    if (metric == "over_darkening") return m.columns.shadow_regions ? m.over_darkening : kNaN;
-    if (metric == "penumbra_rmse") return m.columns.shadow_regions ? m.penumbra_rmse : kNaN;
-    if (metric == "visibility_rmse") return m.columns.visibility ? m.visibility_rmse : kNaN;
-    if (metric == "visibility_mae") return m.columns.visibility ? m.visibility_mae : kNaN;
-    if (metric == "visibility_penumbra_rmse") return m.columns.visibility ? m.visibility_penumbra_rmse : kNaN;
-    return kNaN;
+// "time" (the GPU median) or a registered metric's claim name; NaN where the technique does not
+// declare the metric's group meaningful (ErrorColumns): such a column judges nothing.
+double metric_of(const CaseResult& c, const std::string& claim) {
+    if (claim == kTimeClaim) return c.gpu_frame.stats.median;
+    const MetricInfo* metric = find_claim_metric(claim);
+    if (!metric || !c.image_error) return kNaN;
+    return metric->meaningful_value(*c.image_error);
+}
+
+// "PSNR (dB; whole image; higher is better)"
+std::string table_title(const MetricInfo& metric) {
+    return fmt::format("{} ({}{}; {} is better)", metric.title, metric.unit.empty() ? "" : fmt::format("{}; ", metric.unit),
+                       group_info(metric.group).description, to_string(metric.better));
 }
 
 std::string number(double v, const char* spec = "{:.3g}") {
@@ -103,7 +101,7 @@ std::vector<ClaimVerdict> judge_claims(const PaperComparison& paper, const RunRe
         std::string numbers;
         int measured = 0, holding = 0, failing = 0;
         size_t fewest_samples = std::numeric_limits<size_t>::max();
-        const bool timing = claim.metric == "time";
+        const bool timing = claim.metric == kTimeClaim;
         for (size_t col = 0; col < paper.columns.size(); ++col) {
             if (!claim.column.empty() && paper.columns[col] != claim.column) continue;
             const CaseResult* l = find_case(paper, run, *left, col);
@@ -236,20 +234,15 @@ std::string paper_report(const PaperComparison& paper, const RunRecord& run) {
     // Error against the ray-traced reference.
     const bool errors = !run.references.empty();
     if (errors) {
-        for (const auto& [metric, title] : std::vector<std::pair<std::string, std::string>>{
-                 {"psnr", "PSNR (dB, whole image, higher is better)"},
-                 {"flip", "FLIP (mean, whole image, lower is better)"},
-                 {"visibility_rmse", "visibility RMSE (the technique's shadow alone, at the same pixel centres as "
-                                     "the reference; lower is better)"},
-                 {"visibility_penumbra_rmse", "visibility RMSE in the penumbra (lower is better)"},
-                 {"bleeding", "light bleeding (mean excess luminance in full umbra, lower is better)"},
-                 {"penumbra_rmse", "penumbra RMSE (luminance, lower is better)"}}) {
+        for (const MetricInfo& metric : registered_metrics()) {
+            if (!metric.shown_in(shown_in_paper_tables)) continue;
+            const std::string claim(metric.claim), title = table_title(metric);
             std::vector<std::vector<std::string>> rows;
             for (const PaperRow& row : paper.rows) {
                 std::vector<std::string> cells{row.label};
                 for (size_t col = 0; col < paper.columns.size(); ++col) {
                     const CaseResult* mine = find_case(paper, run, row, col);
-                    cells.push_back(mine ? number(metric_of(*mine, metric), "{:.4g}") : "-");
+                    cells.push_back(mine ? number(metric_of(*mine, claim), "{:.4g}") : "-");
                 }
                 rows.push_back(cells);
             }
@@ -257,23 +250,18 @@ std::string paper_report(const PaperComparison& paper, const RunRecord& run) {
         }
         // The reference's own classes of pixels per column: how much umbra and penumbra there is.
         std::vector<std::vector<std::string>> classes;
-        for (const char* kind : {"umbra", "penumbra", "lit"}) {
-            std::vector<std::string> cells{kind};
+        for (const MetricCountInfo& count : registered_metric_counts()) {
+            if (count.label.empty()) continue;
+            std::vector<std::string> cells{std::string(count.label)};
             for (size_t col = 0; col < paper.columns.size(); ++col) {
                 const CaseResult* any = nullptr;
                 for (const PaperRow& row : paper.rows)
                     if (!any) any = find_case(paper, run, row, col);
-                if (!any || !any->image_error) {
-                    cells.push_back("-");
-                    continue;
-                }
-                const ImageMetrics& m = *any->image_error;
-                const std::string k = kind;
-                cells.push_back(std::to_string(k == "umbra" ? m.umbra_pixels : k == "penumbra" ? m.penumbra_pixels : m.lit_pixels));
+                cells.push_back(any && any->image_error ? std::to_string((*any->image_error).*count.value) : "-");
             }
             classes.push_back(cells);
         }
-        out += "## Reference: pixels in full umbra, penumbra (0 < V < 1) and fully lit\n\n" + table(header, classes) + "\n";
+        out += "## Reference: pixels in full umbra, fully lit and in penumbra (0 < V < 1)\n\n" + table(header, classes) + "\n";
         out += "The papers define no error metric: these are canopy's, against an Embree reference with the same "
                "shading model and the area light integrated. PSNR and FLIP say how far the image is from the truth "
                "(aliased silhouettes and shading included); the visibility RMSE says how wrong the technique's shadow "

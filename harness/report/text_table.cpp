@@ -57,6 +57,12 @@ std::string metric_cell(double value) {
 }
 
 std::string metric_cell(double value, bool meaningful) { return meaningful ? metric_cell(value) : "n/a"; }
+
+std::string table_cell(const MetricInfo& metric, const ImageMetrics& m) {
+    const double value = m.*metric.value;
+    return metric_cell(metric.percent ? 100.0 * value : value, group_declared(metric.group, m.columns));
+}
+
 std::string ratio_cell(const Estimate& ratio) {
     if (ratio.count == 0 || std::isnan(ratio.value)) return "-";
     return fmt::format("{:.2f} [{:.2f}, {:.2f}]", ratio.value, ratio.ci.low, ratio.ci.high);

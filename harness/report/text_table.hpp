@@ -1,6 +1,7 @@
 // Aligned Markdown tables, and the number formats every table of a run shares.
 #pragma once
 
+#include "metrics/metric_registry.hpp"
 #include "run/block_bootstrap.hpp"
 
 #include <string>
@@ -16,6 +17,8 @@ std::string render_table(const std::vector<std::string>& header, const std::vect
 std::string metric_cell(double value);
 // The same, or "n/a" where the technique does not declare the metric meaningful (ErrorColumns).
 std::string metric_cell(double value, bool meaningful);
+// A registered metric's cell: "n/a" outside the technique's declared groups, percent where it says so.
+std::string table_cell(const MetricInfo& metric, const ImageMetrics& m);
 
 // A time ratio and its 95 % interval, "1.93 [1.88, 1.99]"; "-" when not measured.
 std::string ratio_cell(const Estimate& ratio);

@@ -1,5 +1,7 @@
 #include "run/run_comparison.hpp"
 
+#include "metrics/metric_registry.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -58,12 +60,13 @@ TimeChange compare_time(const CaseResult& b, const CaseResult& c, double thresho
 
 std::vector<MetricChange> compare_errors(const ImageMetrics& b, const ImageMetrics& c) {
     std::vector<MetricChange> changes;
-    for (const MetricTolerance& m : error_tolerances()) {
+    for (const MetricInfo& m : registered_metrics()) {
         MetricChange change;
         change.metric = m.name;
-        change.baseline = m.value(b);
-        change.candidate = m.value(c);
-        change.allowed = m.absolute + m.relative * (std::isfinite(change.baseline) ? std::abs(change.baseline) : 0.0);
+        change.baseline = b.*m.value;
+        change.candidate = c.*m.value;
+        change.allowed = m.tolerance.absolute +
+                         m.tolerance.relative * (std::isfinite(change.baseline) ? std::abs(change.baseline) : 0.0);
         change.out_of_tolerance = !within(change.baseline, change.candidate, change.allowed);
         changes.push_back(change);
     }
@@ -71,25 +74,6 @@ std::vector<MetricChange> compare_errors(const ImageMetrics& b, const ImageMetri
 }
 
 }  // namespace
-
-const std::vector<MetricTolerance>& error_tolerances() {
-    // Chosen from measurement (README, "Catching regressions"): the quick suite rendered by
-    // lavapipe's SSE-free code path (GALLIUM_NOSSE=1, 128-bit vectors) moved no metric by more than
-    // 3.2e-4 of its value (PSNR 1.0e-3 dB, SSIM 1.0e-6) from the AVX-512 path; 256- and 512-bit
-    // vectors and every thread count gave identical metrics. Tolerances are about 10x that, with an
-    // absolute floor for metrics near zero.
-    static const std::vector<MetricTolerance> tolerances = {
-        {"mae", [](const ImageMetrics& m) { return m.mae; }, 3e-3, 1e-6},
-        {"rmse", [](const ImageMetrics& m) { return m.rmse; }, 3e-3, 1e-6},
-        {"psnr_db", [](const ImageMetrics& m) { return m.psnr; }, 0.0, 0.02},
-        {"ssim", [](const ImageMetrics& m) { return m.ssim; }, 0.0, 1e-5},
-        {"flip_mean", [](const ImageMetrics& m) { return m.flip_mean; }, 3e-3, 1e-6},
-        {"light_bleeding", [](const ImageMetrics& m) { return m.light_bleeding; }, 3e-3, 1e-6},
-        {"over_darkening", [](const ImageMetrics& m) { return m.over_darkening; }, 3e-3, 1e-6},
-        {"penumbra_rmse", [](const ImageMetrics& m) { return m.penumbra_rmse; }, 3e-3, 1e-6},
-    };
-    return tolerances;
-}
 
 const char* to_string(TimeVerdict verdict) {
     switch (verdict) {

@@ -7,16 +7,15 @@
 //           times: on a shared machine the load moves absolute times between runs, while a ratio
 //           measured round by round keeps still. The group's baseline case itself has ratio 1;
 //           its absolute time change is shown, never flagged.
-//   errors: every error metric against a tolerance, |candidate - baseline| <= absolute + relative
-//           x |baseline| (error_tolerances(): rendering rounds differently on another CPU or
-//           device moves errors a little, never by more).
+//   errors: every registered error metric against its tolerance, |candidate - baseline| <=
+//           absolute + relative x |baseline| (metrics/metric_registry.cpp: rendering rounds
+//           differently on another CPU or device moves errors a little, never by more).
 // Runs of different experiments or configs are refused; different commits, devices, builds and
 // run options are allowed (that is the point) and named in the report.
 #pragma once
 
 #include "run/case_result.hpp"
 
-#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -39,15 +38,6 @@ struct ComparisonSettings {
     bool errors = true;       // compare error metrics
 };
 
-// An error metric and how far it may move between two runs of the same config.
-struct MetricTolerance {
-    std::string name;  // as in results.json's image_error
-    std::function<double(const ImageMetrics&)> value;
-    double relative = 0;
-    double absolute = 0;
-};
-const std::vector<MetricTolerance>& error_tolerances();
-
 enum class TimeVerdict {
     unchanged,      // the interval lies within +-threshold
     inconclusive,   // the interval reaches past +-threshold but not wholly: not flagged
@@ -66,7 +56,7 @@ struct TimeChange {
 };
 
 struct MetricChange {
-    std::string metric;
+    std::string metric;  // as in results.json's image_error
     double baseline = 0, candidate = 0;
     double allowed = 0;  // the tolerance for this baseline value
     bool out_of_tolerance = false;
