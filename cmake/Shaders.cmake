@@ -2,7 +2,7 @@
 # Compiles GLSL to SPIR-V at build time and embeds it: for shader `dir/name.stage`, the target
 # gets the header `shaders/name_stage.h` declaring `const uint32_t name_stage[]`.
 # Shaders #include files from harness/shaders and from their own folder (GL_GOOGLE_include_directive);
-# a change to either rebuilds them.
+# a change to any file a shader includes (glslang's depfile, e.g. a family's common headers) rebuilds it.
 function(canopy_add_shaders)
   cmake_parse_arguments(ARG "" "TARGET" "SOURCES" ${ARGN})
   set(out_dir ${CMAKE_BINARY_DIR}/generated/shaders)
@@ -22,8 +22,9 @@ function(canopy_add_shaders)
     add_custom_command(
       OUTPUT ${header}
       COMMAND ${GLSLANG_VALIDATOR} --quiet --target-env vulkan1.3 -I${PROJECT_SOURCE_DIR}/harness/shaders
-              -I${CMAKE_CURRENT_SOURCE_DIR} --vn ${var} -o ${header} ${abs}
+              -I${CMAKE_CURRENT_SOURCE_DIR} --vn ${var} --depfile ${header}.d -o ${header} ${abs}
       DEPENDS ${abs} ${shared_includes} ${local_includes}
+      DEPFILE ${header}.d
       COMMENT "GLSL -> SPIR-V ${src}"
       VERBATIM)
     list(APPEND headers ${header})

@@ -5,12 +5,16 @@
 
 #include "core/error_columns.hpp"
 #include "core/param.hpp"
+#include "core/param_block.hpp"
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <optional>
 #include <span>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace canopy {
@@ -26,13 +30,13 @@ uint32_t bytes_per_texel(MomentFormat format);
 
 // One 1D pass of a separable prefilter over the moment map: a compute shader reading the
 // previous result (`src`, sampler2D, NEAREST) and writing the next (`dst`, image2D); see
-// harness/shaders/separable_filter.glsl for its interface.
+// harness/shaders/separable_filter.glsl for its interface. Filters with parameters read them
+// from the technique's parameter block (frame.technique; FilterExtras gives them the frame).
 struct FilterPass {
     std::string name;                          // timing label, e.g. "blur_x"
     std::span<const uint32_t> compute_spirv;
     int radius = 1;                            // texels on each side of the centre
     bool horizontal = true;
-    std::array<float, 4> params{};             // filter-specific
     int downsample = 1;                        // output is ceil(input / downsample) in both axes
 };
 
@@ -67,12 +71,30 @@ struct MomentMapNeeds {
     std::vector<FilterPass> prefilter;
 };
 
-// Parameters a technique hands to its shaders: 16 floats in the frame uniform block
-// (`technique_params[4]` in GLSL) plus an optional table of up to 128 vec2 sample offsets.
+// Parameters a technique hands to its shaders: its parameter struct (declared once with
+// CANOPY_PARAM_BLOCK, harness/shaders/param_block.h), uploaded as `frame.technique` at the end of
+// the frame uniform block, plus an optional table of up to 128 vec2 sample offsets.
 struct ShaderParams {
-    std::array<float, 16> values{};
+    std::array<std::byte, kMaxParamBlockBytes> block{};  // the struct's bytes (std140 = C++ layout)
+    std::vector<ParamBlockMember> layout;                 // its members; empty: no block
     std::vector<std::array<float, 2>> offsets;  // e.g. a Poisson disk; size() <= kMaxOffsets
     static constexpr size_t kMaxOffsets = 128;
+
+    template <class Block>
+    void set_block(const Block& values) {
+        static_assert(sizeof(Block) <= kMaxParamBlockBytes && std::is_trivially_copyable_v<Block>);
+        block.fill(std::byte{0});
+        std::memcpy(block.data(), &values, sizeof(Block));
+        layout = Block::layout();
+    }
+    // The block as `Block` (tests read what a plan hands its shaders).
+    template <class Block>
+    Block get_block() const {
+        static_assert(sizeof(Block) <= kMaxParamBlockBytes && std::is_trivially_copyable_v<Block>);
+        Block values;
+        std::memcpy(&values, block.data(), sizeof(Block));
+        return values;
+    }
 };
 
 // Screen-space shadowing (Gumbau 2011 ch. 6): after the shadow map, a camera pass renders the

@@ -15,7 +15,6 @@ struct FilterPushConstants {
     int32_t downsample;
     int32_t extent[2];      // output
     int32_t src_extent[2];  // input
-    float params[4];
 };
 
 }  // namespace
@@ -132,8 +131,7 @@ void FilterChain::record(VkCommandBuffer commands, size_t index) const {
     vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, 1, &sets_[index], 0, nullptr);
     const VkExtent2D in = extents_[index], out = extents_[index + 1];
     FilterPushConstants push{{pass.horizontal ? 1 : 0, pass.horizontal ? 0 : 1}, pass.radius, std::max(pass.downsample, 1),
-                             {int32_t(out.width), int32_t(out.height)}, {int32_t(in.width), int32_t(in.height)},
-                             {pass.params[0], pass.params[1], pass.params[2], pass.params[3]}};
+                             {int32_t(out.width), int32_t(out.height)}, {int32_t(in.width), int32_t(in.height)}};
     vkCmdPushConstants(commands, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), &push);
     vkCmdDispatch(commands, (out.width + 7) / 8, (out.height + 7) / 8, 1);
     transition(commands, destination, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);

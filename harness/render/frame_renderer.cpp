@@ -47,7 +47,7 @@ FrameUniforms make_uniforms(const Scene& scene, uint32_t width, uint32_t height,
         const float resolution = float(map_resolution);
         u.shadow_texel = glm::vec4(resolution, 1.0f / resolution, light_view->texel_world, 0.0f);
     }
-    for (size_t i = 0; i < 16; ++i) u.technique_params[i / 4][int(i % 4)] = plan.shader_params.values[i];
+    u.technique = plan.shader_params.block;
     for (size_t i = 0; i < plan.shader_params.offsets.size(); ++i) {
         u.sample_offsets[i / 2][int(2 * (i % 2))] = plan.shader_params.offsets[i][0];
         u.sample_offsets[i / 2][int(2 * (i % 2) + 1)] = plan.shader_params.offsets[i][1];

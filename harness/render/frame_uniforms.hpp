@@ -1,7 +1,12 @@
 // C++ mirror of harness/shaders/frame_uniforms.glsl (std140). Keep both in step.
 #pragma once
 
+#include "core/param_block.hpp"
+
 #include <glm/glm.hpp>
+
+#include <array>
+#include <cstddef>
 
 namespace canopy {
 
@@ -20,10 +25,12 @@ struct FrameUniforms {
     glm::vec4 ambient;
     glm::vec4 shadow_depth_range;  // near, far, 1/(far-near), perspective?1:0
     glm::vec4 shadow_texel;        // resolution, 1/resolution, world texel size (at depth 1 if perspective)
-    glm::vec4 technique_params[4];
     glm::vec4 sample_offsets[64];
+    // The technique's parameter struct (ShaderParams::block); last, so its GLSL size may vary.
+    alignas(16) std::array<std::byte, kMaxParamBlockBytes> technique;
 };
-static_assert(sizeof(FrameUniforms) == 5 * 64 + 9 * 16 + 4 * 16 + 64 * 16, "must match std140 layout");
+static_assert(offsetof(FrameUniforms, technique) == 5 * 64 + 9 * 16 + 64 * 16, "must match std140 layout");
+static_assert(sizeof(FrameUniforms) == 5 * 64 + 9 * 16 + 64 * 16 + kMaxParamBlockBytes, "must match std140 layout");
 
 struct DrawConstants {
     glm::mat4 model;

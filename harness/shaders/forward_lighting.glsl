@@ -1,5 +1,6 @@
 // The lit pass shared by every shadow technique. A technique's fragment shader includes this
-// file and defines only `float shadow_visibility(ShadowQuery q)`; shading is identical for all.
+// file (after its params header) and defines only `float shadow_visibility(ShadowQuery q)`;
+// shading is identical for all.
 #include "frame_uniforms.glsl"
 #include "draw_constants.glsl"
 #include "shading.h"
@@ -30,8 +31,8 @@ struct ShadowQuery {
 
 float shadow_visibility(ShadowQuery q);
 
-// Technique parameters, named for readability in technique shaders.
-float technique_param(int i) { return frame.technique_params[i / 4][i % 4]; }
+// Technique parameters are frame.technique.<name> (the technique's params header); these name
+// the rest for readability in technique shaders.
 vec2 sample_offset(int i) { vec4 v = frame.sample_offsets[i / 2]; return (i % 2 == 0) ? v.xy : v.zw; }
 float shadow_resolution() { return frame.shadow_texel.x; }
 float shadow_texel_uv() { return frame.shadow_texel.y; }

@@ -3,6 +3,11 @@
 #ifndef FRAME_BINDING
 #define FRAME_BINDING 0
 #endif
+// The technique's parameter struct (harness/shaders/param_block.h); its params header names it.
+#ifndef TECHNIQUE_PARAMS
+struct NoTechniqueParams { float unused; };  // passes that read no technique parameters
+#define TECHNIQUE_PARAMS NoTechniqueParams
+#endif
 layout(set = 0, binding = FRAME_BINDING, std140) uniform FrameBlock {
     mat4 view_proj;            // world -> camera clip
     mat4 view;                 // world -> camera view space (looking down -z)
@@ -18,6 +23,6 @@ layout(set = 0, binding = FRAME_BINDING, std140) uniform FrameBlock {
     vec4 ambient;              // rgb
     vec4 shadow_depth_range;   // x = near, y = far, z = 1 / (far - near), w = 1 perspective / 0 orthographic
     vec4 shadow_texel;         // x = resolution, y = 1 / resolution, z = world texel size at view depth 1 (persp.) or absolute (ortho)
-    vec4 technique_params[4];  // technique-defined (ShaderParams::values)
     vec4 sample_offsets[64];   // technique-defined vec2 table, two per vec4 (ShaderParams::offsets)
+    TECHNIQUE_PARAMS technique;  // ShaderParams::block; last, so each technique's size may differ
 } frame;

@@ -14,7 +14,6 @@ layout(push_constant) uniform FilterBlock {
     int downsample;    // input texels per output texel in each axis (1: same size)
     ivec2 extent;      // output width, height
     ivec2 src_extent;  // input width, height
-    vec4 params;       // FilterPass::params
 } filter_pass;
 
 // The input texel `offset` steps along the pass's direction from output texel `xy` (for

@@ -4,15 +4,6 @@
 
 namespace canopy {
 
-std::vector<ParamSpec> prefilter_params(long long default_filter) {
-    return {
-        ParamSpec::integer("resolution", 1024, 16, 8192, "moment-map width and height in texels"),
-        ParamSpec::choice("precision", "fp32", {"fp32", "fp16"}, "bits per moment channel: 32 or 16-bit float"),
-        ParamSpec::integer("filter", default_filter, 1, 63,
-                           "prefilter width in texels: separable (width x width) filter, 1 = none"),
-    };
-}
-
 bool half_precision(const ParamSet& params) { return params.choice("precision") == "fp16"; }
 
 MomentMapNeeds moment_map_needs(const ParamSet& params, int channels, std::span<const uint32_t> fragment_spirv,
@@ -28,8 +19,8 @@ MomentMapNeeds moment_map_needs(const ParamSet& params, int channels, std::span<
     const int radius = int(params.integer("filter")) / 2;
     if (radius > 0) {
         const std::span<const uint32_t> shader = filter_shader.empty() ? std::span<const uint32_t>(box_filter_comp) : filter_shader;
-        needs.prefilter.push_back({"prefilter_x", shader, radius, true, {}});
-        needs.prefilter.push_back({"prefilter_y", shader, radius, false, {}});
+        needs.prefilter.push_back({"prefilter_x", shader, radius, true});
+        needs.prefilter.push_back({"prefilter_y", shader, radius, false});
     }
     return needs;
 }

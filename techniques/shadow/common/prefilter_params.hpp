@@ -1,15 +1,10 @@
-// Parameters every prefiltered (moment-map) shadow technique shares: map resolution, channel
-// precision and the width of the separable box prefilter.
+// The moment map that the parameters every prefiltered (moment-map) shadow technique shares ask
+// for (prefilter_param_list.h declares them: map resolution, channel precision, prefilter width).
 #pragma once
 
 #include "core/technique.hpp"
 
-#include <vector>
-
 namespace canopy {
-
-// resolution, precision (fp32 | fp16), filter (prefilter width in texels).
-std::vector<ParamSpec> prefilter_params(long long default_filter = 5);
 
 bool half_precision(const ParamSet& params);  // precision == fp16
 

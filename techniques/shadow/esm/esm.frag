@@ -4,14 +4,14 @@
 // Linear storage: the LINEAR lookup blends exp(c z) itself, the right filter. Log storage (c z):
 // the four texels are blended as exponentials in log space (esm_log_bilinear), since blending
 // the logs would be a geometric mean.
-// technique_param: 0 exponent c, 1 log-space (0/1)
+#include "esm_params.h"
 #include "forward_lighting.glsl"
 #include "shadow_filtering.h"
 #include "bilinear_texels.glsl"
 
 float shadow_visibility(ShadowQuery q) {
-    float c = technique_param(0);
-    if (technique_param(1) > 0.5) {
+    float c = frame.technique.exponent;
+    if (frame.technique.log_space) {
         BilinearTexels b = bilinear_texels(moment_map, q.uv);
         float filtered_log = esm_log_bilinear(vec4(b.t00.r, b.t10.r, b.t01.r, b.t11.r), b.f);
         return esm_visibility_log(filtered_log, q.receiver_depth, c);

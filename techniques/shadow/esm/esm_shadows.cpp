@@ -4,6 +4,7 @@
 #include "shaders/esm_frag.h"
 #include "shaders/log_box_filter_comp.h"
 #include "shadow_filtering.h"
+#include "esm_params.h"
 #include "../common/prefilter_params.hpp"
 #include "../common/shadow_family.hpp"
 
@@ -20,15 +21,7 @@ public:
     std::string summary() const override { return "exponential shadow maps: prefiltered exp(c z), linear or log space"; }
     std::string paper() const override { return "Salvi 2008; Annen et al. 2008; Gumbau 2011 Table 7.1 'Exponential'"; }
 
-    std::vector<ParamSpec> params() const override {
-        auto specs = prefilter_params();
-        specs.push_back(ParamSpec::real("exponent", 80.0, 1.0, 200.0,
-                                        "c in exp(c z); linear storage holds it up to c = 11 (fp16) or 84 (fp32), "
-                                        "larger c needs log_space"));
-        specs.push_back(ParamSpec::boolean("log_space", false,
-                                           "store c z and filter in log space (log-sum-exp), so no exponent overflows"));
-        return specs;
-    }
+    std::vector<ParamSpec> params() const override { return shader::EsmParams::specs(); }
 
     // Linear storage of exp(c z) overflows past esm_max_exponent: the stored value becomes inf, is
     // read as FLT_MAX, and every shadow vanishes without a sign. Refused rather than clamped, so
@@ -56,8 +49,9 @@ public:
     ErrorColumns error_columns() const override { return kShadowErrorColumns; }
 
     FramePlan plan(const ParamSet& params) const override {
-        const float c = float(params.real("exponent"));
-        const bool log_space = params.boolean("log_space");
+        const shader::EsmParams block = shader::EsmParams::from(params);
+        const float c = block.exponent;
+        const bool log_space = block.log_space != 0;
         FramePlan plan;
         // The clear value is the statistic of depth 1 (no caster): exp(c), finite since conflict()
         // refuses exponents linear storage cannot hold.
@@ -66,8 +60,7 @@ public:
                                            log_space ? std::span<const uint32_t>(log_box_filter_comp)
                                                      : std::span<const uint32_t>());
         plan.forward_fragment_spirv = esm_frag;
-        plan.shader_params.values[0] = c;
-        plan.shader_params.values[1] = log_space ? 1.0f : 0.0f;
+        plan.shader_params.set_block(block);
         return plan;
     }
 };

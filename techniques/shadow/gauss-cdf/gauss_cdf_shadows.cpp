@@ -2,6 +2,7 @@
 #include "core/registry.hpp"
 #include "shaders/gauss_cdf_frag.h"
 #include "shaders/two_moments_frag.h"
+#include "gauss_cdf_params.h"
 #include "../common/prefilter_params.hpp"
 #include "../common/shadow_family.hpp"
 
@@ -14,14 +15,7 @@ public:
     std::string summary() const override { return "Gaussian CDF of prefiltered depth moments, Winitzki's erf"; }
     std::string paper() const override { return "Gumbau 2011 eq 7.1-7.4, Table 7.1 'Gaussian CDF'"; }
 
-    std::vector<ParamSpec> params() const override {
-        auto specs = prefilter_params();
-        specs.push_back(ParamSpec::real("min_variance", 1e-5, 0.0, 0.01,
-                                        "variance floor (normalised depth squared); sigma = 0 is a hard step"));
-        specs.push_back(ParamSpec::boolean("exact_erf", false,
-                                           "accurate erf (Abramowitz-Stegun) instead of Winitzki's approximation"));
-        return specs;
-    }
+    std::vector<ParamSpec> params() const override { return shader::GaussCdfParams::specs(); }
 
     ErrorColumns error_columns() const override { return kShadowErrorColumns; }
 
@@ -29,8 +23,7 @@ public:
         FramePlan plan;
         plan.moment_map = moment_map_needs(params, 2, two_moments_frag, {1.0f, 1.0f, 0.0f, 1.0f});
         plan.forward_fragment_spirv = gauss_cdf_frag;
-        plan.shader_params.values[0] = float(params.real("min_variance"));
-        plan.shader_params.values[1] = params.boolean("exact_erf") ? 1.0f : 0.0f;
+        plan.shader_params.set_block(shader::GaussCdfParams::from(params));
         return plan;
     }
 };

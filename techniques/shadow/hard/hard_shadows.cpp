@@ -1,6 +1,7 @@
 // shadow.hard: standard shadow mapping with constant and slope-scaled bias.
 #include "core/registry.hpp"
 #include "shaders/hard_frag.h"
+#include "hard_params.h"
 #include "../common/shadow_map_params.hpp"
 #include "../common/shadow_family.hpp"
 
@@ -12,7 +13,7 @@ public:
     std::string name() const override { return "shadow.hard"; }
     std::string summary() const override { return "shadow mapping: one depth test per pixel, hard edges"; }
     std::string paper() const override { return "Williams 1978; Gumbau 2011 Table 6.1 'standard'"; }
-    std::vector<ParamSpec> params() const override { return shadow_map_params(); }
+    std::vector<ParamSpec> params() const override { return shader::HardParams::specs(); }
 
     ErrorColumns error_columns() const override { return kShadowErrorColumns; }
 
@@ -20,7 +21,7 @@ public:
         FramePlan plan;
         plan.shadow_map = shadow_map_needs(params);
         plan.forward_fragment_spirv = hard_frag;
-        write_bias_params(params, plan.shader_params);
+        plan.shader_params.set_block(shader::HardParams::from(params));
         return plan;
     }
 };

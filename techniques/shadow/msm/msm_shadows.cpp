@@ -3,6 +3,7 @@
 #include "shaders/msm_depth_frag.h"
 #include "shaders/msm_frag.h"
 #include "shadow_filtering.h"
+#include "msm_params.h"
 #include "../common/prefilter_params.hpp"
 #include "../common/shadow_family.hpp"
 
@@ -15,18 +16,7 @@ public:
     std::string summary() const override { return "moment shadow maps: 4 moments, Hamburger reconstruction"; }
     std::string paper() const override { return "Peters & Klein 2015 (beyond the papers)"; }
 
-    std::vector<ParamSpec> params() const override {
-        auto specs = prefilter_params();
-        // Peters & Klein store the quantised moments in 16-bit unorm; rgba16f is offered too.
-        for (ParamSpec& spec : specs)
-            if (spec.name == "precision") {
-                spec.choices = {"fp32", "fp16", "unorm16"};
-                spec.doc = "moment storage: 32-bit float, 16-bit float, or 16-bit unorm (the paper's)";
-            }
-        specs.push_back(ParamSpec::real("moment_bias", 3e-5, 0.0, 0.01,
-                                        "blend towards well-conditioned target moments (3e-5 for fp32, 6e-5 suits 16 bits)"));
-        return specs;
-    }
+    std::vector<ParamSpec> params() const override { return shader::MsmParams::specs(); }
 
     ErrorColumns error_columns() const override { return kShadowErrorColumns; }
 
@@ -37,7 +27,7 @@ public:
                                            {far_moments.x, far_moments.y, far_moments.z, far_moments.w});
         if (params.choice("precision") == "unorm16") plan.moment_map->format = MomentFormat::rgba16unorm;
         plan.forward_fragment_spirv = msm_frag;
-        plan.shader_params.values[0] = float(params.real("moment_bias"));
+        plan.shader_params.set_block(shader::MsmParams::from(params));
         return plan;
     }
 };

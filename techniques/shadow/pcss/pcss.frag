@@ -5,7 +5,7 @@
 //    over the region where blockers can hide the light from the receiver;
 // 2. penumbra width by the parallel-planes estimate (eq 6.1);
 // 3. PCF over a kernel x kernel grid spanning that width, each tap against the receiver plane.
-// technique_param: 0 bias_constant, 1 bias_slope, 2 blocker_search, 3 kernel, 4 max radius (texels)
+#include "pcss_params.h"
 #include "forward_lighting.glsl"
 #include "shadow_filtering.h"
 
@@ -23,15 +23,15 @@ float shadow_visibility(ShadowQuery q) {
     float range = frame.shadow_depth_range.y - near_plane;
     float texel_image = frame.shadow_texel.z;  // one texel's size on the light's image plane (z = 1)
     float w_light = light_width();
-    float max_radius = technique_param(4);
+    float max_radius = frame.technique.max_radius;
     float d_receiver = q.view_depth;
-    float reference = q.receiver_depth - slope_scaled_bias(technique_param(0), technique_param(1), q.depth_per_texel);
+    float reference = q.receiver_depth - slope_scaled_bias(frame.technique.bias_constant, frame.technique.bias_slope, q.depth_per_texel);
     float texel = shadow_texel_uv();
 
     // 1. Blocker search over the light's frustum from the receiver, cut at the near plane.
     float search_radius = clamp(0.5 * w_light * (d_receiver - near_plane) / (d_receiver * near_plane) / texel_image,
                                 0.5, max_radius);
-    int bs = int(technique_param(2));
+    int bs = frame.technique.blocker_search;
     float blocker_sum = 0.0;
     int blockers = 0;
     for (int i = 0; i < bs * bs; ++i) {
@@ -50,7 +50,7 @@ float shadow_visibility(ShadowQuery q) {
     float filter_radius = clamp(0.5 * w_penumbra / (d_receiver * texel_image), 0.5, max_radius);
 
     // 3. PCF over the penumbra.
-    int k = int(technique_param(3));
+    int k = frame.technique.kernel;
     float lit = 0.0;
     for (int i = 0; i < k * k; ++i) {
         vec2 offset = spread_offset(i, k, filter_radius);

@@ -8,8 +8,9 @@
 // view ray meets this pixel's tangent plane, relative) are either dropped or, with lazy shadowing
 // (6.3.2), replaced by the hard shadow of the point where the tap's view ray meets that plane --
 // the shadow the occluder hides from view.
-// params: x = taps K, y = depth_error, z = lazy (0/1)
+// Reads kernel (taps K), depth_error and lazy from frame.technique.
 #define FRAME_BINDING 2
+#include "ssss_params.h"
 #include "separable_filter.glsl"
 #include "frame_uniforms.glsl"
 #include "shading.h"
@@ -33,9 +34,9 @@ vec4 filter_texel(ivec2 xy) {
     float sigma = filter_pass.direction.x == 1 ? centre.g : centre.b;
     if (!ssss_blurs(sigma, centre.a)) return centre;
 
-    int taps = int(filter_pass.params.x);
-    float depth_error = filter_pass.params.y;
-    bool lazy = filter_pass.params.z > 0.5;
+    int taps = frame.technique.kernel;
+    float depth_error = frame.technique.depth_error;
+    bool lazy = frame.technique.lazy;
     vec3 n = texelFetch(normals, xy, 0).xyz;
     vec3 camera = frame.camera_position.xyz;
     vec3 centre_from_camera = pixel_ray(vec2(xy)) * centre.a;

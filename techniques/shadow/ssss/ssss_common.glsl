@@ -1,10 +1,9 @@
 // Shared by the SSSS camera pass and its screen-space blur: the hard shadow test of a world
 // point exactly as shadow.hard does it (slope-scaled bias on the exact receiver plane).
-// Needs frame_uniforms.glsl, shading.h, shadow_common.h and light_space.glsl.
-// technique_params[0].xy = bias constant, slope.
+// Needs ssss_params.h, frame_uniforms.glsl, shading.h, shadow_common.h and light_space.glsl.
 
 float receiver_bias(LightSpacePoint p) {
-    return slope_scaled_bias(frame.technique_params[0].x, frame.technique_params[0].y, p.depth_per_texel);
+    return slope_scaled_bias(frame.technique.bias_constant, frame.technique.bias_slope, p.depth_per_texel);
 }
 
 // The texel of `map` (the shadow map or the smaller coarse map) under uv.

@@ -7,9 +7,10 @@
 // The reach shrinks as blockers get farther from the light, so the two separable passes give
 // exactly the square footprint of every blocker. The loop stops at the reach of a blocker on the
 // near plane (the farthest any reaches), or at the pass's radius, a cap on the cost.
-// params: x = coarse block (shadow texels per coarse texel), y = maximum occluder distance as a
-// fraction of the light's depth range.
+// Reads coarse_block (shadow texels per coarse texel) and occluder_distance (a fraction of the
+// light's depth range) from frame.technique.
 #define FRAME_BINDING 2
+#include "ssss_params.h"
 #include "separable_filter.glsl"
 #include "frame_uniforms.glsl"
 #include "shading.h"
@@ -21,13 +22,13 @@
 float reach_of(float z) {
     float near_plane = frame.shadow_depth_range.x, far_plane = frame.shadow_depth_range.y;
     float d_blocker = near_plane + z * (far_plane - near_plane);
-    float max_distance = filter_pass.params.y * (far_plane - near_plane);
+    float max_distance = frame.technique.occluder_distance * (far_plane - near_plane);
     return ssss_dilation_texels(d_blocker, max_distance, far_plane, light_width(), frame.shadow_texel.z,
                                 frame.shadow_depth_range.w > 0.5);
 }
 
 vec4 filter_texel(ivec2 xy) {
-    int block = int(filter_pass.params.x);
+    int block = frame.technique.coarse_block;
     int radius = min(filter_pass.radius, int(ceil(reach_of(0.0) / float(block))) + 1);
     float lowest = fetch(xy, 0).r;
     for (int i = -radius; i <= radius; ++i) {

@@ -5,7 +5,7 @@
 // Gaussian's sigma along x and y, and the distance to the observer.
 // Output: (hard shadow, sigma_x px, sigma_y px, distance to camera). sigma 0 = no blocker in the
 // dilated coarse map, so no penumbra can reach this pixel: the blur skips it (6.2.2's mask).
-// technique_params[0] = (bias constant, bias slope, coarse block, -)
+#include "ssss_params.h"
 #include "screen_shadow_output.glsl"
 #include "shading.h"
 #include "shadow_common.h"
@@ -16,7 +16,7 @@
 // The coarse texel holding the block of the shadow texel under uv (block_min.comp's blocks).
 float coarse_depth_at(vec2 uv) {
     ivec2 shadow_texel = nearest_texel(uv, textureSize(shadow_depth, 0));
-    int block = int(frame.technique_params[0].z);
+    int block = frame.technique.coarse_block;
     return texelFetch(coarse_map, ssss_coarse_texel(shadow_texel, block, textureSize(coarse_map, 0)), 0).r;
 }
 

@@ -5,6 +5,7 @@
 #include "core/registry.hpp"
 #include "shadow_common.h"
 #include "shadow_filtering.h"
+#include "../evsm/evsm_params.h"
 
 #include <doctest/doctest.h>
 #include <glm/gtc/packing.hpp>
@@ -691,8 +692,9 @@ TEST_CASE("EVSM at the technique's default exponents: an edge's lit fraction fro
     for (const Precision& precision : {Precision{"fp32", [](float x) { return x; }, 1e-5f, 0.0f},
                                        Precision{"fp16", half, 0.02f, 1e-4f}}) {
         const canopy::FramePlan plan = plan_of("shadow.evsm", {{"precision", precision.name}});
-        const float c_pos = plan.shader_params.values[0], c_neg = plan.shader_params.values[1];
-        const float min_variance = plan.shader_params.values[3];
+        const auto block = plan.shader_params.get_block<canopy::shader::EvsmParams>();
+        const float c_pos = block.c_pos, c_neg = block.c_neg;
+        const float min_variance = block.min_variance;
         CAPTURE(precision.name);
         CAPTURE(c_pos);
         CAPTURE(c_neg);

@@ -3,6 +3,7 @@
 #include "core/error.hpp"
 #include "core/registry.hpp"
 #include "../common/poisson_disk.hpp"
+#include "../pcf/pcf_params.h"
 
 #include <doctest/doctest.h>
 
@@ -32,7 +33,7 @@ TEST_CASE("PCF plans k*k samples and its Poisson tables fit the uniform block fo
     for (long long k = 1; k <= 11; ++k) {
         CAPTURE(k);
         const FramePlan grid = pcf.plan(resolve(pcf, {{"kernel", k}}));
-        CHECK(grid.shader_params.values[5] == float(k * k));
+        CHECK(grid.shader_params.get_block<shader::PcfParams>().count == k * k);
         CHECK(grid.shader_params.offsets.empty());
         const FramePlan poisson = pcf.plan(resolve(pcf, {{"kernel", k}, {"pattern", std::string("poisson")}}));
         CHECK(poisson.shader_params.offsets.size() == size_t(k * k));

@@ -19,6 +19,7 @@
 
 #include "shading.h"
 #include "../ssss/ssss_filter.h"
+#include "../ssss/ssss_params.h"
 
 #include <doctest/doctest.h>
 #include <glm/gtc/matrix_transform.hpp>
@@ -200,7 +201,9 @@ TEST_CASE("SSSS dilation: reach over the blur's support (3 sigma of eq 6.1's wid
     std::vector<int> near_radii;
     for (float light : {0.1f, 0.2f, 0.4f}) {
         CAPTURE(light);
-        const Buffer frame = upload_uniforms(ledger, coarse_frame(light, near_plane, far_plane, texel));
+        FrameUniforms uniforms = coarse_frame(light, near_plane, far_plane, texel);
+        uniforms.technique = plan.shader_params.block;  // the dilation reads coarse_block, occluder_distance
+        const Buffer frame = upload_uniforms(ledger, uniforms);
         const Image coarse = run_passes(source, VK_FORMAT_R32_SFLOAT, plan.shadow_map->coarse_filters,
                                         FilterExtras{frame.handle()});
         // Expected: the largest coarse offset each blocker reaches (occluder distance 0.25 x 4 = 1).
@@ -253,7 +256,7 @@ TEST_CASE("SSSS dilation in a render: the coarse map's blocker region grows with
         // The reach of the box's top (2.5 from the light) for receivers up to the default occluder
         // distance behind it (a fraction of the light's depth range), in whole coarse texels.
         const LightView lv = compute_light_view(scene.lights.front(), scene_bounds(scene, build_scene_meshes(scene)), 1024);
-        const float occluder_distance = ssss_plan().shadow_map->coarse_filters[1].params[1];
+        const float occluder_distance = ssss_plan().shader_params.get_block<sh::SsssParams>().occluder_distance;
         const float reach = sh::ssss_dilation_texels(2.5f, occluder_distance * (lv.far_plane - lv.near_plane),
                                                      lv.far_plane, side, lv.texel_world, true);
         int radius = 0;
@@ -411,7 +414,6 @@ struct BlurScreen {
         frame.light_proj = glm::ortho(-5.0f, 5.0f, -5.0f, 5.0f, 1.0f, 20.0f);
         frame.shadow_depth_range = glm::vec4(1.0f, 20.0f, 1.0f / 19.0f, 0.0f);
         frame.shadow_texel = glm::vec4(64.0f, 1.0f / 64.0f, 10.0f / 64.0f, 0.0f);
-        frame.technique_params[0] = glm::vec4(0.0005f, 1.0f, 0.0f, 0.0f);  // bias constant, slope
     }
     // The view ray through pixel (x, y), as ssss_blur.comp's pixel_ray forms it.
     glm::vec3 ray(int x, int y) const {
@@ -440,8 +442,10 @@ Image blur_x(const BlurScreen& screen, const std::vector<float>& data, const std
     for (int y = 0; y < 64; ++y)
         for (int x = 0; x < BlurScreen::kBlockerColumns; ++x) depth[size_t(y) * 64 + size_t(x)] = 0.1f;
     const Texture shadow_map = upload_texture(ledger, 64, 64, VK_FORMAT_D32_SFLOAT, depth);
-    const Buffer frame = upload_uniforms(ledger, screen.frame);
     const FramePlan plan = ssss_plan(given);
+    FrameUniforms uniforms = screen.frame;
+    uniforms.technique = plan.shader_params.block;  // taps, depth_error, lazy and the bias
+    const Buffer frame = upload_uniforms(ledger, uniforms);
     const FilterPass& pass = plan.screen_shadow->filters.front();
     REQUIRE(pass.horizontal);
     return run_passes(source, VK_FORMAT_R32G32B32A32_SFLOAT, {pass},

@@ -2,6 +2,7 @@
 #include "core/registry.hpp"
 #include "shaders/two_moments_frag.h"
 #include "shaders/vsm_frag.h"
+#include "vsm_params.h"
 #include "../common/prefilter_params.hpp"
 #include "../common/shadow_family.hpp"
 
@@ -14,14 +15,7 @@ public:
     std::string summary() const override { return "variance shadow maps: Chebyshev bound on prefiltered depth moments"; }
     std::string paper() const override { return "Donnelly & Lauritzen 2006; Gumbau 2011 eq 2.1-2.2, Table 7.1 'Chebyshev'"; }
 
-    std::vector<ParamSpec> params() const override {
-        auto specs = prefilter_params();
-        specs.push_back(ParamSpec::real("min_variance", 1e-5, 0.0, 0.01,
-                                        "variance floor (normalised depth squared) against numerical acne"));
-        specs.push_back(ParamSpec::real("bleeding_reduction", 0.0, 0.0, 0.95,
-                                        "light-bleeding reduction: visibility below this is cut to 0, the rest rescaled"));
-        return specs;
-    }
+    std::vector<ParamSpec> params() const override { return shader::VsmParams::specs(); }
 
     ErrorColumns error_columns() const override { return kShadowErrorColumns; }
 
@@ -29,8 +23,7 @@ public:
         FramePlan plan;
         plan.moment_map = moment_map_needs(params, 2, two_moments_frag, {1.0f, 1.0f, 0.0f, 1.0f});
         plan.forward_fragment_spirv = vsm_frag;
-        plan.shader_params.values[0] = float(params.real("min_variance"));
-        plan.shader_params.values[1] = float(params.real("bleeding_reduction"));
+        plan.shader_params.set_block(shader::VsmParams::from(params));
         return plan;
     }
 };
