@@ -441,6 +441,9 @@ int main(int argc, char** argv) {
         "interval from resampling each run's rounds (block bootstrap). Errors: every metric within |change| <=\n"
         "absolute + relative x |baseline| (each metric's tolerance: `canopy metrics`). Runs of different\n"
         "experiments or configs are refused (exit 2); different commits, devices or builds are compared and named.\n"
+        "The interval sees only each run's own rounds: on a shared machine a ratio also moves by a few % from one\n"
+        "run to the next, so use a threshold at least twice the spread `canopy bench stability` reports there\n"
+        "(README, Timing).\n"
         "Exit codes: 0 nothing flagged, 1 a regression, an error out of tolerance or a case that failed only in\n"
         "the candidate, 2 bad input.");
 
