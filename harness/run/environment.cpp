@@ -130,8 +130,12 @@ Environment collect_environment(const GpuContext& gpu, const std::string& config
     e.build_type = CANOPY_BUILD_TYPE;
     e.canopy_version = CANOPY_VERSION;
     e.git_commit = source_commit();
+    // Changes to the sources, not to results/: regenerating committed results rewrites tracked files
+    // there (--force removes a folder's old outputs first), which says nothing about the code.
     if (e.git_commit != "unknown")
-        e.git_dirty = !command_output(git_command() + "status --porcelain --untracked-files=no 2>/dev/null").empty();
+        e.git_dirty = !command_output(git_command() +
+                                      "status --porcelain --untracked-files=no -- . ':(exclude)results' 2>/dev/null")
+                           .empty();
     char host[256] = {};
     gethostname(host, sizeof host - 1);
     e.hostname = host;
