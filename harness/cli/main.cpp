@@ -23,6 +23,7 @@
 #include "core/plan_requirements.hpp"
 #include "run/environment.hpp"
 #include "run/output_folder.hpp"
+#include "report/gbench_report.hpp"
 #include "run/run_identity.hpp"
 
 #include <CLI/CLI.hpp>
@@ -250,6 +251,21 @@ int compare(const CompareCommand& command) {
     return comparison.passed() ? kExitOk : kExitFailedCases;
 }
 
+// Writes results.gbench.json of recorded runs from their results.json (e.g. runs made before
+// canopy wrote it, or before its context named the commit and device).
+int export_gbench(const std::vector<std::string>& runs, bool force) {
+    for (const std::string& where : runs) {
+        const RunRecord run = read_run(where);
+        const fs::path dir = fs::is_directory(where) ? fs::path(where) : fs::path(where).parent_path();
+        if (is_committed_results_folder(dir) && !force)
+            throw ConfigError(dir, 0, "this folder holds committed results; canopy does not write there unless told to",
+                              "add --force to rewrite its results.gbench.json (then review `git diff`)");
+        write_gbench_report(dir / "results.gbench.json", run);
+        fmt::print("{}\n", (dir / "results.gbench.json").string());
+    }
+    return kExitOk;
+}
+
 struct RunCommand {
     fs::path config;
     std::string out, device;
@@ -473,6 +489,14 @@ int main(int argc, char** argv) {
         "<= 5 % for cases over 20 ms, CV <= 5 %), and the load average before and after every run.\n"
         "scripts/measurement-study runs it under several settings (README, Timing).");
 
+    std::vector<std::string> export_runs;
+    bool export_force = false;
+    CLI::App* export_cmd = app.add_subcommand(
+        "export-gbench", "Write results.gbench.json (Google Benchmark's JSON format) of recorded runs from their "
+                         "results.json.");
+    export_cmd->add_option("runs", export_runs, "run folders or their results.json")->required();
+    export_cmd->add_flag("--force", export_force, "also into committed results (results/paper/, results/baselines/)");
+
     CLI::App* list_cmd = app.add_subcommand("list", "List every technique with its parameters (type, range, default).");
     CLI::App* devices_cmd = app.add_subcommand("devices", "List the Vulkan devices canopy can run on.");
     CLI::App* metrics_cmd = app.add_subcommand(
@@ -508,6 +532,7 @@ int main(int argc, char** argv) {
         }
         if (*reference_cmd) return reference(scene_path, out_dir, reference_options);
         if (*compare_cmd) return compare(compare_command);
+        if (*export_cmd) return export_gbench(export_runs, export_force);
         if (*bench_stability_cmd) return bench_stability(stability);
         if (*bench_reference_cmd)
             return bench_reference(scene_path.empty() ? find_default_bench_scene(current_executable()) : fs::path(scene_path),

@@ -52,19 +52,22 @@ ordered_json context(const RunRecord& run) {
 #else
     j["library_build_type"] = "debug";
 #endif
-    // Custom context (Google Benchmark's AddCustomContext writes extra string keys here).
-    j["canopy_experiment"] = run.experiment;
+    // Custom context (Google Benchmark's AddCustomContext writes extra string keys here), named as
+    // in results.json's environment, so the file says which run, build and device it comes from.
+    j["experiment"] = run.experiment;
     j["canopy_version"] = e.canopy_version;
-    j["canopy_build_type"] = e.build_type;
-    j["canopy_commit"] = e.git_commit + (e.git_dirty ? " (with uncommitted changes)" : "");
-    j["canopy_config_hash"] = e.config_hash;
-    j["canopy_device"] = e.device.name;
-    j["canopy_driver"] = e.device.driver_info;
-    j["canopy_lp_num_threads"] = e.lp_num_threads;
-    j["canopy_status"] = run.status;
-    j["canopy_measurement"] = std::to_string(run.warmup_frames) + " warm-up frames, " + std::to_string(run.rounds) +
-                              " rounds of " + std::to_string(run.frames_per_sample) +
-                              " frames per case, each group's cases interleaved";
+    j["build_type"] = e.build_type;
+    j["commit"] = e.git_commit;
+    j["commit_dirty"] = e.git_dirty ? "true" : "false";
+    j["config_hash"] = e.config_hash;
+    j["device"] = e.device.name;
+    j["driver_info"] = e.device.driver_info;
+    j["cpu_model"] = e.cpu_model;
+    j["lp_num_threads"] = e.lp_num_threads;
+    j["status"] = run.status;
+    j["measurement"] = std::to_string(run.warmup_frames) + " warm-up frames, " + std::to_string(run.rounds) +
+                       " rounds of " + std::to_string(run.frames_per_sample) +
+                       " frames per case, each group's cases interleaved";
     return j;
 }
 

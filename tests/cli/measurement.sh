@@ -80,6 +80,9 @@ import json, sys
 g, r = json.load(open(sys.argv[1])), json.load(open(sys.argv[2]))
 for key in ("date", "host_name", "num_cpus", "mhz_per_cpu", "caches", "library_build_type"):
     assert key in g["context"], key
+# Which run, build and device the timings come from, named as in results.json's environment.
+for key in ("commit", "commit_dirty", "device", "driver_info", "cpu_model", "lp_num_threads", "config_hash"):
+    assert str(g["context"][key]).lower() == str(r["environment"][key]).lower(), key
 cases = r["cases"]
 iterations = [b for b in g["benchmarks"] if b["run_type"] == "iteration"]
 assert len(iterations) == len(cases) * r["rounds"], len(iterations)
@@ -91,6 +94,11 @@ medians = {b["run_name"]: b["real_time"] for b in g["benchmarks"] if b.get("aggr
 for c in cases:
     assert abs(medians[c["id"] + "/manual_time"] - c["timing"]["gpu_frame"]["stats_ms"]["median"]) < 1e-9, c["id"]
 PY
+    # export-gbench writes the same file from the recorded results.json.
+    cp "$work/a/results.gbench.json" "$work/written.json"
+    rm "$work/a/results.gbench.json"
+    "$canopy" export-gbench "$work/a" >/dev/null || fail "export-gbench failed"
+    cmp "$work/written.json" "$work/a/results.gbench.json" || fail "export-gbench differs from what the run wrote"
     ;;
 
   bench_stability)
