@@ -398,24 +398,23 @@ std::vector<float> read_texels(const GpuContext& gpu, const Texture& texture, Vk
 
 }  // namespace
 
-Image FrameRenderer::read_color() const {
-    const Texture& color = lit_pass_->color();
+namespace {
+
+// The colour target's texels as the image users see: alpha holds the technique's visibility
+// (read_pixel_visibility), the image is opaque.
+Image opaque_color(const Texture& color, std::vector<float> rgba) {
     Image image(int(color.width()), int(color.height()));
-    image.pixels = read_texels(gpu_, color, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, 4);
-    // Alpha holds the technique's visibility (read_pixel_visibility); the image users see is opaque.
+    image.pixels = std::move(rgba);
     for (size_t i = 3; i < image.pixels.size(); i += 4) image.pixels[i] = 1.0f;
     return image;
 }
 
-Image FrameRenderer::read_pixel_visibility() const {
+// Stored depth is glm::perspective's (zero to one): z = f (d - n) / ((f - n) d) for view depth d,
+// so d = f n / (f - z (f - n)); the clear value 1 (the far plane) means nothing was drawn.
+Image pixel_visibility_image(const Texture& color, const std::vector<float>& rgba, const std::vector<float>& depth,
+                             double n, double f) {
     namespace pv = pixel_visibility;
-    const Texture& color = lit_pass_->color();
-    const std::vector<float> rgba = read_texels(gpu_, color, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, 4);
-    const std::vector<float> depth = read_texels(gpu_, lit_pass_->depth(), VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, 1);
     Image image(int(color.width()), int(color.height()));
-    // Stored depth is glm::perspective's (zero to one): z = f (d - n) / ((f - n) d) for view depth d,
-    // so d = f n / (f - z (f - n)); the clear value 1 (the far plane) means nothing was drawn.
-    const double n = near_plane_, f = far_plane_;
     for (size_t i = 0; i < depth.size(); ++i) {
         float* p = &image.pixels[4 * i];
         const bool drawn = depth[i] < 1.0f;
@@ -424,6 +423,23 @@ Image FrameRenderer::read_pixel_visibility() const {
         p[pv::kSurface] = drawn ? 1.0f : 0.0f;
     }
     return image;
+}
+
+}  // namespace
+
+Image FrameRenderer::read_color() const {
+    const Texture& color = lit_pass_->color();
+    return opaque_color(color, read_texels(gpu_, color, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, 4));
+}
+
+Image FrameRenderer::read_pixel_visibility() const { return read_color_and_pixel_visibility().visibility; }
+
+FrameRenderer::ColorAndVisibility FrameRenderer::read_color_and_pixel_visibility() const {
+    const Texture& color = lit_pass_->color();
+    std::vector<float> rgba = read_texels(gpu_, color, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, 4);
+    const std::vector<float> depth = read_texels(gpu_, lit_pass_->depth(), VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, 1);
+    Image visibility = pixel_visibility_image(color, rgba, depth, near_plane_, far_plane_);
+    return {opaque_color(color, std::move(rgba)), std::move(visibility)};
 }
 
 Image FrameRenderer::read_coarse_map() const {

@@ -55,6 +55,11 @@ public:
     // gave the shadow light (the colour target's alpha) and the view depth of the surface drawn
     // (from the depth target). Not timed.
     Image read_pixel_visibility() const;
+    // Both, reading the colour target once.
+    struct ColorAndVisibility {
+        Image color, visibility;
+    };
+    ColorAndVisibility read_color_and_pixel_visibility() const;
     // Intermediate buffers of the last frame, for tests and debugging: the coarse map (R = depth;
     // needs ShadowMapNeeds::coarse_filters) and the screen-shadow buffer after its filters
     // (needs FramePlan::screen_shadow). Throw std::logic_error when the plan has none.

@@ -248,8 +248,9 @@ void finish(LiveCase& live, size_t chunk_index, const MeasurementChunk& chunk, c
     Image image, visibility;
     if (live.renderer && !live.failed) {
         try {
-            image = live.renderer->read_color();
-            visibility = live.renderer->read_pixel_visibility();
+            FrameRenderer::ColorAndVisibility frame = live.renderer->read_color_and_pixel_visibility();
+            image = std::move(frame.color);
+            visibility = std::move(frame.visibility);
             live.result.nonfinite_pixels = count_nonfinite_pixels(image);
             if (live.result.nonfinite_pixels > 0)
                 live.fail(fmt::format("{} pixels are NaN or Inf", live.result.nonfinite_pixels));
