@@ -13,14 +13,15 @@ json() { python3 -c "import json,sys; j=json.load(open(sys.argv[1])); print($2)"
 suite=$checkout/configs/experiments/quick-suite.toml
 baseline=$checkout/results/baselines/quick-suite
 
-# The technique the slowdown is injected into, and how much work: 400 xorshift rounds per pixel
-# add about 12 ms per frame at 320x180 on lavapipe, about +100 % of the case.
+# The technique the slowdown is injected into, and how much work: 1000 xorshift rounds per pixel
+# add about 30 ms per frame at 320x180 on lavapipe, about +250 % of the case.
 ballast_technique=shadow.pcf
-ballast_iterations=400
+ballast_iterations=1000
 # The threshold of the time comparison: on a shared 2-core machine a case's ratio moves by up to
 # about 10 % between two runs of one build (results/stability/, README "Timing"), more than any
-# interval from one run's rounds shows, so the 5 % default would flag reruns here.
-threshold=15%
+# interval from one run's rounds shows, and by up to 20-30 % right after a build has loaded the
+# machine (ctest runs this test first), so the 5 % default would flag reruns here.
+threshold=25%
 
 case $case in
   baseline_errors)
