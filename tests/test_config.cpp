@@ -37,7 +37,7 @@ public:
             ParamSpec::boolean("hardware_pcf", true, "use the depth-compare sampler"),
         };
     }
-    FramePlan plan(const ParamSet&) const override { return {}; }
+    FrameGraph graph(const ParamSet&) const override { return {}; }
     ErrorColumns error_columns() const override { return {}; }
 };
 

@@ -120,7 +120,7 @@ TEST_CASE("a case's image is the one its renderer alone renders, bit for bit") {
     for (size_t i = 0; i < 3; ++i) {
         const Case& c = g.prepared.cases[i];
         FrameRenderer alone(test::gpu(), g.experiment.scenes[0], g.prepared.meshes[0], 96, 64,
-                            g.input.cases[i].technique->plan(c.params));
+                            g.input.cases[i].technique->graph(c.params));
         alone.render();
         const Image expected = alone.read_color();
         REQUIRE(images[i].pixels.size() == expected.pixels.size());

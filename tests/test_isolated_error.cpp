@@ -35,7 +35,7 @@ struct Render {
 
 Render render(const Scene& scene, const std::vector<TriangleMesh>& meshes, const std::string& technique,
               const std::map<std::string, ParamValue>& params = {}) {
-    FrameRenderer renderer(test::gpu(), scene, meshes, kWidth, kHeight, test::technique_plan(technique, params));
+    FrameRenderer renderer(test::gpu(), scene, meshes, kWidth, kHeight, test::technique_graph(technique, params));
     renderer.render();
     return {renderer.read_color(), renderer.read_pixel_visibility()};
 }

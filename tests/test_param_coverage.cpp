@@ -41,44 +41,15 @@ std::string hex(float x) {
     return out.str();
 }
 
-void describe(std::ostringstream& out, std::span<const uint32_t> spirv) {
-    out << " spirv@" << static_cast<const void*>(spirv.data()) << '+' << spirv.size();
-}
-
-void describe(std::ostringstream& out, const std::vector<FilterPass>& passes) {
-    for (const FilterPass& pass : passes) {
-        out << " pass " << pass.name << ' ' << pass.radius << ' ' << pass.horizontal << ' ' << pass.downsample;
-        describe(out, pass.compute_spirv);
-    }
-}
-
-// Everything a FramePlan hands the harness, as text: two plans with the same fingerprint render
-// the same frame. (A field added to FramePlan belongs here too.)
-std::string fingerprint(const FramePlan& plan) {
+// Everything a FrameGraph hands the harness, as text: two graphs with the same fingerprint render
+// the same frame (describe() covers resources, passes, their uses and settings, and the needs;
+// the parameter block's bytes and the sample offsets are added here).
+std::string fingerprint(const FrameGraph& graph) {
     std::ostringstream out;
-    if (plan.shadow_map) {
-        const ShadowMapNeeds& map = *plan.shadow_map;
-        out << "shadow " << map.resolution << ' ' << to_string(map.format) << ' ' << map.compare_sampler;
-        describe(out, map.coarse_filters);
-    }
-    if (plan.moment_map) {
-        const MomentMapNeeds& map = *plan.moment_map;
-        out << " moments " << map.resolution << ' ' << to_string(map.format);
-        describe(out, map.fragment_spirv);
-        for (float v : map.clear_value) out << ' ' << hex(v);
-        describe(out, map.prefilter);
-    }
-    if (plan.screen_shadow) {
-        out << " screen";
-        describe(out, plan.screen_shadow->fragment_spirv);
-        describe(out, plan.screen_shadow->filters);
-    }
-    out << " area " << plan.needs_area_light;
-    describe(out, plan.forward_fragment_spirv);
-    out << " block";
-    for (std::byte b : plan.shader_params.block) out << ' ' << int(b);
+    out << describe(graph) << " block";
+    for (std::byte b : graph.shader_params.block) out << ' ' << int(b);
     out << " offsets";
-    for (const auto& o : plan.shader_params.offsets) out << ' ' << hex(o[0]) << ',' << hex(o[1]);
+    for (const auto& o : graph.shader_params.offsets) out << ' ' << hex(o[0]) << ',' << hex(o[1]);
     return out.str();
 }
 
@@ -88,10 +59,10 @@ ParamSet resolve(const Technique& t, const std::vector<ParamSpec>& specs, std::m
 
 // The declared parameters of `technique` that reach neither its shader struct nor its plan: a
 // parameter that is a member of the block must change the member's bytes for some other value,
-// any other parameter must change the plan.
+// any other parameter must change the frame graph.
 std::vector<std::string> unreached_params(const Technique& technique) {
     const std::vector<ParamSpec> specs = technique.params();
-    const FramePlan base = technique.plan(resolve(technique, specs));
+    const FrameGraph base = technique.graph(resolve(technique, specs));
     const std::string base_fingerprint = fingerprint(base);
     std::vector<std::string> unreached;
     for (const ParamSpec& spec : specs) {
@@ -101,7 +72,7 @@ std::vector<std::string> unreached_params(const Technique& technique) {
         });
         bool reached = false;
         for (const ParamValue& value : alternatives(spec)) {
-            const FramePlan plan = technique.plan(resolve(technique, specs, {{spec.name, value}}));
+            const FrameGraph plan = technique.graph(resolve(technique, specs, {{spec.name, value}}));
             reached = reached || (member != layout.end()
                                       ? std::memcmp(plan.shader_params.block.data() + member->offset,
                                                     base.shader_params.block.data() + member->offset, 4) != 0
@@ -132,14 +103,13 @@ public:
     std::string paper() const override { return "none"; }
     std::vector<ParamSpec> params() const override { return shader::CoverageTestParams::specs(); }
     ErrorColumns error_columns() const override { return {}; }
-    FramePlan plan(const ParamSet& params) const override {
+    FrameGraph graph(const ParamSet& params) const override {
         shader::CoverageTestParams block = shader::CoverageTestParams::from(params);
         block.twice_strength = 2.0f * block.strength;
-        FramePlan plan;
-        plan.shadow_map = ShadowMapNeeds{};
-        plan.shadow_map->resolution = uint32_t(params.integer("resolution"));
-        if (uploads_block_) plan.shader_params.set_block(block);
-        return plan;
+        FrameGraph graph;
+        graph.images.push_back({"map", VK_FORMAT_R32_SFLOAT, ImageExtent::square(uint32_t(params.integer("resolution")))});
+        if (uploads_block_) graph.shader_params.set_block(block);
+        return graph;
     }
 
 private:
@@ -182,7 +152,7 @@ TEST_CASE("a parameter block: specs in list order, members std140-packed, from()
     CHECK(layout[1].offset == 4);
     CHECK(layout[1].kind == ParamBlockMember::Kind::derived);
     const CoverageTestTechnique technique(true);
-    const FramePlan plan = technique.plan(resolve(technique, specs, {{"strength", 0.25}}));
+    const FrameGraph plan = technique.graph(resolve(technique, specs, {{"strength", 0.25}}));
     const auto block = plan.shader_params.get_block<CoverageTestParams>();
     CHECK(block.strength == 0.25f);
     CHECK(block.twice_strength == 0.5f);
@@ -192,7 +162,7 @@ TEST_CASE("every registered technique's block: members named once, within the up
     for (const Technique* t : TechniqueRegistry::instance().all()) {
         CAPTURE(t->name());
         const std::vector<ParamSpec> specs = t->params();
-        const FramePlan plan = t->plan(resolve(*t, specs));
+        const FrameGraph plan = t->graph(resolve(*t, specs));
         const auto& layout = plan.shader_params.layout;
         for (size_t i = 0; i < layout.size(); ++i) {
             CAPTURE(layout[i].name);

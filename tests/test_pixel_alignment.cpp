@@ -65,7 +65,7 @@ struct Renders {
 Renders render_both(const Scene& scene, int width, int height) {
     const auto meshes = build_scene_meshes(scene);
     FrameRenderer renderer(test::gpu(), scene, meshes, uint32_t(width), uint32_t(height),
-                           test::technique_plan("shadow.hard"));
+                           test::technique_graph("shadow.hard"));
     renderer.render();
     Renders r;
     r.raster = renderer.read_pixel_visibility();

@@ -92,7 +92,7 @@ TEST_CASE("a long list of refused cases is capped") {
 
 TEST_CASE("check_supported: a missing area light and a missing shadow light have scene hints") {
     const Technique& pcss = *TechniqueRegistry::instance().find("shadow.pcss");
-    const FramePlan plan = pcss.plan(ParamSet::resolve(pcss.params(), {}, {}, {}, "shadow.pcss"));
+    const FrameGraph plan = pcss.graph(ParamSet::resolve(pcss.params(), {}, {}, {}, "shadow.pcss"));
     Scene scene = parse_scene("[[light]]\ntype = \"directional\"\n", "s.toml");
     auto unsupported = check_supported(test::gpu(), scene, plan);
     REQUIRE(unsupported);

@@ -111,7 +111,7 @@ TEST_CASE("the same configuration renders identical images: any renderer, any or
         const std::string name = test::describe(v);
         CAPTURE(name);
         FrameRenderer renderer(test::gpu(), scene, build_scene_meshes(scene), kWidth, kHeight,
-                               test::technique_plan(v.technique, v.params));
+                               test::technique_graph(v.technique, v.params));
         renderer.render();
         const Image frame1 = renderer.read_color();
         renderer.render();
@@ -129,7 +129,7 @@ TEST_CASE("memory is reported per technique: the shadow map is the technique's")
     const Scene scene = test::tiny_scene();
     for (long long resolution : {256LL, 1024LL}) {
         FrameRenderer renderer(test::gpu(), scene, build_scene_meshes(scene), kWidth, kHeight,
-                               test::technique_plan("shadow.hard", {{"resolution", resolution}}));
+                               test::technique_graph("shadow.hard", {{"resolution", resolution}}));
         const MemoryUse m = renderer.memory();
         CHECK(m.technique_bytes >= uint64_t(resolution * resolution * 4));   // D32F texels
         CHECK(m.technique_bytes < uint64_t(resolution * resolution * 4 * 2));
@@ -146,7 +146,7 @@ TEST_CASE("memory is reported per technique: the shadow map is the technique's")
 TEST_CASE("a scene without a shadow-casting light is refused with a reason") {
     Scene scene = test::tiny_scene();
     scene.lights.front().casts_shadows = false;
-    const auto reason = unsupported_reason(test::gpu(), scene, test::technique_plan("shadow.hard"));
+    const auto reason = unsupported_reason(test::gpu(), scene, test::technique_graph("shadow.hard"));
     REQUIRE(reason.has_value());
     CHECK(reason->find("shadow-casting") != std::string::npos);
 }

@@ -1,7 +1,7 @@
 // What a run shows a person: case labels that tell swept rows apart, progress that says where a
 // reference comes from and how long is left, a compact console table, and what a technique needs.
 #include "config/experiment_config.hpp"
-#include "core/plan_requirements.hpp"
+#include "core/graph_requirements.hpp"
 #include "report/console_table.hpp"
 #include "report/markdown_report.hpp"
 #include "run/case_labels.hpp"
@@ -179,7 +179,7 @@ TEST_CASE("a technique's requirements, in words, from its plan at the defaults")
     auto needs = [](const std::string& name) {
         const Technique& t = technique(name);
         std::string all;
-        for (const std::string& need : plan_requirements(t.plan(ParamSet::resolve(t.params(), {}, {}, {}, name))))
+        for (const std::string& need : graph_requirements(t.graph(ParamSet::resolve(t.params(), {}, {}, {}, name))))
             all += need + "; ";
         return all;
     };

@@ -20,7 +20,7 @@ constexpr int kWidth = 160, kHeight = 90;
 
 // With `meshes` built once per scene: the committed scenes' models take a while to load.
 Image render(const Scene& scene, const std::vector<TriangleMesh>& meshes, const Technique& t) {
-    FrameRenderer renderer(test::gpu(), scene, meshes, kWidth, kHeight, test::technique_plan(t.name()));
+    FrameRenderer renderer(test::gpu(), scene, meshes, kWidth, kHeight, test::technique_graph(t.name()));
     renderer.render();
     return renderer.read_color();
 }

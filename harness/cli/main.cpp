@@ -20,7 +20,7 @@
 #include "run/run_comparison.hpp"
 #include "run/stability_bench.hpp"
 #include "report/stability_report.hpp"
-#include "core/plan_requirements.hpp"
+#include "core/graph_requirements.hpp"
 #include "run/environment.hpp"
 #include "run/output_folder.hpp"
 #include "report/gbench_report.hpp"
@@ -64,7 +64,7 @@ int list_techniques() {
         const std::vector<ParamSpec> specs = t->params();
         const ParamSet defaults = ParamSet::resolve(specs, {}, {}, {}, t->name());
         std::string requires_text;
-        for (const std::string& need : plan_requirements(t->plan(defaults)))
+        for (const std::string& need : graph_requirements(t->graph(defaults)))
             requires_text += (requires_text.empty() ? "" : "; ") + need;
         fmt::print("  requires: {}\n  parameters:\n", requires_text.empty() ? "nothing beyond the scene" : requires_text);
         for (const ParamSpec& p : specs)

@@ -220,6 +220,8 @@ GpuContext::GpuContext(const std::string& selector, Validation validation) {
         throw GpuError(fmt::format("device '{}' has no timestamp queries on its graphics queue; canopy times passes with them", info_.name));
 
     VkPhysicalDeviceVulkan13Features features13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+    VkPhysicalDeviceVulkan12Features features12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+    features13.pNext = &features12;
     VkPhysicalDeviceFeatures2 supported{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
     supported.pNext = &features13;
     vkGetPhysicalDeviceFeatures2(physical_, &supported);
@@ -230,6 +232,11 @@ GpuContext::GpuContext(const std::string& selector, Validation validation) {
     enable13.dynamicRendering = VK_TRUE;
     enable13.synchronization2 = VK_TRUE;
     enable13.maintenance4 = features13.maintenance4;  // glslang's Vulkan 1.3 compute shaders use LocalSizeId
+    // Draws whose count a compute pass wrote (the frame graph's indexed-indirect-count service).
+    VkPhysicalDeviceVulkan12Features enable12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+    enable12.drawIndirectCount = features12.drawIndirectCount;
+    draw_indirect_count_ = features12.drawIndirectCount;
+    enable13.pNext = &enable12;
     VkPhysicalDeviceFeatures2 enable{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
     enable.pNext = &enable13;
     enable.features.geometryShader = supported.features.geometryShader;

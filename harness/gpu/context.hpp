@@ -64,6 +64,7 @@ public:
     double timestamp_period_ns() const { return timestamp_period_ns_; }
     uint32_t timestamp_valid_bits() const { return timestamp_valid_bits_; }
     bool storage_write_without_format() const { return storage_write_without_format_; }
+    bool draw_indirect_count() const { return draw_indirect_count_; }
 
     uint32_t memory_type(uint32_t type_bits, VkMemoryPropertyFlags wanted) const;
     VkFormatFeatureFlags2 format_features(VkFormat format) const;  // optimal tiling
@@ -86,6 +87,7 @@ private:
     double timestamp_period_ns_ = 1.0;
     uint32_t timestamp_valid_bits_ = 0;
     bool storage_write_without_format_ = false;
+    bool draw_indirect_count_ = false;
     VkPhysicalDeviceMemoryProperties memory_{};
 };
 

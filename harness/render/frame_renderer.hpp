@@ -1,16 +1,14 @@
-// Builds, from a technique's FramePlan, exactly the passes and resources it asks for, records
-// one frame's commands once, and replays them: each render() is one timed frame.
+// Renders a technique's FrameGraph (graph/frame_graph.hpp) over a scene: the scene's geometry and
+// the frame uniforms are the harness's; everything else is what the graph declares. The load
+// phase runs once at construction; each render() records and runs one timed frame.
 #pragma once
 
+#include "core/frame_state.hpp"
 #include "core/image.hpp"
-#include "core/technique.hpp"
-#include "gpu/pass_timer.hpp"
+#include "graph/frame_graph.hpp"
+#include "graph/graph_executor.hpp"
 #include "render/gpu_scene.hpp"
 #include "render/light_view.hpp"
-#include "render/lit_pass.hpp"
-#include "render/moment_map_pass.hpp"
-#include "render/screen_shadow_pass.hpp"
-#include "render/shadow_map_pass.hpp"
 
 #include <memory>
 #include <optional>
@@ -20,36 +18,45 @@
 namespace canopy {
 
 struct FrameTiming {
-    std::vector<double> pass_gpu_ms;  // per pass, in pass_names() order
-    double gpu_ms = 0;                // first pass start to last pass end
+    std::vector<double> pass_gpu_ms;  // per GPU pass, in pass_names() order
+    double gpu_ms = 0;                // first GPU pass start to last GPU pass end
     double wall_ms = 0;               // CPU: submit to fence signalled
+    std::vector<double> pass_cpu_ms;  // per CPU pass, in cpu_pass_names() order
+    double record_cpu_ms = 0;         // CPU: recording the frame's commands (CPU passes excluded)
+    uint64_t uploaded_bytes = 0;      // moved from the CPU into buffers by the frame's passes
 };
 
 struct MemoryUse {
-    uint64_t technique_bytes = 0;  // resources the technique asked for (shadow maps, ...)
+    uint64_t technique_bytes = 0;  // resources the technique declared (shadow maps, ...)
     uint64_t target_bytes = 0;     // camera colour and depth targets, the same for every technique
     uint64_t scene_bytes = 0;      // vertex and index buffers
 };
 
-// Why a plan cannot run on a device or scene, and what the user can change so that it can.
+// Why a graph cannot run on a device or scene, and what the user can change so that it can.
 struct Unsupported {
     std::string reason;  // "scene 'spheres': this technique needs an area light ..."
     std::string hint;    // fits the cause: the scene's light for a scene, --device for a device
 };
 
-// Why `plan` cannot run on this device or scene, or nullopt when it can.
-std::optional<Unsupported> check_supported(const GpuContext& gpu, const Scene& scene, const FramePlan& plan);
-std::optional<std::string> unsupported_reason(const GpuContext& gpu, const Scene& scene, const FramePlan& plan);
+// Why `graph` cannot run on this device or scene, or nullopt when it can.
+std::optional<Unsupported> check_supported(const GpuContext& gpu, const Scene& scene, const FrameGraph& graph);
+std::optional<std::string> unsupported_reason(const GpuContext& gpu, const Scene& scene, const FrameGraph& graph);
 
 class FrameRenderer {
 public:
     FrameRenderer(const GpuContext& gpu, const Scene& scene, const std::vector<TriangleMesh>& meshes,
-                  uint32_t width, uint32_t height, const FramePlan& plan);
+                  uint32_t width, uint32_t height, FrameGraph graph);
     ~FrameRenderer();
     FrameRenderer(const FrameRenderer&) = delete;
     FrameRenderer& operator=(const FrameRenderer&) = delete;
 
+    // One frame from the scene's camera, the frame index counting up from 0.
     FrameTiming render();
+    // One frame in `state` (its camera, its frame index).
+    FrameTiming render(const FrameState& state);
+    // The load phase's timing (run once, at construction), pass names in load_pass_names().
+    const FrameTiming& load_timing() const { return load_timing_; }
+
     Image read_color() const;  // the last rendered frame, linear RGB, A = 1
     // The last frame at its pixel centres (core/pixel_visibility.hpp): the visibility the lit pass
     // gave the shadow light (the colour target's alpha) and the view depth of the surface drawn
@@ -60,47 +67,39 @@ public:
         Image color, visibility;
     };
     ColorAndVisibility read_color_and_pixel_visibility() const;
-    // Intermediate buffers of the last frame, for tests and debugging: the coarse map (R = depth;
-    // needs ShadowMapNeeds::coarse_filters) and the screen-shadow buffer after its filters
-    // (needs FramePlan::screen_shadow). Throw std::logic_error when the plan has none.
-    Image read_coarse_map() const;
-    Image read_screen_shadow() const;
-    const std::vector<std::string>& pass_names() const { return timer_->pass_names(); }
+    // Any image the graph declares, one mip and layer, as RGBA floats (R32F, RG32F, RGBA32F,
+    // RGBA16F and D32F images), for tests and debugging. Throws std::logic_error for unknown names.
+    Image read_image(const std::string& name, uint32_t mip = 0, uint32_t layer = 0) const;
+    // The bytes of a buffer the graph declares (tests check what GPU passes wrote).
+    std::vector<std::byte> read_buffer(const std::string& name) const;
+
+    const std::vector<std::string>& pass_names() const { return executor_->gpu_pass_names(Phase::frame); }
+    const std::vector<std::string>& cpu_pass_names() const { return executor_->cpu_pass_names(Phase::frame); }
+    const std::vector<std::string>& load_pass_names() const { return executor_->gpu_pass_names(Phase::load); }
+    const std::vector<std::string>& load_cpu_pass_names() const { return executor_->cpu_pass_names(Phase::load); }
     MemoryUse memory() const;
     size_t triangle_count() const { return scene_->triangle_count(); }
-    // "compare-linear" when hardware 2x2 PCF sampling is bound, "nearest" for a plain depth map,
-    // "linear-<format>" for a moment map, "" without any map.
+    size_t pipeline_count() const { return executor_->pipeline_count(); }
+    // What the graph reported as "shadow_sampler" ("compare-linear", "nearest", "linear-<format>"),
+    // "" when it reports none.
     std::string shadow_sampler() const;
 
 private:
-    void create_descriptors();
-    void bind_image(uint32_t binding, VkSampler sampler, VkImageView view, VkImageLayout layout);
-    void record();
+    void write_uniforms(const Camera& camera);
 
     const GpuContext& gpu_;
-    FramePlan plan_;
-    glm::vec3 background_;
-    float near_plane_ = 0.0f, far_plane_ = 0.0f;  // the camera's, to turn stored depth into view depth
+    Scene scene_description_;  // its camera, lights and ambient fill the frame uniforms
+    uint32_t width_, height_;
     MemoryLedger ledger_;
     std::unique_ptr<GpuScene> scene_;
     std::optional<LightView> light_view_;
-    VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
-    VkPipelineLayout pipeline_layout_ = VK_NULL_HANDLE;
-    VkDescriptorPool descriptor_pool_ = VK_NULL_HANDLE;
-    VkDescriptorSet descriptor_set_ = VK_NULL_HANDLE;
-    VkSampler nearest_sampler_ = VK_NULL_HANDLE;
-    VkSampler compare_sampler_ = VK_NULL_HANDLE;
-    VkSampler moment_sampler_ = VK_NULL_HANDLE;
+    std::optional<uint32_t> light_view_resolution_;
+    ShaderParams shader_params_;
     Buffer uniforms_;
-    std::unique_ptr<ShadowMapPass> shadow_pass_;
-    std::unique_ptr<MomentMapPass> moment_pass_;
-    std::unique_ptr<FilterChain> coarse_map_;
-    std::unique_ptr<ScreenShadowPass> screen_pass_;
-    std::unique_ptr<LitPass> lit_pass_;
-    std::unique_ptr<PassTimer> timer_;
-    VkCommandPool command_pool_ = VK_NULL_HANDLE;
-    VkCommandBuffer commands_ = VK_NULL_HANDLE;
-    VkFence fence_ = VK_NULL_HANDLE;
+    std::unique_ptr<GraphExecutor> executor_;
+    FrameTiming load_timing_;
+    uint32_t next_frame_ = 0;
+    float near_plane_ = 0, far_plane_ = 0;  // of the last frame's camera: stored depth to view depth
 };
 
 }  // namespace canopy

@@ -83,7 +83,7 @@ PreparedExperiment prepare_experiment(const Experiment& experiment, const Techni
     std::vector<Refused> refused;
     for (const Case& c : prepared.cases) {
         const Technique* technique = registry.find(c.technique);
-        if (auto why = check_supported(gpu, experiment.scenes[c.scene_index], technique->plan(c.params)))
+        if (auto why = check_supported(gpu, experiment.scenes[c.scene_index], technique->graph(c.params)))
             refused.push_back({&c, std::move(*why)});
     }
     if (refused.empty()) return prepared;

@@ -144,7 +144,7 @@ void build(LiveCase& live, const GpuContext& gpu, const GroupInput& group) {
     const GroupCase& gc = group.cases[live.index];
     try {
         live.renderer = std::make_unique<FrameRenderer>(gpu, *group.scene, *group.meshes, uint32_t(gc.c->resolution.width),
-                                                        uint32_t(gc.c->resolution.height), gc.technique->plan(gc.c->params));
+                                                        uint32_t(gc.c->resolution.height), gc.technique->graph(gc.c->params));
         live.pass_names = live.renderer->pass_names();
         if (gc.ballast_iterations > 0) {
             live.ballast = std::make_unique<Ballast>(gpu, uint32_t(gc.c->resolution.width),

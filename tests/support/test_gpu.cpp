@@ -19,10 +19,10 @@ GpuContext& gpu() {
     return context;
 }
 
-FramePlan technique_plan(const std::string& technique, const std::map<std::string, ParamValue>& params) {
+FrameGraph technique_graph(const std::string& technique, const std::map<std::string, ParamValue>& params) {
     const Technique* t = TechniqueRegistry::instance().find(technique);
     if (!t) throw std::invalid_argument("no technique " + technique);
-    return t->plan(ParamSet::resolve(t->params(), params, {}, SourceLocation{}, technique));
+    return t->graph(ParamSet::resolve(t->params(), params, {}, SourceLocation{}, technique));
 }
 
 Image render_technique(const Scene& scene, const std::string& technique,
@@ -33,7 +33,7 @@ Image render_technique(const Scene& scene, const std::string& technique,
 Image render_technique(GpuContext& context, const Scene& scene, const std::string& technique,
                        const std::map<std::string, ParamValue>& params, int width, int height) {
     FrameRenderer renderer(context, scene, build_scene_meshes(scene), uint32_t(width), uint32_t(height),
-                           technique_plan(technique, params));
+                           technique_graph(technique, params));
     renderer.render();
     return renderer.read_color();
 }

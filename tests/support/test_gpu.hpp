@@ -18,8 +18,8 @@ std::string device_selector();
 
 GpuContext& gpu();
 
-// The plan of registered `technique` with `params`, the rest at their defaults.
-FramePlan technique_plan(const std::string& technique, const std::map<std::string, ParamValue>& params = {});
+// The frame graph of registered `technique` with `params`, the rest at their defaults.
+FrameGraph technique_graph(const std::string& technique, const std::map<std::string, ParamValue>& params = {});
 
 // Renders one frame of `technique` with `params` (the rest at their defaults) over `scene`, with
 // a FrameRenderer of its own, on `context` (default: gpu()).

@@ -2,7 +2,8 @@
 // for (prefilter_param_list.h declares them: map resolution, channel precision, prefilter width).
 #pragma once
 
-#include "core/technique.hpp"
+#include "core/param.hpp"
+#include "shadow_plan.hpp"
 
 namespace canopy {
 

@@ -2,7 +2,8 @@
 // (shadow_map_param_list.h declares them).
 #pragma once
 
-#include "core/technique.hpp"
+#include "core/param.hpp"
+#include "shadow_plan.hpp"
 
 namespace canopy {
 

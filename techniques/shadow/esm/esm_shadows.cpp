@@ -6,7 +6,7 @@
 #include "shadow_filtering.h"
 #include "esm_params.h"
 #include "../common/prefilter_params.hpp"
-#include "../common/shadow_family.hpp"
+#include "../common/shadow_technique.hpp"
 
 #include <fmt/format.h>
 
@@ -15,7 +15,7 @@
 namespace canopy {
 namespace {
 
-class ExponentialShadows final : public Technique {
+class ExponentialShadows final : public ShadowTechnique {
 public:
     std::string name() const override { return "shadow.esm"; }
     std::string summary() const override { return "exponential shadow maps: prefiltered exp(c z), linear or log space"; }
@@ -46,13 +46,12 @@ public:
         return conflict;
     }
 
-    ErrorColumns error_columns() const override { return kShadowErrorColumns; }
 
-    FramePlan plan(const ParamSet& params) const override {
+    ShadowPlan plan(const ParamSet& params) const override {
         const shader::EsmParams block = shader::EsmParams::from(params);
         const float c = block.exponent;
         const bool log_space = block.log_space != 0;
-        FramePlan plan;
+        ShadowPlan plan;
         // The clear value is the statistic of depth 1 (no caster): exp(c), finite since conflict()
         // refuses exponents linear storage cannot hold.
         const float far_value = log_space ? c : std::exp(c);

@@ -5,12 +5,12 @@
 #include "shadow_filtering.h"
 #include "msm_params.h"
 #include "../common/prefilter_params.hpp"
-#include "../common/shadow_family.hpp"
+#include "../common/shadow_technique.hpp"
 
 namespace canopy {
 namespace {
 
-class MomentShadows final : public Technique {
+class MomentShadows final : public ShadowTechnique {
 public:
     std::string name() const override { return "shadow.msm"; }
     std::string summary() const override { return "moment shadow maps: 4 moments, Hamburger reconstruction"; }
@@ -18,11 +18,10 @@ public:
 
     std::vector<ParamSpec> params() const override { return shader::MsmParams::specs(); }
 
-    ErrorColumns error_columns() const override { return kShadowErrorColumns; }
 
-    FramePlan plan(const ParamSet& params) const override {
+    ShadowPlan plan(const ParamSet& params) const override {
         const glm::vec4 far_moments = shader::msm_encode(1.0f);
-        FramePlan plan;
+        ShadowPlan plan;
         plan.moment_map = moment_map_needs(params, 4, msm_depth_frag,
                                            {far_moments.x, far_moments.y, far_moments.z, far_moments.w});
         if (params.choice("precision") == "unorm16") plan.moment_map->format = MomentFormat::rgba16unorm;

@@ -4,14 +4,14 @@
 #include "pcf_params.h"
 #include "../common/poisson_disk.hpp"
 #include "../common/shadow_map_params.hpp"
-#include "../common/shadow_family.hpp"
+#include "../common/shadow_technique.hpp"
 
 #include <algorithm>
 
 namespace canopy {
 namespace {
 
-class PcfShadows final : public Technique {
+class PcfShadows final : public ShadowTechnique {
 public:
     std::string name() const override { return "shadow.pcf"; }
     std::string summary() const override { return "percentage-closer filtering: average of k*k depth tests"; }
@@ -19,9 +19,8 @@ public:
 
     std::vector<ParamSpec> params() const override { return shader::PcfParams::specs(); }
 
-    ErrorColumns error_columns() const override { return kShadowErrorColumns; }
 
-    FramePlan plan(const ParamSet& params) const override {
+    ShadowPlan plan(const ParamSet& params) const override {
         shader::PcfParams block = shader::PcfParams::from(params);
         const bool poisson = block.pattern == PCF_PATTERN_POISSON;
         const bool hardware = block.hardware_2x2 != 0;
@@ -30,7 +29,7 @@ public:
         // grid's k-texel footprint. A bilinear tap reaches half a texel further.
         block.reach = (poisson ? 0.5f * float(block.kernel) : 0.5f * float(block.kernel - 1)) + (hardware ? 0.5f : 0.0f);
 
-        FramePlan plan;
+        ShadowPlan plan;
         plan.shadow_map = shadow_map_needs(params);
         plan.shadow_map->compare_sampler = hardware;
         plan.forward_fragment_spirv = pcf_frag;

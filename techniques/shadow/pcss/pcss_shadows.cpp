@@ -3,12 +3,12 @@
 #include "shaders/pcss_frag.h"
 #include "pcss_params.h"
 #include "../common/shadow_map_params.hpp"
-#include "../common/shadow_family.hpp"
+#include "../common/shadow_technique.hpp"
 
 namespace canopy {
 namespace {
 
-class PercentageCloserSoftShadows final : public Technique {
+class PercentageCloserSoftShadows final : public ShadowTechnique {
 public:
     std::string name() const override { return "shadow.pcss"; }
     std::string summary() const override { return "percentage-closer soft shadows: blocker search, eq 6.1 penumbra, PCF"; }
@@ -16,10 +16,9 @@ public:
 
     std::vector<ParamSpec> params() const override { return shader::PcssParams::specs(); }
 
-    ErrorColumns error_columns() const override { return kShadowErrorColumns; }
 
-    FramePlan plan(const ParamSet& params) const override {
-        FramePlan plan;
+    ShadowPlan plan(const ParamSet& params) const override {
+        ShadowPlan plan;
         plan.shadow_map = shadow_map_needs(params);
         plan.needs_area_light = true;
         plan.forward_fragment_spirv = pcss_frag;

@@ -5,22 +5,21 @@
 #include "shaders/power_cdf_frag.h"
 #include "power_cdf_params.h"
 #include "../common/prefilter_params.hpp"
-#include "../common/shadow_family.hpp"
+#include "../common/shadow_technique.hpp"
 
 namespace canopy {
 namespace {
 
-class PowerCdfShadows final : public Technique {
+class PowerCdfShadows final : public ShadowTechnique {
 public:
     std::string name() const override { return "shadow.power-cdf"; }
     std::string summary() const override { return "CDF reconstructed as t^beta from prefiltered min, max and mean depth"; }
     std::string paper() const override { return "Gumbau 2011 eq 7.5-7.7, Table 7.1 'CDF recons. 32/16 bits'"; }
     std::vector<ParamSpec> params() const override { return shader::PowerCdfParams::specs(); }
 
-    ErrorColumns error_columns() const override { return kShadowErrorColumns; }
 
-    FramePlan plan(const ParamSet& params) const override {
-        FramePlan plan;
+    ShadowPlan plan(const ParamSet& params) const override {
+        ShadowPlan plan;
         plan.moment_map = moment_map_needs(params, 4, power_cdf_depth_frag, {1.0f, 1.0f, 1.0f, 1.0f},
                                            min_max_mean_filter_comp);
         plan.forward_fragment_spirv = power_cdf_frag;

@@ -7,12 +7,12 @@
 #include "shaders/ssss_screen_frag.h"
 #include "ssss_params.h"
 #include "../common/shadow_map_params.hpp"
-#include "../common/shadow_family.hpp"
+#include "../common/shadow_technique.hpp"
 
 namespace canopy {
 namespace {
 
-class ScreenSpaceSoftShadows final : public Technique {
+class ScreenSpaceSoftShadows final : public ShadowTechnique {
 public:
     std::string name() const override { return "shadow.ssss"; }
     std::string summary() const override {
@@ -22,11 +22,10 @@ public:
 
     std::vector<ParamSpec> params() const override { return shader::SsssParams::specs(); }
 
-    ErrorColumns error_columns() const override { return kShadowErrorColumns; }
 
-    FramePlan plan(const ParamSet& params) const override {
+    ShadowPlan plan(const ParamSet& params) const override {
         const shader::SsssParams block = shader::SsssParams::from(params);
-        FramePlan plan;
+        ShadowPlan plan;
         plan.shadow_map = shadow_map_needs(params);
         // The coarse map (6.2.1): block minima of the depth map, then a separable min filter whose
         // reach follows the light's size (ssss_dilate.comp), up to kMaxDilation coarse texels.

@@ -3,6 +3,7 @@
 // visibility must be finite, in [0, 1], non-increasing in the receiver depth and 1 in front of
 // its occluders; a NaN anywhere fails with a message naming the function and its inputs.
 #include "core/registry.hpp"
+#include "../common/shadow_technique.hpp"
 #include "shadow_common.h"
 #include "shadow_filtering.h"
 #include "../evsm/evsm_params.h"
@@ -184,8 +185,8 @@ std::vector<Footprint> footprints() {
 float footprint_min(const Footprint& f) { return *std::min_element(f.z.begin(), f.z.end()); }
 
 // A technique's plan for `given` parameters (the rest at their defaults): what its shaders get.
-canopy::FramePlan plan_of(const std::string& technique, const std::map<std::string, canopy::ParamValue>& given = {}) {
-    const canopy::Technique& t = *canopy::TechniqueRegistry::instance().find(technique);
+canopy::ShadowPlan plan_of(const std::string& technique, const std::map<std::string, canopy::ParamValue>& given = {}) {
+    const auto& t = dynamic_cast<const canopy::ShadowTechnique&>(*canopy::TechniqueRegistry::instance().find(technique));
     return t.plan(canopy::ParamSet::resolve(t.params(), given, {}, {}, technique));
 }
 
@@ -691,7 +692,7 @@ TEST_CASE("EVSM at the technique's default exponents: an edge's lit fraction fro
     struct Precision { std::string name; std::function<float(float)> quantise; float tolerance; float lit; };
     for (const Precision& precision : {Precision{"fp32", [](float x) { return x; }, 1e-5f, 0.0f},
                                        Precision{"fp16", half, 0.02f, 1e-4f}}) {
-        const canopy::FramePlan plan = plan_of("shadow.evsm", {{"precision", precision.name}});
+        const canopy::ShadowPlan plan = plan_of("shadow.evsm", {{"precision", precision.name}});
         const auto block = plan.shader_params.get_block<canopy::shader::EvsmParams>();
         const float c_pos = block.c_pos, c_neg = block.c_neg;
         const float min_variance = block.min_variance;

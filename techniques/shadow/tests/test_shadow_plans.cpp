@@ -2,6 +2,7 @@
 // taps and its Poisson tables.
 #include "core/error.hpp"
 #include "core/registry.hpp"
+#include "../common/shadow_technique.hpp"
 #include "../common/poisson_disk.hpp"
 #include "../pcf/pcf_params.h"
 
@@ -20,8 +21,8 @@ ParamSet resolve(const Technique& t, std::map<std::string, ParamValue> given = {
 }  // namespace
 
 TEST_CASE("shadow-map parameters reach the plan") {
-    const Technique& hard = *TechniqueRegistry::instance().find("shadow.hard");
-    const FramePlan plan = hard.plan(resolve(hard, {{"resolution", 512LL}, {"depth_format", std::string("d16")}}));
+    const auto& hard = dynamic_cast<const ShadowTechnique&>(*TechniqueRegistry::instance().find("shadow.hard"));
+    const ShadowPlan plan = hard.plan(resolve(hard, {{"resolution", 512LL}, {"depth_format", std::string("d16")}}));
     REQUIRE(plan.shadow_map.has_value());
     CHECK(plan.shadow_map->resolution == 512);
     CHECK(plan.shadow_map->format == DepthFormat::d16);
@@ -29,17 +30,17 @@ TEST_CASE("shadow-map parameters reach the plan") {
 }
 
 TEST_CASE("PCF plans k*k samples and its Poisson tables fit the uniform block for every kernel") {
-    const Technique& pcf = *TechniqueRegistry::instance().find("shadow.pcf");
+    const auto& pcf = dynamic_cast<const ShadowTechnique&>(*TechniqueRegistry::instance().find("shadow.pcf"));
     for (long long k = 1; k <= 11; ++k) {
         CAPTURE(k);
-        const FramePlan grid = pcf.plan(resolve(pcf, {{"kernel", k}}));
+        const ShadowPlan grid = pcf.plan(resolve(pcf, {{"kernel", k}}));
         CHECK(grid.shader_params.get_block<shader::PcfParams>().count == k * k);
         CHECK(grid.shader_params.offsets.empty());
-        const FramePlan poisson = pcf.plan(resolve(pcf, {{"kernel", k}, {"pattern", std::string("poisson")}}));
+        const ShadowPlan poisson = pcf.plan(resolve(pcf, {{"kernel", k}, {"pattern", std::string("poisson")}}));
         CHECK(poisson.shader_params.offsets.size() == size_t(k * k));
         CHECK(poisson.shader_params.offsets.size() <= ShaderParams::kMaxOffsets);
     }
-    const FramePlan hardware = pcf.plan(resolve(pcf, {{"hardware_2x2", true}}));
+    const ShadowPlan hardware = pcf.plan(resolve(pcf, {{"hardware_2x2", true}}));
     CHECK(hardware.shadow_map->compare_sampler);
     CHECK_THROWS_AS(resolve(pcf, {{"kernel", 12LL}}), ConfigError);
 }

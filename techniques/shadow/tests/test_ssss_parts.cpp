@@ -5,13 +5,16 @@
 //  * the Gaussian's sigma from eq 6.2, in numbers and as the screen pass writes it;
 //  * the blur's taps (Gaussian weights of the pixels actually read), its depth-discontinuity
 //    rejection (6.2.3), lazy shadowing (6.3.2) and the mask of pixels it leaves alone (6.2.2).
-// Synthetic inputs run through the technique's own passes (its FramePlan's FilterPasses) in a
-// FilterChain; the expected values come from ssss_filter.h, the header those shaders include.
-#include "render/filter_chain.hpp"
+// Synthetic inputs run through the technique's own passes (its ShadowPlan's FilterPasses) in the
+// family's filter chain (add_filter_chain); the expected values come from ssss_filter.h, the header those shaders include.
+#include "core/registry.hpp"
+#include "graph/graph_executor.hpp"
+#include "graph/pass_context.hpp"
+#include "graph/graph_readback.hpp"
+#include "../common/shadow_technique.hpp"
 #include "render/frame_renderer.hpp"
 #include "render/frame_uniforms.hpp"
 #include "render/light_view.hpp"
-#include "render/texture_readback.hpp"
 #include "scene/camera.hpp"
 #include "scene/geometry.hpp"
 #include "support/test_gpu.hpp"
@@ -42,50 +45,70 @@ namespace {
 // ---------------------------------------------------------------------------------------------
 // Device inputs for a FilterChain.
 
-// A float texture holding `texels` (1 or 4 floats each), left in SHADER_READ_ONLY_OPTIMAL.
-Texture upload_texture(MemoryLedger& ledger, uint32_t width, uint32_t height, VkFormat format,
-                       const std::vector<float>& texels) {
+// A float texture's texels (1 or 4 floats each, or depth), uploaded by run_passes.
+struct SyntheticTexture {
+    uint32_t width = 0, height = 0;
+    VkFormat format = VK_FORMAT_UNDEFINED;
+    std::vector<float> texels;
+};
+
+SyntheticTexture upload_texture(MemoryLedger&, uint32_t width, uint32_t height, VkFormat format,
+                                const std::vector<float>& texels) {
+    return {width, height, format, texels};
+}
+
+FrameUniforms upload_uniforms(MemoryLedger&, const FrameUniforms& u) { return u; }
+
+// What a chain's passes read besides their source: the frame uniforms (binding 2), the depth map
+// (binding 3), the normals (binding 4).
+struct ChainInputs {
+    const FrameUniforms* frame = nullptr;
+    const SyntheticTexture* shadow_depth = nullptr;
+    const SyntheticTexture* normals = nullptr;
+};
+
+// Runs `passes` over `source` through the shadow family's own filter chain (add_filter_chain) in
+// a frame graph of their own: a load-phase copy pass uploads the inputs, the frame runs the
+// chain; the result is read back.
+Image run_passes(const SyntheticTexture& source, VkFormat format, const std::vector<FilterPass>& passes,
+                 const ChainInputs& inputs) {
     const GpuContext& gpu = test::gpu();
-    const bool depth = format == VK_FORMAT_D32_SFLOAT;
-    const VkImageUsageFlags usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
-                                    (depth ? 0 : VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
-    const VkImageAspectFlags aspect = depth ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT;
-    Texture texture(gpu, ledger, "test", width, height, format, usage, aspect);
-    Buffer staging(gpu, ledger, "test", texels.size() * sizeof(float), VK_BUFFER_USAGE_TRANSFER_SRC_BIT, true);
-    std::memcpy(staging.mapped(), texels.data(), texels.size() * sizeof(float));
-    VkCommandBuffer commands = gpu.begin_commands();
-    transition(commands, texture, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
-    VkBufferImageCopy region{};
-    region.imageSubresource = {aspect, 0, 0, 1};
-    region.imageExtent = {width, height, 1};
-    vkCmdCopyBufferToImage(commands, staging.handle(), texture.image(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-    transition(commands, texture, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-               depth ? VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
-    gpu.submit_and_wait(commands);
-    return texture;
-}
-
-Buffer upload_uniforms(MemoryLedger& ledger, const FrameUniforms& u) {
-    Buffer buffer(test::gpu(), ledger, "test", sizeof(FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
-    std::memcpy(buffer.mapped(), &u, sizeof(u));
-    return buffer;
-}
-
-// Runs `passes` over `source` (SHADER_READ_ONLY) and reads the result back.
-Image run_passes(const Texture& source, VkFormat format, const std::vector<FilterPass>& passes,
-                 const FilterExtras& extras) {
+    FrameGraph graph;
+    PassDecl upload{"upload_inputs", PassKind::copy, Phase::load};
+    std::vector<std::pair<std::string, const SyntheticTexture*>> textures{{"source", &source}};
+    if (inputs.shadow_depth) textures.push_back({"depth_map", inputs.shadow_depth});
+    if (inputs.normals) textures.push_back({"normals", inputs.normals});
+    for (const auto& [name, texture] : textures) {
+        ImageDecl image{name, texture->format, ImageExtent::texels(texture->width, texture->height)};
+        image.persistent = true;
+        graph.images.push_back(image);
+        upload.uses.push_back({name, Use::transfer_write});
+    }
+    upload.record = [textures](PassContext& pc) {
+        for (const auto& [name, texture] : textures)
+            pc.upload_image(name, texture->texels.data(), texture->texels.size() * sizeof(float));
+    };
+    graph.passes.push_back(std::move(upload));
+    const std::string result =
+        add_filter_chain(graph, "chain", "source", false, source.width, source.height, format, passes,
+                         FilterChainInputs{inputs.frame != nullptr, inputs.shadow_depth ? "depth_map" : "",
+                                           inputs.normals ? "normals" : ""},
+                         false);
     MemoryLedger ledger;
-    FilterChain chain(test::gpu(), ledger, "test", source.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, nullptr,
-                      source.width(), source.height(), format, passes, extras);
-    VkCommandBuffer commands = test::gpu().begin_commands();
-    for (size_t i = 0; i < chain.size(); ++i) chain.record(commands, i);
-    test::gpu().submit_and_wait(commands);
-    return read_texture(test::gpu(), chain.result_texture(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    Buffer frame(gpu, ledger, "test", sizeof(FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
+    const FrameUniforms uniforms = inputs.frame ? *inputs.frame : FrameUniforms{};
+    std::memcpy(frame.mapped(), &uniforms, sizeof(uniforms));
+    const GpuScene no_geometry(gpu, ledger, Scene{}, {});
+    GraphExecutor executor(gpu, ledger, std::move(graph), source.width, source.height, frame, no_geometry);
+    executor.run_load(FrameState{});
+    executor.run_frame(FrameState{});
+    return read_graph_image(gpu, executor, result);
 }
 
 // shadow.ssss's plan for `given` parameters (the rest at their defaults).
-FramePlan ssss_plan(const std::map<std::string, ParamValue>& given = {}) {
-    return test::technique_plan("shadow.ssss", given);
+ShadowPlan ssss_plan(const std::map<std::string, ParamValue>& given = {}) {
+    const auto& ssss = dynamic_cast<const ShadowTechnique&>(*TechniqueRegistry::instance().find("shadow.ssss"));
+    return ssss.plan(ParamSet::resolve(ssss.params(), given, {}, SourceLocation{}, "shadow.ssss"));
 }
 
 // The frame a rect light of width `light_width` (mean side) gives the coarse passes: a
@@ -109,11 +132,13 @@ struct Rendered {
 // One frame of shadow.ssss with `given`; the screen buffer before the blur when `without_blur`.
 Rendered render_ssss(const Scene& scene, int width, int height, const std::map<std::string, ParamValue>& given,
                      bool without_blur) {
-    FramePlan plan = ssss_plan(given);
+    ShadowPlan plan = ssss_plan(given);
     if (without_blur) plan.screen_shadow->filters.clear();
-    FrameRenderer renderer(test::gpu(), scene, build_scene_meshes(scene), uint32_t(width), uint32_t(height), plan);
+    FrameRenderer renderer(test::gpu(), scene, build_scene_meshes(scene), uint32_t(width), uint32_t(height),
+                           shadow_graph(plan));
     renderer.render();
-    return {renderer.read_coarse_map(), renderer.read_screen_shadow(), renderer.read_color()};
+    return {renderer.read_image(shadow_images::coarse_map(plan)), renderer.read_image(shadow_images::screen_shadow(plan)),
+            renderer.read_color()};
 }
 
 }  // namespace
@@ -129,8 +154,8 @@ TEST_CASE("SSSS coarse map: each texel is the minimum of its block, partial bloc
             std::vector<float> depth(size_t(size) * size);
             for (float& d : depth) d = u(rng);
             MemoryLedger ledger;
-            const Texture source = upload_texture(ledger, size, size, VK_FORMAT_R32_SFLOAT, depth);
-            const FramePlan plan = ssss_plan({{"coarse_block", block}});
+            const SyntheticTexture source = upload_texture(ledger, size, size, VK_FORMAT_R32_SFLOAT, depth);
+            const ShadowPlan plan = ssss_plan({{"coarse_block", block}});
             const FilterPass& block_pass = plan.shadow_map->coarse_filters.front();
             REQUIRE(block_pass.downsample == block);
             const Image coarse = run_passes(source, VK_FORMAT_R32_SFLOAT, {block_pass}, {});
@@ -195,17 +220,17 @@ TEST_CASE("SSSS dilation: reach over the blur's support (3 sigma of eq 6.1's wid
     put(near_coarse, z_near);
     put(far_coarse, z_far);
     MemoryLedger ledger;
-    const Texture source = upload_texture(ledger, size, size, VK_FORMAT_R32_SFLOAT, depth);
-    const FramePlan plan = ssss_plan({{"coarse_block", (long long)block}, {"occluder_distance", 0.25}});
+    const SyntheticTexture source = upload_texture(ledger, size, size, VK_FORMAT_R32_SFLOAT, depth);
+    const ShadowPlan plan = ssss_plan({{"coarse_block", (long long)block}, {"occluder_distance", 0.25}});
     std::vector<float> near_reaches;
     std::vector<int> near_radii;
     for (float light : {0.1f, 0.2f, 0.4f}) {
         CAPTURE(light);
         FrameUniforms uniforms = coarse_frame(light, near_plane, far_plane, texel);
         uniforms.technique = plan.shader_params.block;  // the dilation reads coarse_block, occluder_distance
-        const Buffer frame = upload_uniforms(ledger, uniforms);
+        const FrameUniforms frame = upload_uniforms(ledger, uniforms);
         const Image coarse = run_passes(source, VK_FORMAT_R32_SFLOAT, plan.shadow_map->coarse_filters,
-                                        FilterExtras{frame.handle()});
+                                        ChainInputs{&frame});
         // Expected: the largest coarse offset each blocker reaches (occluder distance 0.25 x 4 = 1).
         auto reach_of = [&](float z) {
             return sh::ssss_dilation_texels(near_plane + z * (far_plane - near_plane), 1.0f, far_plane, light, texel, true);
@@ -434,22 +459,22 @@ struct BlurScreen {
 Image blur_x(const BlurScreen& screen, const std::vector<float>& data, const std::map<std::string, ParamValue>& given,
              glm::vec3 normal = {0.0f, 0.0f, 1.0f}) {
     MemoryLedger ledger;
-    const Texture source = upload_texture(ledger, BlurScreen::kWidth, BlurScreen::kHeight, VK_FORMAT_R32G32B32A32_SFLOAT, data);
+    const SyntheticTexture source = upload_texture(ledger, BlurScreen::kWidth, BlurScreen::kHeight, VK_FORMAT_R32G32B32A32_SFLOAT, data);
     std::vector<float> normals;
     for (int i = 0; i < BlurScreen::kWidth * BlurScreen::kHeight; ++i) normals.insert(normals.end(), {normal.x, normal.y, normal.z, 1.0f});
-    const Texture normal_map = upload_texture(ledger, BlurScreen::kWidth, BlurScreen::kHeight, VK_FORMAT_R32G32B32A32_SFLOAT, normals);
+    const SyntheticTexture normal_map = upload_texture(ledger, BlurScreen::kWidth, BlurScreen::kHeight, VK_FORMAT_R32G32B32A32_SFLOAT, normals);
     std::vector<float> depth(64 * 64, 1.0f);
     for (int y = 0; y < 64; ++y)
         for (int x = 0; x < BlurScreen::kBlockerColumns; ++x) depth[size_t(y) * 64 + size_t(x)] = 0.1f;
-    const Texture shadow_map = upload_texture(ledger, 64, 64, VK_FORMAT_D32_SFLOAT, depth);
-    const FramePlan plan = ssss_plan(given);
+    const SyntheticTexture shadow_map = upload_texture(ledger, 64, 64, VK_FORMAT_D32_SFLOAT, depth);
+    const ShadowPlan plan = ssss_plan(given);
     FrameUniforms uniforms = screen.frame;
     uniforms.technique = plan.shader_params.block;  // taps, depth_error, lazy and the bias
-    const Buffer frame = upload_uniforms(ledger, uniforms);
+    const FrameUniforms frame = upload_uniforms(ledger, uniforms);
     const FilterPass& pass = plan.screen_shadow->filters.front();
     REQUIRE(pass.horizontal);
     return run_passes(source, VK_FORMAT_R32G32B32A32_SFLOAT, {pass},
-                      FilterExtras{frame.handle(), shadow_map.view(), normal_map.view()});
+                      ChainInputs{&frame, &shadow_map, &normal_map});
 }
 
 // ssss_blur.comp's horizontal pass at pixel (x, y) in C++, from ssss_filter.h: `data` as uploaded,

@@ -4,12 +4,12 @@
 #include "shaders/vsm_frag.h"
 #include "vsm_params.h"
 #include "../common/prefilter_params.hpp"
-#include "../common/shadow_family.hpp"
+#include "../common/shadow_technique.hpp"
 
 namespace canopy {
 namespace {
 
-class VarianceShadows final : public Technique {
+class VarianceShadows final : public ShadowTechnique {
 public:
     std::string name() const override { return "shadow.vsm"; }
     std::string summary() const override { return "variance shadow maps: Chebyshev bound on prefiltered depth moments"; }
@@ -17,10 +17,9 @@ public:
 
     std::vector<ParamSpec> params() const override { return shader::VsmParams::specs(); }
 
-    ErrorColumns error_columns() const override { return kShadowErrorColumns; }
 
-    FramePlan plan(const ParamSet& params) const override {
-        FramePlan plan;
+    ShadowPlan plan(const ParamSet& params) const override {
+        ShadowPlan plan;
         plan.moment_map = moment_map_needs(params, 2, two_moments_frag, {1.0f, 1.0f, 0.0f, 1.0f});
         plan.forward_fragment_spirv = vsm_frag;
         plan.shader_params.set_block(shader::VsmParams::from(params));

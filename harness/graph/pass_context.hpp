@@ -1,0 +1,80 @@
+// The services a pass records with instead of raw Vulkan. The executor has already bound the
+// pass's descriptor set (its declared descriptor uses), inserted the barriers its uses need and,
+// for a raster pass, begun rendering into its declared attachments; a pass only picks pipelines
+// and draws, dispatches or copies. Resources are named as the graph declares them.
+#pragma once
+
+#include "core/frame_state.hpp"
+#include "graph/raster_state.hpp"
+
+#include <vulkan/vulkan.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string>
+
+namespace canopy {
+
+// Which of the scene's objects a scene draw covers.
+enum class SceneFilter { all, shadow_casters };
+
+class PassContext {
+public:
+    virtual ~PassContext() = default;
+    virtual const FrameState& frame() const = 0;
+
+    // A pipeline for this pass (cached: the same state returns the same pipeline, created once).
+    virtual VkPipeline raster_pipeline(const RasterState& state) = 0;
+    virtual VkPipeline compute_pipeline(std::span<const uint32_t> spirv) = 0;
+
+    // Raster passes.
+    virtual void bind(VkPipeline pipeline) = 0;
+    // The scene's objects with the scene's vertex layout; each draw pushes its DrawConstants.
+    virtual void draw_scene(SceneFilter filter) = 0;
+    // Geometry the technique owns: vertex buffers bound in the pipeline's binding order.
+    virtual void draw(std::span<const std::string> vertex_buffers, uint32_t vertex_count, uint32_t instance_count) = 0;
+    virtual void draw_indexed(std::span<const std::string> vertex_buffers, const std::string& index_buffer,
+                              uint32_t index_count, uint32_t instance_count) = 0;
+    // Draws whose arguments (VkDrawIndexedIndirectCommand records) and count a GPU pass wrote:
+    // no CPU readback.
+    virtual void draw_indexed_indirect_count(std::span<const std::string> vertex_buffers, const std::string& index_buffer,
+                                             const std::string& arguments, const std::string& count,
+                                             uint32_t max_draws) = 0;
+
+    // Push constants for the next draw or dispatch (up to the pass's declared bytes).
+    virtual void push_constants(const void* bytes, uint32_t size) = 0;
+
+    // Compute passes.
+    virtual void dispatch(VkPipeline pipeline, uint32_t groups_x, uint32_t groups_y, uint32_t groups_z) = 0;
+
+    // Transfers (copy passes, and resets inside compute passes).
+    virtual void fill(const std::string& buffer, uint32_t value) = 0;
+    // Copies bytes into a buffer through a staging buffer; counted in the frame's uploaded bytes.
+    virtual void upload(const std::string& buffer, const void* bytes, size_t size, size_t offset = 0) = 0;
+    virtual void copy_buffer(const std::string& from, const std::string& to) = 0;
+    // Copies tightly packed texels into one mip and layer of an image (transfer-write use);
+    // counted in the uploaded bytes.
+    virtual void upload_image(const std::string& image, const void* bytes, size_t size, uint32_t mip = 0,
+                              uint32_t layer = 0) = 0;
+
+    // The extent of an image's mip 0, as allocated.
+    virtual VkExtent2D extent(const std::string& image) const = 0;
+
+    // For what the services do not cover yet; prefer adding a service.
+    virtual VkCommandBuffer raw_commands() = 0;
+};
+
+// CPU passes run on the CPU when the frame is recorded, timed with a steady clock. A GPU resource
+// they read holds what the previous frame (or the load phase) left in it.
+class CpuPassContext {
+public:
+    virtual ~CpuPassContext() = default;
+    virtual const FrameState& frame() const = 0;
+    // Writes into a host-visible buffer (BufferDecl::host_visible); counted in the uploaded bytes.
+    virtual void upload(const std::string& buffer, const void* bytes, size_t size, size_t offset = 0) = 0;
+    // Reads a host-visible buffer as the GPU left it.
+    virtual std::span<const std::byte> read(const std::string& buffer) const = 0;
+};
+
+}  // namespace canopy
