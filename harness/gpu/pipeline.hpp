@@ -1,37 +1,18 @@
-// Graphics pipelines for dynamic rendering over canopy's one vertex layout (position, normal).
+// Compute pipelines outside frame graphs (frame-graph pipelines: graph/pipeline_cache.hpp), and
+// the shader modules every pipeline is made from.
 #pragma once
 
 #include "gpu/context.hpp"
 
 #include <cstdint>
 #include <span>
-#include <vector>
 
 namespace canopy {
 
-struct GraphicsPipelineDesc {
-    std::span<const uint32_t> vertex_spirv;
-    std::span<const uint32_t> fragment_spirv;
-    VkPipelineLayout layout = VK_NULL_HANDLE;
-    std::vector<VkFormat> color_formats;          // empty for depth-only passes
-    VkFormat depth_format = VK_FORMAT_UNDEFINED;
-    VkCompareOp depth_compare = VK_COMPARE_OP_LESS;
-    VkCullModeFlags cull = VK_CULL_MODE_NONE;      // scenes hold open surfaces (planes)
-};
-
-// Owns one VkPipeline.
-class GraphicsPipeline {
-public:
-    GraphicsPipeline(const GpuContext& gpu, const GraphicsPipelineDesc& desc);
-    ~GraphicsPipeline();
-    GraphicsPipeline(const GraphicsPipeline&) = delete;
-    GraphicsPipeline& operator=(const GraphicsPipeline&) = delete;
-    VkPipeline handle() const { return pipeline_; }
-
-private:
-    const GpuContext& gpu_;
-    VkPipeline pipeline_ = VK_NULL_HANDLE;
-};
+// A shader module for `spirv`; the caller destroys it once its pipeline exists.
+VkShaderModule create_shader_module(VkDevice device, std::span<const uint32_t> spirv);
+// A compute pipeline running `spirv` with `layout`; the caller owns it.
+VkPipeline create_compute_pipeline(VkDevice device, std::span<const uint32_t> spirv, VkPipelineLayout layout);
 
 // Owns one compute VkPipeline.
 class ComputePipeline {

@@ -1,4 +1,4 @@
-// GPU buffers and images with their memory, owned RAII-style. Each allocation is charged to a
+// GPU buffers with their memory, owned RAII-style (frame-graph images: graph/graph_resources.hpp). Each allocation is charged to a
 // MemoryLedger category so results can report memory per technique.
 #pragma once
 
@@ -50,41 +50,11 @@ private:
     void* mapped_ = nullptr;
 };
 
-class Texture {
-public:
-    Texture() = default;
-    Texture(const GpuContext& gpu, MemoryLedger& ledger, std::string category, uint32_t width, uint32_t height,
-            VkFormat format, VkImageUsageFlags usage, VkImageAspectFlags aspect);
-    ~Texture();
-    Texture(Texture&& other) noexcept { *this = std::move(other); }
-    Texture& operator=(Texture&& other) noexcept;
-
-    VkImage image() const { return image_; }
-    VkImageView view() const { return view_; }
-    VkFormat format() const { return format_; }
-    VkImageAspectFlags aspect() const { return aspect_; }
-    uint32_t width() const { return width_; }
-    uint32_t height() const { return height_; }
-
-private:
-    void release();
-    const GpuContext* gpu_ = nullptr;
-    MemoryLedger* ledger_ = nullptr;
-    std::string category_;
-    VkImage image_ = VK_NULL_HANDLE;
-    VkImageView view_ = VK_NULL_HANDLE;
-    VkDeviceMemory memory_ = VK_NULL_HANDLE;
-    VkDeviceSize allocated_ = 0;
-    VkFormat format_ = VK_FORMAT_UNDEFINED;
-    VkImageAspectFlags aspect_ = 0;
-    uint32_t width_ = 0, height_ = 0;
-};
-
 // Uploads `bytes` into a new device-local buffer through a staging copy.
 Buffer upload_buffer(const GpuContext& gpu, MemoryLedger& ledger, const std::string& category, const void* bytes,
                      size_t size, VkBufferUsageFlags usage);
 
-// Layout transition as a synchronization2 barrier covering all commands on both sides.
-void transition(VkCommandBuffer commands, const Texture& texture, VkImageLayout from, VkImageLayout to);
+// Device memory of `flags` for `requirements`, from the first fitting memory type.
+VkDeviceMemory allocate_memory(const GpuContext& gpu, const VkMemoryRequirements& requirements, VkMemoryPropertyFlags flags);
 
 }  // namespace canopy

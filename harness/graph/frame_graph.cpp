@@ -140,11 +140,9 @@ std::string validate(const FrameGraph& graph) {
                     if (!b || !b->host_visible)
                         return fmt::format("CPU pass '{}' writes buffer '{}', which is not host_visible", p.name, u.resource);
                 }
-                const bool reads = !u.writes() || u.use == Use::storage_write ||
-                                   (is_attachment(u.use) && u.use != Use::resolve_target && !u.clear);
-                // A storage write may also read; an attachment without a clear loads its contents.
-                const bool must_exist = !u.writes() || (is_attachment(u.use) && u.use != Use::resolve_target && !u.clear);
-                if (reads && must_exist && !written.count(u.resource) && p.kind != PassKind::cpu)
+                // A read, or an attachment that loads (no clear) what an earlier pass left.
+                const bool loads = (u.use == Use::color_attachment || u.use == Use::depth_attachment) && !u.clear;
+                if ((!u.writes() || loads) && !written.count(u.resource) && p.kind != PassKind::cpu)
                     return fmt::format("pass '{}' reads '{}' before any pass writes it", p.name, u.resource);
             }
             if (p.kind == PassKind::raster && !has_target)

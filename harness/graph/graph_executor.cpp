@@ -1,7 +1,7 @@
 #include "graph/graph_executor.hpp"
 
 #include "graph/pass_context.hpp"
-#include "gpu/rendering.hpp"
+#include "gpu/samplers.hpp"
 #include "render/frame_uniforms.hpp"
 #include "render/gpu_scene.hpp"
 

@@ -64,10 +64,7 @@ GraphImage::GraphImage(const GpuContext& gpu, MemoryLedger& ledger, std::string 
     VK_CHECK(vkCreateImage(gpu.device(), &info, nullptr, &image_));
     VkMemoryRequirements req;
     vkGetImageMemoryRequirements(gpu.device(), image_, &req);
-    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-    alloc.allocationSize = req.size;
-    alloc.memoryTypeIndex = gpu.memory_type(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-    VK_CHECK(vkAllocateMemory(gpu.device(), &alloc, nullptr, &memory_));
+    memory_ = allocate_memory(gpu, req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
     allocated_ = req.size;
     ledger_.add(category_, allocated_);
     VK_CHECK(vkBindImageMemory(gpu.device(), image_, memory_, 0));
@@ -96,9 +93,8 @@ VkImageView GraphImage::view(const Subresource& range) {
     if (auto it = views_.find(key); it != views_.end()) return it->second;
     VkImageViewCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
     info.image = image_;
-    info.viewType = decl_.layers > 1 && r.layer_count > 1 ? VK_IMAGE_VIEW_TYPE_2D_ARRAY
-                    : decl_.layers > 1                   ? VK_IMAGE_VIEW_TYPE_2D_ARRAY
-                                                         : VK_IMAGE_VIEW_TYPE_2D;
+    // Layered images always get array views (one layer of them included), so shaders see one type.
+    info.viewType = decl_.layers > 1 ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D;
     info.format = decl_.format;
     info.subresourceRange = {aspect_, r.mip, r.mip_count, r.layer, r.layer_count};
     VkImageView view;

@@ -1,5 +1,7 @@
 #include "graph/pipeline_cache.hpp"
 
+#include "gpu/pipeline.hpp"
+
 #include "scene/geometry.hpp"
 
 #include <fmt/format.h>
@@ -33,15 +35,6 @@ std::string VertexLayout::describe() const {
 }
 
 namespace {
-
-VkShaderModule create_module(VkDevice device, std::span<const uint32_t> spirv) {
-    VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-    info.codeSize = spirv.size_bytes();
-    info.pCode = spirv.data();
-    VkShaderModule module;
-    VK_CHECK(vkCreateShaderModule(device, &info, nullptr, &module));
-    return module;
-}
 
 std::string spirv_key(std::span<const uint32_t> spirv) {
     return fmt::format("{}:{}", static_cast<const void*>(spirv.data()), spirv.size());
@@ -81,8 +74,8 @@ VkPipeline PipelineCache::raster(const RasterState& s, const AttachmentFormats& 
     if (auto it = pipelines_.find(key); it != pipelines_.end()) return it->second;
 
     VkDevice device = gpu_.device();
-    VkShaderModule vertex = create_module(device, s.vertex_spirv);
-    VkShaderModule fragment = s.fragment_spirv.empty() ? VK_NULL_HANDLE : create_module(device, s.fragment_spirv);
+    VkShaderModule vertex = create_shader_module(device, s.vertex_spirv);
+    VkShaderModule fragment = s.fragment_spirv.empty() ? VK_NULL_HANDLE : create_shader_module(device, s.fragment_spirv);
     std::vector<VkPipelineShaderStageCreateInfo> stages;
     stages.push_back({VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_VERTEX_BIT, vertex,
                       "main", nullptr});
@@ -155,15 +148,7 @@ VkPipeline PipelineCache::raster(const RasterState& s, const AttachmentFormats& 
 VkPipeline PipelineCache::compute(std::span<const uint32_t> spirv, VkPipelineLayout layout) {
     const std::string key = fmt::format("compute {} {}", spirv_key(spirv), static_cast<const void*>(layout));
     if (auto it = pipelines_.find(key); it != pipelines_.end()) return it->second;
-    VkShaderModule module = create_module(gpu_.device(), spirv);
-    VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
-    info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_COMPUTE_BIT, module,
-                  "main", nullptr};
-    info.layout = layout;
-    VkPipeline pipeline = VK_NULL_HANDLE;
-    VkResult result = vkCreateComputePipelines(gpu_.device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline);
-    vkDestroyShaderModule(gpu_.device(), module, nullptr);
-    vk_check(result, "vkCreateComputePipelines");
+    const VkPipeline pipeline = create_compute_pipeline(gpu_.device(), spirv, layout);
     pipelines_.emplace(key, pipeline);
     return pipeline;
 }

@@ -2,7 +2,7 @@
 // A filter shader includes this file and defines `vec4 filter_texel(ivec2 xy)`, reading its
 // neighbours with `fetch`; edges clamp. Runs in 8x8 workgroups. Coarse-map filters may also
 // read the frame uniforms; screen-space filters the frame uniforms, the depth shadow map and an
-// auxiliary image (render/filter_chain.hpp, FilterExtras); they must not use what their pass
+// auxiliary image (techniques/shadow/common/shadow_graph.hpp, FilterChainInputs); they must not use what their pass
 // was not given.
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(set = 0, binding = 0) uniform sampler2D src;          // NEAREST

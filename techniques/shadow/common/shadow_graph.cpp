@@ -48,6 +48,20 @@ ResourceUse attachment(const std::string& image, Use use, std::array<float, 4> c
     return u;
 }
 
+// The image each pass of a chain writes: one per pass when any pass downsamples, else `prefix`_a
+// and `prefix`_b (or the source itself, with `write_back`) in turn.
+std::vector<std::string> chain_outputs(const std::string& prefix, const std::string& source, bool write_back,
+                                       const std::vector<FilterPass>& passes) {
+    const bool per_pass = std::any_of(passes.begin(), passes.end(), [](const FilterPass& p) { return p.downsample > 1; });
+    std::vector<std::string> outputs;
+    for (size_t i = 0; i < passes.size(); ++i)
+        outputs.push_back(per_pass ? fmt::format("{}_{}", prefix, i)
+                          : i % 2 == 0 ? prefix + "_a"
+                          : write_back ? source
+                                       : prefix + "_b");
+    return outputs;
+}
+
 }  // namespace
 
 std::string add_filter_chain(FrameGraph& graph, const std::string& prefix, const std::string& source,
@@ -55,32 +69,18 @@ std::string add_filter_chain(FrameGraph& graph, const std::string& prefix, const
                              const std::vector<FilterPass>& passes, const FilterChainInputs& extras, bool screen_sized) {
     if (passes.empty()) return source;
     std::vector<VkExtent2D> extents{{width, height}};
-    bool per_pass = false;
     for (const FilterPass& pass : passes) {
         const uint32_t f = uint32_t(std::max(pass.downsample, 1));
-        per_pass = per_pass || f > 1;
         extents.push_back({std::max((extents.back().width + f - 1) / f, 1u), std::max((extents.back().height + f - 1) / f, 1u)});
     }
-    const auto declare = [&](const std::string& name, uint32_t divisor_or_zero, VkExtent2D extent) {
-        ImageDecl image{name, format};
-        image.extent = screen_sized && divisor_or_zero ? ImageExtent::screen(divisor_or_zero)
-                                                       : ImageExtent::texels(extent.width, extent.height);
-        graph.images.push_back(image);
-    };
-    if (per_pass && screen_sized)
+    if (screen_sized && std::any_of(passes.begin(), passes.end(), [](const FilterPass& p) { return p.downsample > 1; }))
         throw std::logic_error(fmt::format("filter chain '{}': a screen-sized chain cannot downsample", prefix));
-    std::vector<std::string> outputs;
-    if (per_pass) {
-        write_back = false;
-        for (size_t i = 0; i < passes.size(); ++i) {
-            outputs.push_back(fmt::format("{}_{}", prefix, i));
-            declare(outputs.back(), 0, extents[i + 1]);
-        }
-    } else {
-        declare(prefix + "_a", 1, extents[0]);
-        if (passes.size() > 1 && !write_back) declare(prefix + "_b", 1, extents[0]);
-        for (size_t i = 0; i < passes.size(); ++i)
-            outputs.push_back(i % 2 == 0 ? prefix + "_a" : write_back ? source : prefix + "_b");
+    const std::vector<std::string> outputs = chain_outputs(prefix, source, write_back, passes);
+    for (size_t i = 0; i < passes.size(); ++i) {
+        if (outputs[i] == source || graph.image(outputs[i])) continue;  // declared once
+        ImageDecl image{outputs[i], format};
+        image.extent = screen_sized ? ImageExtent::screen() : ImageExtent::texels(extents[i + 1].width, extents[i + 1].height);
+        graph.images.push_back(image);
     }
     for (size_t i = 0; i < passes.size(); ++i) {
         const FilterPass& pass = passes[i];
@@ -145,14 +145,9 @@ PassDecl scene_pass(const std::string& name, RasterState state, SceneFilter filt
 namespace shadow_images {
 
 namespace {
-// Mirrors add_filter_chain's naming.
 std::string chain_result(const std::string& prefix, const std::string& source, bool write_back,
                          const std::vector<FilterPass>& passes) {
-    if (passes.empty()) return source;
-    const bool per_pass = std::any_of(passes.begin(), passes.end(), [](const FilterPass& p) { return p.downsample > 1; });
-    if (per_pass) return fmt::format("{}_{}", prefix, passes.size() - 1);
-    const size_t last = passes.size() - 1;
-    return last % 2 == 0 ? prefix + "_a" : write_back ? source : prefix + "_b";
+    return passes.empty() ? source : chain_outputs(prefix, source, write_back, passes).back();
 }
 }  // namespace
 
