@@ -1,11 +1,13 @@
-# canopy_add_doctests(SOURCES <test_*.cpp ...> [LABEL <label>])
+# canopy_add_doctests(SOURCES <test_*.cpp ...> [LABEL <label>] [SERIAL])
 # One doctest executable per source; every TEST_CASE becomes its own ctest entry named
 # "<executable>:<test case>". Tests find their data through CANOPY_TEST_DATA (tests/data) and
 # the checkout through CANOPY_SOURCE_DIR, and share tests/support (canopy_test_support).
+# SERIAL: ctest runs them alone (RUN_SERIAL), for tests that compare a timestamp with the wall
+# clock, which other tests loading the machine would disturb.
 include(${doctest_DIR}/doctest.cmake)
 
 function(canopy_add_doctests)
-  cmake_parse_arguments(ARG "" "LABEL" "SOURCES" ${ARGN})
+  cmake_parse_arguments(ARG "SERIAL" "LABEL" "SOURCES" ${ARGN})
   foreach(src IN LISTS ARG_SOURCES)
     get_filename_component(name ${src} NAME_WE)
     add_executable(${name} ${src})
@@ -16,6 +18,10 @@ function(canopy_add_doctests)
     if(ARG_LABEL)
       list(APPEND labels ${ARG_LABEL})
     endif()
-    doctest_discover_tests(${name} TEST_PREFIX "${name}:" PROPERTIES LABELS "${labels}")
+    set(properties LABELS "${labels}")
+    if(ARG_SERIAL)
+      list(APPEND properties RUN_SERIAL TRUE)
+    endif()
+    doctest_discover_tests(${name} TEST_PREFIX "${name}:" PROPERTIES ${properties})
   endforeach()
 endfunction()

@@ -2,10 +2,12 @@
 // standalone program (issue 9, item 8). canopy times its compute passes (prefilters, SSSS's
 // passes, the test ballast) with the same PassTimer stamps: here one compute-only submission of a
 // few milliseconds must read what the wall clock around it says. The wall clock also counts the
-// submission and the fence's wake-up (0.1-0.3 ms in canopy's frames), so it may read more, by at
-// most 10 % or 0.5 ms.
-#include "run/test_ballast.hpp"
+// submission and the fence's wake-up (0.1-0.3 ms in canopy's frames), so it may read more: the
+// results' own cross-check (run/timing_check.hpp) decides, with its tolerance of max(10 %, 0.5 ms).
+// Run alone (RUN_SERIAL): on a loaded machine the fence's wake-up alone can take longer.
 #include "run/statistics.hpp"
+#include "run/test_ballast.hpp"
+#include "run/timing_check.hpp"
 #include "support/test_gpu.hpp"
 
 #include <doctest/doctest.h>
@@ -30,5 +32,8 @@ TEST_CASE("a lone compute pass of a few milliseconds: its timestamps agree with 
     CAPTURE(wall_ms);
     REQUIRE(wall_ms > 2.0);  // long enough that a short reading cannot hide in the overheads
     CHECK(stamped_ms <= wall_ms);
-    CHECK(wall_ms - stamped_ms <= std::max(0.1 * wall_ms, 0.5));
+    const TimingCheck check = check_pass_timing({stamped}, wall);
+    CAPTURE(check.gap_ms);
+    CAPTURE(check.tolerance_ms);
+    CHECK(check.agrees());
 }

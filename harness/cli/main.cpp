@@ -15,6 +15,7 @@
 #include "report/atomic_file.hpp"
 #include "report/comparison_report.hpp"
 #include "report/console_table.hpp"
+#include "report/timing_sections.hpp"
 #include "report/json_record_reader.hpp"
 #include "report/metric_list.hpp"
 #include "run/run_comparison.hpp"
@@ -313,6 +314,8 @@ int run(const RunCommand& command, const ReferenceOptions& reference_options) {
     const RunRecord record = run_experiment(prepared, registry, gpu, options);
 
     fmt::print("{}\n", console_table(record));
+    for (const std::string& line : timing_check_warnings(record))
+        fmt::print(stderr, "canopy: timing cross-check failed (results.md, \"Timing cross-check\"): {}\n", line);
     fmt::print("results: {}\n", fs::absolute(options.out_dir).string());
     const char* images = options.images == ImageOutput::all   ? "; images in images/ (EXR linear, PNG sRGB)"
                          : options.images == ImageOutput::png ? "; images in images/ (PNG sRGB)"

@@ -4,6 +4,7 @@
 #include "config/paper_comparison.hpp"
 #include "core/param.hpp"
 #include "reference/reference_settings.hpp"
+#include "scene/camera_path.hpp"
 #include "scene/scene.hpp"
 
 #include <map>
@@ -48,6 +49,9 @@ struct Experiment {
     int rounds = 30;  // the `repetitions` key
     int frames_per_sample = kDefaultFramesPerSample;
     BaselinePairing pairing = BaselinePairing::adjacent;  // the `pairing` key
+    // [camera_path]: the camera moves along it, every sample one traversal of its frames (each
+    // scene's camera gives up vector and clip planes); none: every frame at the scene's camera.
+    std::optional<CameraPath> camera_path;
     // The ray-traced reference every case's image is compared with ([reference] table).
     bool reference_enabled = true;
     ReferenceSettings reference{64, 4, 1, 0};  // 64 light samples x 4 pixel samples = 256 shadow rays per pixel

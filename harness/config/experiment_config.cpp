@@ -1,5 +1,6 @@
 #include "config/experiment_config.hpp"
 
+#include "config/camera_path_config.hpp"
 #include "config/file_name_rules.hpp"
 #include "config/scene_config.hpp"
 #include "config/paper_config.hpp"
@@ -258,6 +259,7 @@ Experiment load_experiment(const std::filesystem::path& file, const TechniqueReg
     std::vector<TomlReader> technique_sections = top.get_tables("technique", "[[technique]]");
     std::optional<TomlReader> reference_section = top.get_table("reference", "[reference]");
     std::optional<TomlReader> paper_section = top.get_table("paper", "[paper]");
+    std::optional<TomlReader> path_section = top.get_table("camera_path", "[camera_path]");
     top.finish();
     if (!section)
         throw ConfigError(file, 0, "missing the [experiment] section",
@@ -312,6 +314,14 @@ Experiment load_experiment(const std::filesystem::path& file, const TechniqueReg
     std::vector<std::filesystem::path> hashed_files;
     experiment.scenes = read_scenes(*section, hashed_files);
     section->finish();
+    if (path_section) {
+        experiment.camera_path = read_camera_path(*path_section, experiment.scenes);
+        if (experiment.frames_per_sample != 1)
+            throw section->error("frames_per_sample",
+                                 "'frames_per_sample' cannot be combined with [camera_path]: with a path, one sample "
+                                 "is one traversal of its frames",
+                                 "remove frames_per_sample, or set [camera_path] frames to the frames a sample should span");
+    }
 
     if (technique_sections.empty())
         throw ConfigError(file, 0, "the experiment has no [[technique]] entries",

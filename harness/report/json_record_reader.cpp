@@ -111,6 +111,22 @@ CaseResult read_case(const json& j) {
     c.cpu = read_series(timing.at("cpu"));
     c.sample_start_s = timing.at("sample_start_s").get<std::vector<double>>();
     for (const json& pass : timing.at("passes")) c.passes.push_back(read_series(pass));
+    // Written since results version 3 gained them: absent from older files.
+    if (timing.contains("cpu_passes"))
+        for (const json& pass : timing.at("cpu_passes")) c.cpu_passes.push_back(read_series(pass));
+    if (timing.contains("record_cpu")) c.record_cpu = read_series(timing.at("record_cpu"));
+    if (timing.contains("timing_check") && !timing.at("timing_check").is_null()) {
+        const json& t = timing.at("timing_check");
+        c.timing_check = {true, t.at("pass_sum_ms").get<double>(), t.at("wall_ms").get<double>(),
+                          t.at("gap_ms").get<double>(), t.at("tolerance_ms").get<double>()};
+    }
+    if (timing.contains("path_frames"))
+        for (const json& f : timing.at("path_frames")) {
+            CaseResult::PathFrame frame;
+            frame.gpu_frame = read_series(f.at("gpu_frame"));
+            for (const json& pass : f.at("passes")) frame.passes.push_back(read_series(pass));
+            c.path_frames.push_back(std::move(frame));
+        }
     const json& memory = j.at("memory_bytes");
     c.memory = {memory.at("technique").get<uint64_t>(), memory.at("targets").get<uint64_t>(),
                 memory.at("scene").get<uint64_t>()};
@@ -178,6 +194,19 @@ RunRecord read_json_report(const std::filesystem::path& file) {
         run.rounds = j.at("rounds").get<int>();
         run.frames_per_sample = j.at("frames_per_sample").get<int>();
         run.quick = j.at("quick").get<bool>();
+        if (j.contains("camera_path") && !j.at("camera_path").is_null()) {
+            const json& path = j.at("camera_path");
+            CameraPath p;
+            p.frames = path.at("frames").get<int>();
+            for (const json& pose : path.at("poses")) {
+                const auto v = [&](const char* key) {
+                    const auto a = pose.at(key).get<std::vector<float>>();
+                    return glm::vec3(a.at(0), a.at(1), a.at(2));
+                };
+                p.poses.push_back({v("position"), v("target"), pose.at("fov").get<float>()});
+            }
+            run.camera_path = std::move(p);
+        }
         run.planned_cases = j.at("planned_cases").get<size_t>();
         run.reference_enabled = j.at("reference_enabled").get<bool>();
         run.environment = j.at("environment").get<Environment>();

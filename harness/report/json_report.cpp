@@ -94,11 +94,42 @@ nlohmann::json group_json(const GroupRecord& g) {
             {"chunks", chunks}};
 }
 
+nlohmann::json series_list_json(const std::vector<TimingSeries>& list) {
+    nlohmann::json j = nlohmann::json::array();
+    for (const TimingSeries& t : list) j.push_back(series_json(t));
+    return j;
+}
+
+nlohmann::json timing_check_json(const TimingCheck& t) {
+    if (!t.checked) return nullptr;
+    return {{"pass_sum_ms", t.pass_sum_ms},
+            {"wall_ms", t.wall_ms},
+            {"gap_ms", t.gap_ms},
+            {"tolerance_ms", t.tolerance_ms},
+            {"agrees", t.agrees()}};
+}
+
+nlohmann::json path_frames_json(const std::vector<CaseResult::PathFrame>& frames) {
+    nlohmann::json j = nlohmann::json::array();
+    for (const CaseResult::PathFrame& f : frames)
+        j.push_back({{"gpu_frame", series_json(f.gpu_frame)}, {"passes", series_list_json(f.passes)}});
+    return j;
+}
+
+nlohmann::json camera_path_json(const std::optional<CameraPath>& path) {
+    if (!path) return nullptr;
+    nlohmann::json poses = nlohmann::json::array();
+    for (const CameraPose& p : path->poses)
+        poses.push_back({{"position", {p.position.x, p.position.y, p.position.z}},
+                         {"target", {p.target.x, p.target.y, p.target.z}},
+                         {"fov", p.fov_y_degrees}});
+    return {{"frames", path->frames}, {"poses", poses}};
+}
+
 nlohmann::json case_json(const CaseResult& c) {
     nlohmann::json params = nlohmann::json::object();
     for (const auto& [name, value] : c.params) params[name] = param_json(value);
-    nlohmann::json passes = nlohmann::json::array();
-    for (const auto& p : c.passes) passes.push_back(series_json(p));
+    const nlohmann::json passes = series_list_json(c.passes);
     return {{"id", c.id},
             {"scene", c.scene},
             {"technique", c.technique},
@@ -116,6 +147,10 @@ nlohmann::json case_json(const CaseResult& c) {
               {"wall", series_json(c.wall)},
               {"cpu", series_json(c.cpu)},
               {"passes", passes},
+              {"cpu_passes", series_list_json(c.cpu_passes)},
+              {"record_cpu", series_json(c.record_cpu)},
+              {"timing_check", timing_check_json(c.timing_check)},
+              {"path_frames", path_frames_json(c.path_frames)},
               {"sample_start_s", c.sample_start_s}}},
             {"memory_bytes",
              {{"technique", c.memory.technique_bytes}, {"targets", c.memory.target_bytes}, {"scene", c.memory.scene_bytes}}},
@@ -152,6 +187,7 @@ std::string json_report(const RunRecord& run) {
                         {"rounds", run.rounds},
                         {"frames_per_sample", run.frames_per_sample},
                         {"measured_frames", run.measured_frames()},
+                        {"camera_path", camera_path_json(run.camera_path)},
                         {"quick", run.quick},
                         {"planned_cases", run.planned_cases},
                         {"environment", run.environment},

@@ -3,6 +3,7 @@
 #include "metrics/metric_registry.hpp"
 #include "report/atomic_file.hpp"
 #include "report/text_table.hpp"
+#include "report/timing_sections.hpp"
 
 #include <fmt/format.h>
 
@@ -81,6 +82,9 @@ std::string markdown_report(const RunRecord& run) {
                                r.resolution.width, r.resolution.height, r.light_samples, r.pixel_samples, r.shadow_rays,
                                r.seconds, r.from_cache ? " (cached)" : "", r.image_png);
     }
+    out += timing_check_section(run);
+    out += cpu_time_section(run);
+    out += camera_path_section(run);
     out += "\nGPU ms: median over the rounds of a sample's mean frame time, from the first pass's start to the last "
            "pass's end (Vulkan timestamps); CV over the rounds. ratio: GPU time relative to the first row of the same "
            "scene and resolution (the group's baseline), each sample divided by the baseline's samples measured just "

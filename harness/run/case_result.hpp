@@ -8,6 +8,7 @@
 #include "run/environment.hpp"
 #include "run/run_identity.hpp"
 #include "run/statistics.hpp"
+#include "run/timing_check.hpp"
 
 #include <optional>
 #include <string>
@@ -39,10 +40,20 @@ struct CaseResult {
     std::string params_summary;        // every value
     std::string params_shown;          // swept parameters and values that differ from the defaults ("-" if none)
     std::vector<TimingSeries> passes;  // GPU time per pass
+    std::vector<TimingSeries> cpu_passes;  // CPU passes (steady clock), beside the GPU passes
+    TimingSeries record_cpu;           // CPU time recording the frame's commands (CPU passes excluded)
     TimingSeries gpu_frame;            // GPU time, first pass start to last pass end
     TimingSeries wall;                 // CPU wall time per frame, submit to completion
     TimingSeries cpu;                  // the process's CPU time per frame (every thread, lavapipe's too)
     std::vector<double> sample_start_s;  // when each sample began, seconds after its chunk's measurement began
+    TimingCheck timing_check;          // do the GPU pass times add up to the wall time?
+    // With a camera path: per frame of the traversal, its times over the rounds (a sample's series
+    // above are the means over the traversal).
+    struct PathFrame {
+        TimingSeries gpu_frame;
+        std::vector<TimingSeries> passes;
+    };
+    std::vector<PathFrame> path_frames;
     size_t group = 0;                  // index into RunRecord::groups
     size_t chunk = 0;                  // the group's chunk whose rounds measured it (the baseline's: the first)
     bool group_baseline = false;       // the group's first case, which the others' ratios divide by
@@ -110,6 +121,7 @@ struct RunRecord {
     int rounds = 0;                // measured samples per case
     int frames_per_sample = 0;     // frames each sample averages
     int measured_frames() const { return rounds * frames_per_sample; }
+    std::optional<CameraPath> camera_path;  // the frames of a sample follow it (then frames_per_sample = its frames)
     bool quick = false;
     RunIdentity identity;                 // what a run continuing this one must match
     std::string started_at, finished_at;  // ISO 8601, UTC

@@ -148,6 +148,8 @@ MeasurementSettings measurement_settings(const Experiment& experiment, const Run
     m.rounds = options.quick ? std::min(experiment.rounds, 3) : experiment.rounds;
     m.frames_per_sample = options.quick ? 1 : experiment.frames_per_sample;
     m.pairing = experiment.pairing;
+    m.camera_path = experiment.camera_path;
+    if (m.camera_path) m.frames_per_sample = m.camera_path->frames;  // a sample is one traversal
     return m;
 }
 
@@ -188,6 +190,7 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
     run.warmup_frames = settings.warmup_frames;
     run.rounds = settings.rounds;
     run.frames_per_sample = settings.frames_per_sample;
+    run.camera_path = settings.camera_path;
     run.started_at = utc_now();
     run.planned_cases = prepared.cases.size();
     run.reference_enabled = options.reference && experiment.reference_enabled;

@@ -36,15 +36,26 @@ TimingSeries series(std::string name, std::vector<double> samples) {
     return t;
 }
 
+// Per-series accumulation: element-wise sums of vectors that may grow.
+void add_into(std::vector<double>& sum, const std::vector<double>& values) {
+    if (sum.size() < values.size()) sum.resize(values.size(), 0.0);
+    for (size_t i = 0; i < values.size(); ++i) sum[i] += values[i];
+}
+
 // One case while its group is measured: its renderer and the samples taken so far.
 struct LiveCase {
     size_t index = 0;  // in the group
     CaseResult result;
     std::unique_ptr<FrameRenderer> renderer;
     std::unique_ptr<Ballast> ballast;
-    std::vector<std::string> pass_names;
-    std::vector<std::vector<double>> pass_samples;
-    std::vector<double> gpu, wall, cpu, start;
+    Camera camera;                    // the scene's
+    const CameraPath* path = nullptr;  // frames follow it when set
+    uint32_t next_frame = 0;          // FrameState::frame_index of the next frame (warm-up included)
+    std::vector<std::string> pass_names, cpu_pass_names;
+    std::vector<std::vector<double>> pass_samples, cpu_pass_samples;
+    std::vector<double> gpu, wall, cpu, record_cpu, start;
+    std::vector<std::vector<double>> path_gpu;                // [path frame][round]
+    std::vector<std::vector<std::vector<double>>> path_passes;  // [path frame][pass][round]
     std::vector<double> ratios;  // per round: GPU time / the baseline's it is paired with
     bool failed = false;
 
@@ -58,10 +69,13 @@ struct LiveCase {
         const MemoryUse m = renderer->memory();
         return m.technique_bytes + m.target_bytes + m.scene_bytes;
     }
+    int path_frames() const { return path ? path->frames : 0; }
 
-    // One frame, with the test ballast after it when there is one.
-    FrameTiming frame() {
-        FrameTiming t = renderer->render();
+    // One frame at traversal frame `path_frame` of the path (the scene's camera without one), with
+    // the test ballast after it when there is one.
+    FrameTiming frame(int path_frame) {
+        const Camera at = path ? path->at(camera, path_frame) : camera;
+        FrameTiming t = renderer->render(FrameState{next_frame++, at});
         if (ballast) {
             const auto before = Clock::now();
             const double ballast_ms = ballast->run_ms();
@@ -72,38 +86,56 @@ struct LiveCase {
         return t;
     }
 
-    // One sample: `frames` frames, each series the mean over them.
+    // One sample: `frames` frames (with a path: one traversal), each series the mean over them.
     struct Sample {
-        std::vector<double> passes;
-        double gpu = 0, wall = 0, cpu = 0, start = 0;
+        std::vector<double> passes, cpu_passes;
+        double gpu = 0, wall = 0, cpu = 0, record_cpu = 0, start = 0;
+        std::vector<double> path_gpu;                // per path frame
+        std::vector<std::vector<double>> path_passes;  // per path frame, per pass
         int count = 0;  // samples summed into this one
 
         void add(const Sample& s) {
-            if (passes.size() < s.passes.size()) passes.resize(s.passes.size(), 0.0);
-            for (size_t p = 0; p < s.passes.size(); ++p) passes[p] += s.passes[p];
+            add_into(passes, s.passes);
+            add_into(cpu_passes, s.cpu_passes);
+            add_into(path_gpu, s.path_gpu);
+            if (path_passes.size() < s.path_passes.size()) path_passes.resize(s.path_passes.size());
+            for (size_t f = 0; f < s.path_passes.size(); ++f) add_into(path_passes[f], s.path_passes[f]);
             gpu += s.gpu;
             wall += s.wall;
             cpu += s.cpu;
+            record_cpu += s.record_cpu;
             if (count == 0) start = s.start;
             count += s.count;
         }
     };
     Sample sample(int frames, double started_s) {
+        if (path) frames = path->frames;
         Sample s;
         s.passes.assign(pass_names.size(), 0.0);
+        s.cpu_passes.assign(cpu_pass_names.size(), 0.0);
         s.start = started_s;
         s.count = 1;
         const double cpu_before = process_cpu_ms();
         for (int f = 0; f < frames; ++f) {
-            const FrameTiming t = frame();
+            const FrameTiming t = frame(f);
             for (size_t p = 0; p < s.passes.size() && p < t.pass_gpu_ms.size(); ++p) s.passes[p] += t.pass_gpu_ms[p];
+            for (size_t p = 0; p < s.cpu_passes.size() && p < t.pass_cpu_ms.size(); ++p) s.cpu_passes[p] += t.pass_cpu_ms[p];
             s.gpu += t.gpu_ms;
             s.wall += t.wall_ms;
+            s.record_cpu += t.record_cpu_ms;
+            if (path) {
+                s.path_gpu.push_back(t.gpu_ms);
+                s.path_passes.emplace_back(t.pass_gpu_ms.begin(),
+                                           t.pass_gpu_ms.begin() + long(std::min(t.pass_gpu_ms.size(), pass_names.size())));
+                s.path_passes.back().resize(pass_names.size(), 0.0);
+            }
         }
         const double n = double(frames);
         for (double& p : s.passes) p /= n;
+        for (double& p : s.cpu_passes) p /= n;
         s.gpu /= n;
         s.wall /= n;
+        s.record_cpu /= n;
         s.cpu = (process_cpu_ms() - cpu_before) / n;
         return s;
     }
@@ -111,10 +143,19 @@ struct LiveCase {
     // in the round).
     void record(const Sample& sum) {
         const double n = double(std::max(sum.count, 1));
-        for (size_t p = 0; p < pass_samples.size(); ++p) pass_samples[p].push_back(p < sum.passes.size() ? sum.passes[p] / n : 0.0);
+        const auto mean_of = [n](const std::vector<double>& v, size_t i) { return i < v.size() ? v[i] / n : 0.0; };
+        for (size_t p = 0; p < pass_samples.size(); ++p) pass_samples[p].push_back(mean_of(sum.passes, p));
+        for (size_t p = 0; p < cpu_pass_samples.size(); ++p) cpu_pass_samples[p].push_back(mean_of(sum.cpu_passes, p));
+        for (int f = 0; f < path_frames(); ++f) {
+            path_gpu[size_t(f)].push_back(mean_of(sum.path_gpu, size_t(f)));
+            static const std::vector<double> none;
+            const std::vector<double>& frame_passes = size_t(f) < sum.path_passes.size() ? sum.path_passes[size_t(f)] : none;
+            for (size_t p = 0; p < pass_names.size(); ++p) path_passes[size_t(f)][p].push_back(mean_of(frame_passes, p));
+        }
         gpu.push_back(sum.gpu / n);
         wall.push_back(sum.wall / n);
         cpu.push_back(sum.cpu / n);
+        record_cpu.push_back(sum.record_cpu / n);
         start.push_back(sum.start);
     }
 
@@ -122,9 +163,14 @@ struct LiveCase {
     // chunk's, each later chunk pairs with its own).
     void clear_samples() {
         for (auto& p : pass_samples) p.clear();
+        for (auto& p : cpu_pass_samples) p.clear();
+        for (auto& f : path_gpu) f.clear();
+        for (auto& f : path_passes)
+            for (auto& p : f) p.clear();
         gpu.clear();
         wall.clear();
         cpu.clear();
+        record_cpu.clear();
         start.clear();
         ratios.clear();
     }
@@ -132,15 +178,26 @@ struct LiveCase {
     void finish_timings(size_t chunk) {
         result.chunk = chunk;
         for (size_t p = 0; p < pass_names.size(); ++p) result.passes.push_back(series(pass_names[p], pass_samples[p]));
+        for (size_t p = 0; p < cpu_pass_names.size(); ++p)
+            result.cpu_passes.push_back(series(cpu_pass_names[p], cpu_pass_samples[p]));
         result.gpu_frame = series("gpu_frame", gpu);
         result.wall = series("wall", wall);
         result.cpu = series("cpu", cpu);
+        result.record_cpu = series("record_cpu", record_cpu);
         result.sample_start_s = start;
+        result.timing_check = check_pass_timing(pass_samples, wall);
+        for (int f = 0; f < path_frames(); ++f) {
+            CaseResult::PathFrame frame;
+            frame.gpu_frame = series("gpu_frame", path_gpu[size_t(f)]);
+            for (size_t p = 0; p < pass_names.size(); ++p)
+                frame.passes.push_back(series(pass_names[p], path_passes[size_t(f)][p]));
+            result.path_frames.push_back(std::move(frame));
+        }
     }
 };
 
 // Builds a case's renderer (and ballast); a GpuError fails the case alone.
-void build(LiveCase& live, const GpuContext& gpu, const GroupInput& group) {
+void build(LiveCase& live, const GpuContext& gpu, const GroupInput& group, const MeasurementSettings& settings) {
     const GroupCase& gc = group.cases[live.index];
     try {
         live.renderer = std::make_unique<FrameRenderer>(gpu, *group.scene, *group.meshes, uint32_t(gc.c->resolution.width),
@@ -152,6 +209,12 @@ void build(LiveCase& live, const GpuContext& gpu, const GroupInput& group) {
             live.pass_names.push_back("test_ballast");
         }
         live.pass_samples.assign(live.pass_names.size(), {});
+        live.cpu_pass_names = live.renderer->cpu_pass_names();
+        live.cpu_pass_samples.assign(live.cpu_pass_names.size(), {});
+        live.camera = group.scene->camera;
+        live.path = settings.camera_path ? &*settings.camera_path : nullptr;
+        live.path_gpu.assign(size_t(live.path_frames()), {});
+        live.path_passes.assign(size_t(live.path_frames()), std::vector<std::vector<double>>(live.pass_names.size()));
         live.result.memory = live.renderer->memory();
         live.result.triangles = live.renderer->triangle_count();
         live.result.shadow_sampler = live.renderer->shadow_sampler();
@@ -173,7 +236,7 @@ bool measure_chunk(std::vector<LiveCase*>& members, const MeasurementSettings& s
         for (int i = 0; i < settings.warmup_frames && !m->failed; ++i) {
             if (interrupt_requested()) return false;
             try {
-                m->frame();
+                m->frame(i);
             } catch (const GpuError& e) {
                 m->fail(e.what());
             }
@@ -248,6 +311,9 @@ void finish(LiveCase& live, size_t chunk_index, const MeasurementChunk& chunk, c
     Image image, visibility;
     if (live.renderer && !live.failed) {
         try {
+            // The reference is ray-traced from the scene's camera: after a path, one more frame
+            // there (untimed), so the error measures the technique and not the camera's move.
+            if (live.path) live.renderer->render(FrameState{live.next_frame++, live.camera});
             FrameRenderer::ColorAndVisibility frame = live.renderer->read_color_and_pixel_visibility();
             image = std::move(frame.color);
             visibility = std::move(frame.visibility);
@@ -294,7 +360,7 @@ std::optional<MeasuredGroup> measure_group(const GpuContext& gpu, const GroupInp
     if (!group.cases.empty()) measured.record.resolution = group.cases.front().c->resolution;
 
     // The baseline first; it stays built through every chunk.
-    build(live[0], gpu, group);
+    build(live[0], gpu, group, settings);
     const bool baseline_ok = !live[0].failed;
     if (!baseline_ok && callbacks.case_measured) finish(live[0], 0, MeasurementChunk{}, callbacks);
     size_t next = 1;
@@ -309,7 +375,7 @@ std::optional<MeasuredGroup> measure_group(const GpuContext& gpu, const GroupInp
         while (next < live.size() && members.size() < std::max<size_t>(limits.max_cases, 2)) {
             if (interrupt_requested()) return std::nullopt;
             LiveCase& candidate = live[next++];
-            build(candidate, gpu, group);
+            build(candidate, gpu, group, settings);
             if (candidate.failed) {
                 finish(candidate, measured.record.chunks.size(), MeasurementChunk{}, callbacks);
                 continue;

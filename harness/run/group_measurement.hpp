@@ -29,6 +29,9 @@ struct MeasurementSettings {
     int rounds = 20;            // samples per case
     int frames_per_sample = 1;  // frames one sample averages
     BaselinePairing pairing = BaselinePairing::adjacent;
+    // Frames follow it (a sample is one traversal: frames_per_sample is its frames); none: the
+    // scene's camera.
+    std::optional<CameraPath> camera_path;
 };
 
 struct ChunkLimits {
