@@ -699,7 +699,7 @@ TEST_CASE("graph services: every pass is timed, and the GPU passes' times add up
     const double sum_ms = summarize(pass_sums).median, wall_ms = summarize(walls).median;
     CAPTURE(sum_ms);
     CAPTURE(wall_ms);
-    REQUIRE(summarize(busy).median > 2.0);  // known work long enough that a short reading cannot hide
+    CHECK(summarize(busy).median > 2.0);  // known work long enough that a short reading cannot hide
     CHECK(wall_ms - sum_ms <= std::max(0.1 * wall_ms, 0.5));
 }
 
