@@ -126,6 +126,7 @@ public:
     }
     void fill(const std::string& buffer, uint32_t value) override {
         vkCmdFillBuffer(commands_, ex_.resources_->buffer(buffer).handle(), 0, VK_WHOLE_SIZE, value);
+        after_transfer();
     }
     void upload(const std::string& buffer, const void* bytes, size_t size, size_t offset) override {
         const Buffer& target = ex_.resources_->buffer(buffer);
@@ -143,12 +144,14 @@ public:
         std::memcpy(staging_.back().mapped(), bytes, size);
         VkBufferCopy region{0, offset, size};
         vkCmdCopyBuffer(commands_, staging_.back().handle(), target.handle(), 1, &region);
+        after_transfer();
     }
     void copy_buffer(const std::string& from, const std::string& to) override {
         const Buffer& a = ex_.resources_->buffer(from);
         const Buffer& b = ex_.resources_->buffer(to);
         VkBufferCopy region{0, 0, std::min(a.size(), b.size())};
         vkCmdCopyBuffer(commands_, a.handle(), b.handle(), 1, &region);
+        after_transfer();
     }
     void upload_image(const std::string& name, const void* bytes, size_t size, uint32_t mip, uint32_t layer) override {
         GraphImage& image = ex_.resources_->image(name);
@@ -160,6 +163,7 @@ public:
         region.imageExtent = {image.width(mip), image.height(mip), 1};
         vkCmdCopyBufferToImage(commands_, staging_.back().handle(), image.image(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
                                &region);
+        after_transfer();
     }
     VkExtent2D extent(const std::string& image) const override {
         const GraphImage& i = ex_.resources_->image(image);
@@ -179,6 +183,21 @@ public:
 
 private:
     const PassDecl& pass() const { return ex_.graph_.passes[pass_]; }
+    // A transfer inside a compute pass (a reset before its dispatch) must land before the pass's
+    // shaders run: the executor's derived barriers come only between passes. A copy pass needs
+    // none (the next pass's barrier covers it).
+    void after_transfer() {
+        if (pass().kind != PassKind::compute) return;
+        VkMemoryBarrier2 memory{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
+        memory.srcStageMask = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;
+        memory.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
+        memory.dstStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+        memory.dstAccessMask = VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
+        VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+        dependency.memoryBarrierCount = 1;
+        dependency.pMemoryBarriers = &memory;
+        vkCmdPipelineBarrier2(commands_, &dependency);
+    }
     const PassBinding& binding() const { return *ex_.bindings_[pass_]; }
     void bind_vertex_buffers(std::span<const std::string> names) {
         for (uint32_t i = 0; i < names.size(); ++i) {

@@ -12,8 +12,11 @@ bool is_depth(VkFormat format) {
     return format == VK_FORMAT_D16_UNORM || format == VK_FORMAT_D32_SFLOAT || format == VK_FORMAT_X8_D24_UNORM_PACK32;
 }
 
-VkImageUsageFlags image_usage(const FrameGraph& graph, const std::string& name) {
+VkImageUsageFlags image_usage(const FrameGraph& graph, const ImageDecl& decl) {
+    const std::string& name = decl.name;
     VkImageUsageFlags usage = VK_IMAGE_USAGE_TRANSFER_SRC_BIT;  // readbacks for tests and images
+    // The executor clears persistent images to zeros before their first use (vkCmdClear*Image).
+    if (decl.persistent) usage |= VK_IMAGE_USAGE_TRANSFER_DST_BIT;
     for (const PassDecl& p : graph.passes)
         for (const ResourceUse& u : p.uses) {
             if (u.resource != name) continue;
@@ -117,7 +120,7 @@ GraphResources::GraphResources(const GpuContext& gpu, MemoryLedger& ledger, cons
             h = (height + decl.extent.divisor - 1) / decl.extent.divisor;
         }
         images_.emplace(decl.name, std::make_unique<GraphImage>(gpu, ledger, category, decl, w, h,
-                                                                image_usage(graph, decl.name)));
+                                                                image_usage(graph, decl)));
     };
     add_image(ImageDecl{graph_names::kColor, kColorTargetFormat, ImageExtent::screen()}, "targets");
     add_image(ImageDecl{graph_names::kDepth, kDepthTargetFormat, ImageExtent::screen()}, "targets");
