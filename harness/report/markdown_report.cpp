@@ -2,6 +2,7 @@
 
 #include "metrics/metric_registry.hpp"
 #include "report/atomic_file.hpp"
+#include "report/result_columns.hpp"
 #include "report/text_table.hpp"
 #include "report/timing_sections.hpp"
 
@@ -12,42 +13,24 @@
 
 namespace canopy {
 
-namespace {
-
-std::string mib(uint64_t bytes) { return fmt::format("{:.2f}", double(bytes) / (1024.0 * 1024.0)); }
-
-}  // namespace
-
 std::string markdown_table(const RunRecord& run) {
-    std::vector<std::string> header = {"scene", "resolution", "technique", "parameters", "GPU ms", "± MAD",
-                                       "CV %",  "ratio",      "wall ms",   "passes (GPU ms)", "memory MiB"};
-    std::vector<bool> right = {false, false, false, false, true, true, true, true, true, false, true};
-    const bool errors = std::any_of(run.cases.begin(), run.cases.end(), [](const CaseResult& c) { return c.image_error.has_value(); });
-    std::vector<const MetricInfo*> metrics;  // the registered metrics results.md shows
-    for (const MetricInfo& metric : registered_metrics())
-        if (errors && metric.shown_in(shown_in_markdown)) metrics.push_back(&metric);
-    for (const MetricInfo* metric : metrics) {
-        header.emplace_back(metric->column);
-        right.push_back(true);
+    // The columns results.md shows, from the one list (report/result_columns.hpp), in its order.
+    std::vector<std::string> header;
+    std::vector<bool> right;
+    std::vector<const ResultColumn*> shown;
+    for (const ResultColumn& column : result_columns()) {
+        if (!column.markdown_headers) continue;
+        shown.push_back(&column);
+        for (const ResultColumn::MarkdownHeader& h : column.markdown_headers(run)) {
+            header.push_back(h.text);
+            right.push_back(h.right);
+        }
     }
-    header.push_back("status");
-    right.push_back(false);
-
     std::vector<std::vector<std::string>> rows;
-    for (const auto& c : run.cases) {
-        std::string passes;
-        for (const auto& p : c.passes) passes += fmt::format("{}{} {:.3f}", passes.empty() ? "" : ", ", p.name, p.stats.median);
-        const bool timed = c.gpu_frame.stats.count > 0;
-        std::vector<std::string> row = {
-            c.scene, fmt::format("{}x{}", c.resolution.width, c.resolution.height), c.technique, c.params_shown,
-            timed ? fmt::format("{:.3f}", c.gpu_frame.stats.median) : "-",
-            timed ? fmt::format("{:.3f}", c.gpu_frame.stats.mad) : "-",
-            timed ? fmt::format("{:.1f}", 100.0 * c.gpu_frame.stats.cv) : "-",
-            c.ok ? ratio_cell(c.ratio.estimate) : "-",
-            timed ? fmt::format("{:.3f}", c.wall.stats.median) : "-", passes.empty() ? "-" : passes,
-            mib(c.memory.technique_bytes)};
-        for (const MetricInfo* metric : metrics) row.push_back(c.image_error ? table_cell(*metric, *c.image_error) : "-");
-        row.push_back(c.ok ? "ok" : "FAILED: " + c.error);
+    for (const CaseResult& c : run.cases) {
+        std::vector<std::string> row;
+        for (const ResultColumn* column : shown)
+            for (std::string& cell : column->markdown_cells(run, c)) row.push_back(std::move(cell));
         rows.push_back(std::move(row));
     }
     return render_table(header, rows, right);

@@ -1,0 +1,228 @@
+#include "report/result_columns.hpp"
+
+#include "metrics/metric_registry.hpp"
+#include "report/text_table.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <set>
+
+namespace canopy {
+
+namespace {
+
+using Cells = std::vector<std::string>;
+using Headers = std::vector<ResultColumn::MarkdownHeader>;
+
+std::string quoted(const std::string& s) {
+    std::string out = "\"";
+    for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return out + "\"";
+}
+
+std::string full(double value) { return fmt::format("{}", value); }
+std::string ms3(double value) { return fmt::format("{:.3f}", value); }
+std::string mib(uint64_t bytes) { return fmt::format("{:.2f}", double(bytes) / (1024.0 * 1024.0)); }
+bool timed(const CaseResult& c) { return c.gpu_frame.stats.count > 0; }
+
+// A column of one CSV cell, not in results.md.
+ResultColumn csv_only(std::string name, std::function<std::string(const RunRecord&, const CaseResult&)> cell) {
+    ResultColumn column;
+    column.csv_headers = [name](const RunRecord&) { return Cells{name}; };
+    column.csv_cells = [cell](const RunRecord& run, const CaseResult& c) { return Cells{cell(run, c)}; };
+    column.name = std::move(name);
+    return column;
+}
+
+// A column of one CSV cell that results.md shows too.
+ResultColumn both(std::string name, std::function<std::string(const RunRecord&, const CaseResult&)> cell,
+                  std::string markdown_header, bool right,
+                  std::function<std::string(const RunRecord&, const CaseResult&)> markdown_cell) {
+    ResultColumn column = csv_only(std::move(name), std::move(cell));
+    column.markdown_headers = [markdown_header, right](const RunRecord&) { return Headers{{markdown_header, right}}; };
+    column.markdown_cells = [markdown_cell](const RunRecord& run, const CaseResult& c) { return Cells{markdown_cell(run, c)}; };
+    return column;
+}
+
+// Names of the run's GPU (or CPU) passes, in the order they are first seen: techniques differ.
+std::vector<std::string> pass_names(const RunRecord& run, std::vector<TimingSeries> CaseResult::*passes) {
+    std::vector<std::string> names;
+    std::set<std::string> seen;
+    for (const CaseResult& c : run.cases)
+        for (const TimingSeries& p : c.*passes)
+            if (seen.insert(p.name).second) names.push_back(p.name);
+    return names;
+}
+
+const TimingSeries* find_pass(const CaseResult& c, std::vector<TimingSeries> CaseResult::*passes, const std::string& name) {
+    for (const TimingSeries& p : c.*passes)
+        if (p.name == name) return &p;
+    return nullptr;
+}
+
+// Per pass seen in the run: "<pass><suffix>_ms_median" and "_ms_mad" (empty where a case has no such pass).
+ResultColumn pass_family(std::string name, std::vector<TimingSeries> CaseResult::*passes, std::string suffix) {
+    ResultColumn column;
+    column.name = std::move(name);
+    column.csv_headers = [passes, suffix](const RunRecord& run) {
+        Cells headers;
+        for (const std::string& pass : pass_names(run, passes)) {
+            headers.push_back(fmt::format("{}{}_ms_median", pass, suffix));
+            headers.push_back(fmt::format("{}{}_ms_mad", pass, suffix));
+        }
+        return headers;
+    };
+    column.csv_cells = [passes](const RunRecord& run, const CaseResult& c) {
+        Cells cells;
+        for (const std::string& pass : pass_names(run, passes)) {
+            const TimingSeries* p = find_pass(c, passes, pass);
+            cells.push_back(p ? full(p->stats.median) : "");
+            cells.push_back(p ? full(p->stats.mad) : "");
+        }
+        return cells;
+    };
+    return column;
+}
+
+// Every registered error metric (metrics/metric_registry.hpp): full precision in the CSV ("n/a"
+// where the technique does not declare its group meaningful); in results.md those it shows.
+ResultColumn metric_family() {
+    ResultColumn column;
+    column.name = "error metrics";
+    column.csv_headers = [](const RunRecord&) {
+        Cells headers;
+        for (const MetricInfo& metric : registered_metrics()) headers.emplace_back(metric.name);
+        return headers;
+    };
+    column.csv_cells = [](const RunRecord&, const CaseResult& c) {
+        Cells cells;
+        for (const MetricInfo& metric : registered_metrics()) {
+            const auto& m = c.image_error;
+            cells.push_back(!m ? "" : group_declared(metric.group, m->columns) ? full((*m).*metric.value) : "n/a");
+        }
+        return cells;
+    };
+    const auto shown = [](const RunRecord& run) {
+        std::vector<const MetricInfo*> metrics;
+        const bool errors = std::any_of(run.cases.begin(), run.cases.end(), [](const CaseResult& c) { return c.image_error.has_value(); });
+        for (const MetricInfo& metric : registered_metrics())
+            if (errors && metric.shown_in(shown_in_markdown)) metrics.push_back(&metric);
+        return metrics;
+    };
+    column.markdown_headers = [shown](const RunRecord& run) {
+        Headers headers;
+        for (const MetricInfo* metric : shown(run)) headers.push_back({std::string(metric->column), true});
+        return headers;
+    };
+    column.markdown_cells = [shown](const RunRecord& run, const CaseResult& c) {
+        Cells cells;
+        for (const MetricInfo* metric : shown(run)) cells.push_back(c.image_error ? table_cell(*metric, *c.image_error) : "-");
+        return cells;
+    };
+    return column;
+}
+
+std::vector<ResultColumn> make_columns() {
+    using R = const RunRecord&;
+    using C = const CaseResult&;
+    std::vector<ResultColumn> columns;
+    columns.push_back(csv_only("id", [](R, C c) { return quoted(c.id); }));
+    columns.push_back(both("scene", [](R, C c) { return quoted(c.scene); }, "scene", false, [](R, C c) { return c.scene; }));
+    columns.push_back(csv_only("technique", [](R, C c) { return quoted(c.technique); }));
+    columns.push_back(csv_only("params", [](R, C c) { return quoted(c.params_summary); }));
+    {
+        ResultColumn size;
+        size.name = "resolution";
+        size.csv_headers = [](R) { return Cells{"width", "height"}; };
+        size.csv_cells = [](R, C c) { return Cells{std::to_string(c.resolution.width), std::to_string(c.resolution.height)}; };
+        size.markdown_headers = [](R) { return Headers{{"resolution", false}, {"technique", false}, {"parameters", false}}; };
+        size.markdown_cells = [](R, C c) {
+            return Cells{fmt::format("{}x{}", c.resolution.width, c.resolution.height), c.technique, c.params_shown};
+        };
+        columns.push_back(std::move(size));
+    }
+    columns.push_back(csv_only("ok", [](R, C c) { return c.ok ? "1" : "0"; }));
+    columns.push_back(both("gpu_ms_median", [](R, C c) { return full(c.gpu_frame.stats.median); }, "GPU ms", true,
+                           [](R, C c) { return timed(c) ? ms3(c.gpu_frame.stats.median) : "-"; }));
+    columns.push_back(csv_only("gpu_ms_min", [](R, C c) { return full(c.gpu_frame.stats.min); }));
+    columns.push_back(csv_only("gpu_ms_mean", [](R, C c) { return full(c.gpu_frame.stats.mean); }));
+    columns.push_back(both("gpu_ms_mad", [](R, C c) { return full(c.gpu_frame.stats.mad); }, "± MAD", true,
+                           [](R, C c) { return timed(c) ? ms3(c.gpu_frame.stats.mad) : "-"; }));
+    columns.push_back(both("gpu_cv", [](R, C c) { return full(c.gpu_frame.stats.cv); }, "CV %", true,
+                           [](R, C c) { return timed(c) ? fmt::format("{:.1f}", 100.0 * c.gpu_frame.stats.cv) : "-"; }));
+    {
+        // The ratio's three CSV columns sit after the wall and CPU times; results.md shows it first.
+        ResultColumn ratio;
+        ratio.name = "ratio";
+        ratio.csv_headers = [](R) { return Cells{}; };
+        ratio.csv_cells = [](R, C) { return Cells{}; };
+        ratio.markdown_headers = [](R) { return Headers{{"ratio", true}}; };
+        ratio.markdown_cells = [](R, C c) { return Cells{c.ok ? ratio_cell(c.ratio.estimate) : "-"}; };
+        columns.push_back(std::move(ratio));
+    }
+    columns.push_back(both("wall_ms_median", [](R, C c) { return full(c.wall.stats.median); }, "wall ms", true,
+                           [](R, C c) { return timed(c) ? ms3(c.wall.stats.median) : "-"; }));
+    columns.push_back(csv_only("wall_ms_mad", [](R, C c) { return full(c.wall.stats.mad); }));
+    columns.push_back(csv_only("wall_cv", [](R, C c) { return full(c.wall.stats.cv); }));
+    columns.push_back(csv_only("cpu_ms_median", [](R, C c) { return full(c.cpu.stats.median); }));
+    {
+        ResultColumn ratio;
+        ratio.name = "ratio_ci95";
+        ratio.csv_headers = [](R) { return Cells{"ratio", "ratio_ci95_low", "ratio_ci95_high"}; };
+        ratio.csv_cells = [](R, C c) {
+            const Estimate& r = c.ratio.estimate;
+            return c.ratio.measured() ? Cells{full(r.value), full(r.ci.low), full(r.ci.high)} : Cells{"", "", ""};
+        };
+        columns.push_back(std::move(ratio));
+    }
+    columns.push_back(csv_only("rounds", [](R, C c) { return std::to_string(c.gpu_frame.stats.count); }));
+    columns.push_back(csv_only("frames_per_sample", [](R run, C) { return std::to_string(run.frames_per_sample); }));
+    {
+        ResultColumn passes = pass_family("passes", &CaseResult::passes, "_gpu");
+        passes.markdown_headers = [](R) { return Headers{{"passes (GPU ms)", false}}; };
+        passes.markdown_cells = [](R, C c) {
+            std::string text;
+            for (const TimingSeries& p : c.passes) text += fmt::format("{}{} {:.3f}", text.empty() ? "" : ", ", p.name, p.stats.median);
+            return Cells{text.empty() ? "-" : text};
+        };
+        columns.push_back(std::move(passes));
+    }
+    columns.push_back(pass_family("cpu passes", &CaseResult::cpu_passes, "_cpu"));
+    columns.push_back(csv_only("record_cpu_ms_median", [](R, C c) { return full(c.record_cpu.stats.median); }));
+    columns.push_back(csv_only("timing_check_gap_ms", [](R, C c) {
+        return c.timing_check.checked ? full(c.timing_check.gap_ms) : "";
+    }));
+    columns.push_back(csv_only("timing_check_agrees", [](R, C c) {
+        return c.timing_check.checked ? (c.timing_check.agrees() ? "1" : "0") : "";
+    }));
+    columns.push_back(both("technique_memory_bytes", [](R, C c) { return std::to_string(c.memory.technique_bytes); },
+                           "memory MiB", true, [](R, C c) { return mib(c.memory.technique_bytes); }));
+    columns.push_back(csv_only("target_memory_bytes", [](R, C c) { return std::to_string(c.memory.target_bytes); }));
+    columns.push_back(csv_only("scene_memory_bytes", [](R, C c) { return std::to_string(c.memory.scene_bytes); }));
+    columns.push_back(csv_only("triangles", [](R, C c) { return std::to_string(c.triangles); }));
+    columns.push_back(csv_only("shadow_sampler", [](R, C c) { return quoted(c.shadow_sampler); }));
+    columns.push_back(csv_only("nonfinite_pixels", [](R, C c) { return std::to_string(c.nonfinite_pixels); }));
+    columns.push_back(metric_family());
+    {
+        ResultColumn status;
+        status.name = "status";
+        status.csv_headers = [](R) { return Cells{}; };
+        status.csv_cells = [](R, C) { return Cells{}; };
+        status.markdown_headers = [](R) { return Headers{{"status", false}}; };
+        status.markdown_cells = [](R, C c) { return Cells{c.ok ? "ok" : "FAILED: " + c.error}; };
+        columns.push_back(std::move(status));
+    }
+    columns.push_back(csv_only("device", [](R run, C) { return quoted(run.environment.device.name); }));
+    columns.push_back(csv_only("commit", [](R run, C) { return quoted(run.environment.git_commit); }));
+    return columns;
+}
+
+}  // namespace
+
+const std::vector<ResultColumn>& result_columns() {
+    static const std::vector<ResultColumn> columns = make_columns();
+    return columns;
+}
+
+}  // namespace canopy

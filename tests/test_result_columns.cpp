@@ -1,0 +1,127 @@
+// The per-case columns of results.csv and results.md come from one list (report/result_columns.hpp):
+// every row has a cell under every header, families expand to the run's passes and the registered
+// metrics, and a column declared there reaches both reports with nothing else to edit.
+#include "metrics/metric_registry.hpp"
+#include "report/csv_report.hpp"
+#include "report/markdown_report.hpp"
+#include "report/result_columns.hpp"
+
+#include <doctest/doctest.h>
+
+#include <sstream>
+#include <string>
+
+using namespace canopy;
+
+namespace {
+
+TimingSeries series(std::string name, double median) {
+    TimingSeries t;
+    t.name = std::move(name);
+    t.samples_ms = {median, median};
+    t.stats.count = 2;
+    t.stats.median = t.stats.mean = t.stats.min = t.stats.max = median;
+    return t;
+}
+
+CaseResult timed_case(const std::string& id, std::vector<std::string> gpu_passes, std::vector<std::string> cpu_passes) {
+    CaseResult c;
+    c.id = id;
+    c.scene = "spheres";
+    c.technique = "shadow.hard";
+    c.resolution = {96, 64};
+    c.gpu_frame = series("gpu_frame", 2.5);
+    c.wall = series("wall", 2.75);
+    c.record_cpu = series("record_cpu", 0.0625);
+    for (const std::string& p : gpu_passes) c.passes.push_back(series(p, 1.25));
+    for (const std::string& p : cpu_passes) c.cpu_passes.push_back(series(p, 0.5));
+    c.timing_check = check_pass_timing({{1.25, 1.25}}, {2.75, 2.75});
+    return c;
+}
+
+RunRecord run_of_two() {
+    RunRecord run;
+    run.frames_per_sample = 1;
+    run.environment.device.name = "llvmpipe";
+    run.environment.git_commit = "abc";
+    run.cases.push_back(timed_case("a", {"shadow_map", "lit"}, {}));
+    run.cases.push_back(timed_case("b", {"cull", "lit"}, {"lod_select"}));
+    return run;
+}
+
+std::vector<std::string> split(const std::string& line, char separator) {
+    std::vector<std::string> cells;
+    std::string cell;
+    std::istringstream in(line);
+    while (std::getline(in, cell, separator)) cells.push_back(cell);
+    if (!line.empty() && line.back() == separator) cells.emplace_back();
+    return cells;
+}
+
+std::vector<std::string> lines(const std::string& text) {
+    std::vector<std::string> out;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) out.push_back(line);
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE("every column gives as many cells as headers, for every case") {
+    const RunRecord run = run_of_two();
+    for (const ResultColumn& column : result_columns()) {
+        CAPTURE(column.name);
+        REQUIRE(column.csv_headers);
+        REQUIRE(column.csv_cells);
+        CHECK(bool(column.markdown_headers) == bool(column.markdown_cells));
+        for (const CaseResult& c : run.cases) {
+            CHECK(column.csv_cells(run, c).size() == column.csv_headers(run).size());
+            if (column.markdown_headers) CHECK(column.markdown_cells(run, c).size() == column.markdown_headers(run).size());
+        }
+    }
+}
+
+TEST_CASE("results.csv: one cell under every header, pass families per name the run holds") {
+    const auto rows = lines(csv_report(run_of_two()));
+    REQUIRE(rows.size() == 3);
+    const std::vector<std::string> header = split(rows[0], ',');
+    for (size_t r = 1; r < rows.size(); ++r) CHECK(split(rows[r], ',').size() == header.size());
+    const auto column = [&](const std::string& name) {
+        for (size_t i = 0; i < header.size(); ++i)
+            if (header[i] == name) return int(i);
+        return -1;
+    };
+    // The layout before the list existed, kept: scripts that index columns still read them.
+    CHECK(rows[0].rfind("id,scene,technique,params,width,height,ok,gpu_ms_median,gpu_ms_min,gpu_ms_mean,gpu_ms_mad,gpu_cv,"
+                        "wall_ms_median,wall_ms_mad,wall_cv,cpu_ms_median,ratio,ratio_ci95_low,ratio_ci95_high,rounds,"
+                        "frames_per_sample,shadow_map_gpu_ms_median,shadow_map_gpu_ms_mad,lit_gpu_ms_median,",
+                        0) == 0);
+    for (const char* name : {"cull_gpu_ms_median", "lod_select_cpu_ms_median", "record_cpu_ms_median",
+                             "timing_check_gap_ms", "timing_check_agrees", "technique_memory_bytes", "device", "commit"})
+        CHECK_MESSAGE(column(name) >= 0, name);
+    for (const MetricInfo& metric : registered_metrics()) CHECK(column(std::string(metric.name)) >= 0);
+    const std::vector<std::string> a = split(rows[1], ','), b = split(rows[2], ',');
+    CHECK(a[size_t(column("cull_gpu_ms_median"))].empty());  // case a has no such pass
+    CHECK(b[size_t(column("cull_gpu_ms_median"))] == "1.25");
+    CHECK(b[size_t(column("lod_select_cpu_ms_median"))] == "0.5");
+    CHECK(b[size_t(column("record_cpu_ms_median"))] == "0.0625");
+    CHECK(b[size_t(column("timing_check_gap_ms"))] == "1.5");  // 2.75 - 1.25: beyond 0.5 ms
+    CHECK(b[size_t(column("timing_check_agrees"))] == "0");
+    CHECK(header.back() == "commit");
+    CHECK(a.back() == "\"abc\"");
+}
+
+TEST_CASE("results.md's table: the columns the list shows there, in its order") {
+    const auto table = lines(markdown_table(run_of_two()));
+    REQUIRE(table.size() == 4);
+    std::vector<std::string> header;
+    for (std::string cell : split(table[0], '|')) {
+        const size_t first = cell.find_first_not_of(' '), last = cell.find_last_not_of(' ');
+        if (first != std::string::npos) header.push_back(cell.substr(first, last - first + 1));
+    }
+    // No error metrics: the run has no reference.
+    CHECK(header == std::vector<std::string>{"scene", "resolution", "technique", "parameters", "GPU ms", "± MAD", "CV %",
+                                             "ratio", "wall ms", "passes (GPU ms)", "memory MiB", "status"});
+    CHECK(table[3].find("cull 1.250, lit 1.250") != std::string::npos);
+    CHECK(table[3].find("96x64") != std::string::npos);
+}
