@@ -41,6 +41,16 @@ VkImageLayout layout_for(Use use, VkImageAspectFlags aspect) {
     }
 }
 
+VkMemoryBarrier2 memory_barrier(VkPipelineStageFlags2 src_stages, VkAccessFlags2 src_access, VkPipelineStageFlags2 dst_stages,
+                                VkAccessFlags2 dst_access) {
+    VkMemoryBarrier2 b{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
+    b.srcStageMask = src_stages;
+    b.srcAccessMask = src_access;
+    b.dstStageMask = dst_stages;
+    b.dstAccessMask = dst_access;
+    return b;
+}
+
 VkImageMemoryBarrier2 image_barrier(const GraphImage& image, uint32_t mip, uint32_t layer, VkImageLayout from,
                                     VkImageLayout to) {
     // Whole-pipeline dependencies, as the renderer always had: a pass's work is a few draws or
@@ -188,11 +198,10 @@ private:
     // none (the next pass's barrier covers it).
     void after_transfer() {
         if (pass().kind != PassKind::compute) return;
-        VkMemoryBarrier2 memory{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-        memory.srcStageMask = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;
-        memory.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
-        memory.dstStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-        memory.dstAccessMask = VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
+        const VkMemoryBarrier2 memory =
+            memory_barrier(VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                           VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                           VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
         VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
         dependency.memoryBarrierCount = 1;
         dependency.pMemoryBarriers = &memory;
@@ -434,11 +443,9 @@ void GraphExecutor::barriers_for(VkCommandBuffer commands, const PassDecl& pass)
         if (!resources_->has_image(u.resource) && (u.writes() || u.use == Use::storage_write))
             buffer_written_[u.resource] = true;
     if (image_barriers.empty() && !buffer_barrier) return;
-    VkMemoryBarrier2 memory{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-    memory.srcStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
-    memory.srcAccessMask = VK_ACCESS_2_MEMORY_WRITE_BIT;
-    memory.dstStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
-    memory.dstAccessMask = VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT;
+    const VkMemoryBarrier2 memory =
+        memory_barrier(VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                       VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT);
     VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
     dependency.memoryBarrierCount = buffer_barrier ? 1u : 0u;
     dependency.pMemoryBarriers = &memory;
