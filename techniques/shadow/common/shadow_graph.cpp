@@ -3,9 +3,9 @@
 #include "graph/pass_context.hpp"
 #include "render/frame_uniforms.hpp"
 
-#include "shaders/scene_vert.h"
-#include "shaders/shadow_depth_frag.h"
-#include "shaders/shadow_depth_vert.h"
+#include "shaders/harness/scene_vert.h"
+#include "shaders/harness/shadow_depth_frag.h"
+#include "shaders/harness/shadow_depth_vert.h"
 #include "lit_pass_output.h"
 
 #include <fmt/format.h>
