@@ -1,6 +1,6 @@
 #include "prefilter_params.hpp"
 
-#include "shaders/harness/box_filter_comp.h"
+#include "shaders/shadow/box_filter_comp.h"
 
 namespace canopy {
 

@@ -4,8 +4,8 @@
 #include "render/frame_uniforms.hpp"
 
 #include "shaders/harness/scene_vert.h"
-#include "shaders/harness/shadow_depth_frag.h"
-#include "shaders/harness/shadow_depth_vert.h"
+#include "shaders/shadow/shadow_depth_frag.h"
+#include "shaders/shadow/shadow_depth_vert.h"
 #include "lit_pass_output.h"
 
 #include <fmt/format.h>

@@ -1,6 +1,6 @@
 // shadow.ssss: screen-space soft shadows (Gumbau 2011, chapter 6).
 #include "core/registry.hpp"
-#include "shaders/harness/block_min_comp.h"
+#include "shaders/shadow/block_min_comp.h"
 #include "shaders/shadow/ssss_blur_comp.h"
 #include "shaders/shadow/ssss_dilate_comp.h"
 #include "shaders/shadow/ssss_frag.h"

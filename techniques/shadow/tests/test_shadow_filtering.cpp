@@ -4,8 +4,8 @@
 // its occluders; a NaN anywhere fails with a message naming the function and its inputs.
 #include "core/registry.hpp"
 #include "../common/shadow_technique.hpp"
-#include "shadow_common.h"
-#include "shadow_filtering.h"
+#include "../shaders/shadow_common.h"
+#include "../shaders/shadow_filtering.h"
 #include "../evsm/evsm_params.h"
 
 #include <doctest/doctest.h>
