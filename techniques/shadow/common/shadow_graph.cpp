@@ -19,7 +19,7 @@ namespace {
 
 constexpr uint32_t kDrawConstants = sizeof(DrawConstants);
 
-// Push constants of every separable filter (harness/shaders/separable_filter.glsl).
+// Push constants of every separable filter (techniques/shadow/shaders/separable_filter.glsl).
 struct FilterPushConstants {
     int32_t direction[2];
     int32_t radius;
