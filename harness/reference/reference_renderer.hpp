@@ -1,7 +1,7 @@
 // The Embree ground truth that raster shadow techniques are measured against.
 //
-// Shading is the raster lit pass's (harness/shaders/forward_lighting.glsl with shading.h) with
-// visibility made physically correct and area lights integrated:
+// Shading is the raster lit pass's (shading.h, as techniques/shadow/shaders/forward_lighting.glsl
+// uses it) with visibility made physically correct and area lights integrated:
 //   radiance = albedo * (sum over lights of E_l * V_l / pi + ambient)
 // at the surface a camera ray hits, its interpolated normal turned towards the viewer.
 //   directional, spot: shading.h's irradiance times one hard shadow ray;

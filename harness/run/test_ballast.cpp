@@ -1,7 +1,7 @@
 #include "run/test_ballast.hpp"
 
 #include "gpu/vk_check.hpp"
-#include "shaders/test_ballast_comp.h"
+#include "shaders/harness/test_ballast_comp.h"
 
 #include <cstdlib>
 #include <stdexcept>

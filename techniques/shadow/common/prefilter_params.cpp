@@ -1,6 +1,6 @@
 #include "prefilter_params.hpp"
 
-#include "shaders/box_filter_comp.h"
+#include "shaders/shadow/box_filter_comp.h"
 
 namespace canopy {
 

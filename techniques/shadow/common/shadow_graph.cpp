@@ -3,9 +3,9 @@
 #include "graph/pass_context.hpp"
 #include "render/frame_uniforms.hpp"
 
-#include "shaders/scene_vert.h"
-#include "shaders/shadow_depth_frag.h"
-#include "shaders/shadow_depth_vert.h"
+#include "shaders/harness/scene_vert.h"
+#include "shaders/shadow/shadow_depth_frag.h"
+#include "shaders/shadow/shadow_depth_vert.h"
 #include "lit_pass_output.h"
 
 #include <fmt/format.h>
@@ -19,7 +19,7 @@ namespace {
 
 constexpr uint32_t kDrawConstants = sizeof(DrawConstants);
 
-// Push constants of every separable filter (harness/shaders/separable_filter.glsl).
+// Push constants of every separable filter (techniques/shadow/shaders/separable_filter.glsl).
 struct FilterPushConstants {
     int32_t direction[2];
     int32_t radius;

@@ -29,7 +29,7 @@ VkFormat vk_format(DepthFormat format);
 
 // One 1D pass of a separable prefilter over the moment map: a compute shader reading the
 // previous result (`src`, sampler2D, NEAREST) and writing the next (`dst`, image2D); see
-// harness/shaders/separable_filter.glsl for its interface. Filters with parameters read them
+// techniques/shadow/shaders/separable_filter.glsl for its interface. Filters with parameters read them
 // from the technique's parameter block (frame.technique; FilterExtras gives them the frame).
 struct FilterPass {
     std::string name;                          // timing label, e.g. "blur_x"
@@ -64,7 +64,7 @@ struct MomentMapNeeds {
     uint32_t resolution = 1024;
     MomentFormat format = MomentFormat::rg32f;
     // Writes the statistics of the fragment's normalised linear light depth
-    // (include harness/shaders/moment_output.glsl).
+    // (include techniques/shadow/shaders/moment_output.glsl).
     std::span<const uint32_t> fragment_spirv;
     std::array<float, 4> clear_value{1.0f, 1.0f, 1.0f, 1.0f};  // the statistics of depth 1 (no caster)
     std::vector<FilterPass> prefilter;

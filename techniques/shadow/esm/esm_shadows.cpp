@@ -1,9 +1,9 @@
 // shadow.esm: exponential shadow maps.
 #include "core/registry.hpp"
-#include "shaders/esm_depth_frag.h"
-#include "shaders/esm_frag.h"
-#include "shaders/log_box_filter_comp.h"
-#include "shadow_filtering.h"
+#include "shaders/shadow/esm_depth_frag.h"
+#include "shaders/shadow/esm_frag.h"
+#include "shaders/shadow/log_box_filter_comp.h"
+#include "../shaders/shadow_filtering.h"
 #include "esm_params.h"
 #include "../common/prefilter_params.hpp"
 #include "../common/shadow_technique.hpp"

@@ -1,8 +1,8 @@
 // shadow.evsm: exponential variance shadow maps, 2 or 4 components.
 #include "core/registry.hpp"
-#include "shaders/evsm_depth_frag.h"
-#include "shaders/evsm_frag.h"
-#include "shadow_filtering.h"
+#include "shaders/shadow/evsm_depth_frag.h"
+#include "shaders/shadow/evsm_frag.h"
+#include "../shaders/shadow_filtering.h"
 #include "evsm_params.h"
 #include "../common/prefilter_params.hpp"
 #include "../common/shadow_technique.hpp"

@@ -1,7 +1,7 @@
 // shadow.gauss-cdf: Gaussian-CDF shadow filtering (Gumbau 2011, section 7.2.1).
 #include "core/registry.hpp"
-#include "shaders/gauss_cdf_frag.h"
-#include "shaders/two_moments_frag.h"
+#include "shaders/shadow/gauss_cdf_frag.h"
+#include "shaders/shadow/two_moments_frag.h"
 #include "gauss_cdf_params.h"
 #include "../common/prefilter_params.hpp"
 #include "../common/shadow_technique.hpp"

@@ -1,6 +1,6 @@
 // shadow.hard: standard shadow mapping with constant and slope-scaled bias.
 #include "core/registry.hpp"
-#include "shaders/hard_frag.h"
+#include "shaders/shadow/hard_frag.h"
 #include "hard_params.h"
 #include "../common/shadow_map_params.hpp"
 #include "../common/shadow_technique.hpp"

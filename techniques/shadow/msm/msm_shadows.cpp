@@ -1,8 +1,8 @@
 // shadow.msm: moment shadow mapping, 4 moments, Hamburger reconstruction.
 #include "core/registry.hpp"
-#include "shaders/msm_depth_frag.h"
-#include "shaders/msm_frag.h"
-#include "shadow_filtering.h"
+#include "shaders/shadow/msm_depth_frag.h"
+#include "shaders/shadow/msm_frag.h"
+#include "../shaders/shadow_filtering.h"
 #include "msm_params.h"
 #include "../common/prefilter_params.hpp"
 #include "../common/shadow_technique.hpp"

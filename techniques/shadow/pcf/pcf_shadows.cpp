@@ -1,6 +1,6 @@
 // shadow.pcf: percentage-closer filtering over a grid or Poisson-disk kernel.
 #include "core/registry.hpp"
-#include "shaders/pcf_frag.h"
+#include "shaders/shadow/pcf_frag.h"
 #include "pcf_params.h"
 #include "../common/poisson_disk.hpp"
 #include "../common/shadow_map_params.hpp"

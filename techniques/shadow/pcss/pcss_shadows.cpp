@@ -1,6 +1,6 @@
 // shadow.pcss: percentage-closer soft shadows.
 #include "core/registry.hpp"
-#include "shaders/pcss_frag.h"
+#include "shaders/shadow/pcss_frag.h"
 #include "pcss_params.h"
 #include "../common/shadow_map_params.hpp"
 #include "../common/shadow_technique.hpp"

@@ -1,8 +1,8 @@
 // shadow.power-cdf: power-function CDF reconstruction (Gumbau 2011, section 7.2.2).
 #include "core/registry.hpp"
-#include "shaders/min_max_mean_filter_comp.h"
-#include "shaders/power_cdf_depth_frag.h"
-#include "shaders/power_cdf_frag.h"
+#include "shaders/shadow/min_max_mean_filter_comp.h"
+#include "shaders/shadow/power_cdf_depth_frag.h"
+#include "shaders/shadow/power_cdf_frag.h"
 #include "power_cdf_params.h"
 #include "../common/prefilter_params.hpp"
 #include "../common/shadow_technique.hpp"

@@ -6,7 +6,7 @@
 #ifndef CANOPY_SSSS_FILTER_H
 #define CANOPY_SSSS_FILTER_H
 
-#include "shadow_filtering.h"
+#include "../shaders/shadow_filtering.h"
 
 CANOPY_BEGIN_NAMESPACE
 

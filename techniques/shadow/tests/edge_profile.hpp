@@ -24,8 +24,8 @@
 #include "scene/camera.hpp"
 #include "scene/geometry.hpp"
 #include "shading.h"
-#include "shadow_common.h"
 #include "support/test_gpu.hpp"
+#include "../shaders/shadow_common.h"
 
 #include <glm/glm.hpp>
 

@@ -7,7 +7,7 @@
 #pragma once
 
 #include "edge_profile.hpp"
-#include "shadow_filtering.h"
+#include "../shaders/shadow_filtering.h"
 
 #include "../common/poisson_disk.hpp"
 

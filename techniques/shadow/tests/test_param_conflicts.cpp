@@ -4,10 +4,10 @@
 #include "config/experiment_config.hpp"
 #include "core/error.hpp"
 #include "core/registry.hpp"
-#include "shadow_filtering.h"
 #include "support/config_error_of.hpp"
 #include "support/temp_folder.hpp"
 #include "support/text_search.hpp"
+#include "../shaders/shadow_filtering.h"
 
 #include <doctest/doctest.h>
 

@@ -1,11 +1,11 @@
-// The shadow-filtering visibility functions (harness/shaders/shadow_filtering.h), checked as C++:
+// The shadow-filtering visibility functions (../shaders/shadow_filtering.h), checked as C++:
 // hand-computed values, the papers' equations, and numerical stability at the extremes. Every
 // visibility must be finite, in [0, 1], non-increasing in the receiver depth and 1 in front of
 // its occluders; a NaN anywhere fails with a message naming the function and its inputs.
 #include "core/registry.hpp"
 #include "../common/shadow_technique.hpp"
-#include "shadow_common.h"
-#include "shadow_filtering.h"
+#include "../shaders/shadow_common.h"
+#include "../shaders/shadow_filtering.h"
 #include "../evsm/evsm_params.h"
 
 #include <doctest/doctest.h>

@@ -1,7 +1,7 @@
 // shadow.vsm: variance shadow maps.
 #include "core/registry.hpp"
-#include "shaders/two_moments_frag.h"
-#include "shaders/vsm_frag.h"
+#include "shaders/shadow/two_moments_frag.h"
+#include "shaders/shadow/vsm_frag.h"
 #include "vsm_params.h"
 #include "../common/prefilter_params.hpp"
 #include "../common/shadow_technique.hpp"

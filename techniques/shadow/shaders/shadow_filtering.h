@@ -159,7 +159,7 @@ CANOPY_FN vec3 power_cdf_bilinear_statistics(vec3 t00, vec3 t10, vec3 t01, vec3 
 
 // Winitzki 2008, as printed in Gumbau eq 7.3:
 //   erf(x) ~ sign(x) sqrt(1 - exp(-x^2 (4/pi + a x^2) / (1 + a x^2))), a = 8(pi-3)/(3 pi (4-pi)).
-// Measured in float against std::erf (tests/test_shadow_filtering.cpp): max |error| 3.3e-4
+// Measured in float against std::erf (../tests/test_shadow_filtering.cpp): max |error| 3.3e-4
 // (absolute, at |x| = 1.35), max relative error 3.5e-4; exact at 0 and +-inf. 1 - exp(-y)
 // uses sf_one_minus_exp so erf(x) ~ 2x/sqrt(pi) keeps its digits for small x. |x| is capped at
 // 10, where erf is 1 in float, so x^2 cannot overflow into inf/inf.
@@ -172,7 +172,7 @@ CANOPY_FN float erf_winitzki(float x) {
 }
 
 // An erf accurate to float precision: measured max |error| 1.6e-7 against std::erf over
-// [-6, 6] (tests/test_shadow_filtering.cpp), and non-decreasing. Abramowitz & Stegun 7.1.26
+// [-6, 6] (../tests/test_shadow_filtering.cpp), and non-decreasing. Abramowitz & Stegun 7.1.26
 // (|error| <= 1.5e-7 in exact arithmetic) reaches 2.5e-7 once evaluated in float, because
 // 1 - (a value near 1) keeps the rounding of the polynomial, so two pieces are used instead:
 //  * |x| < 0.75: the Maclaurin series (2/sqrt(pi)) sum_{n=0..8} (-1)^n x^(2n+1) / (n! (2n+1))
