@@ -188,4 +188,5 @@ TEST_CASE("a technique's requirements, in words, from its plan at the defaults")
     CHECK(needs("shadow.hard").find("area light") == std::string::npos);
     CHECK(needs("shadow.hard").find("a shadow-casting light") != std::string::npos);
     CHECK(needs("shadow.vsm").find("compute filter passes") != std::string::npos);
+    CHECK(needs("shadow.hard").find("a scene without populations") != std::string::npos);  // renders none
 }

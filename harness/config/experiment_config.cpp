@@ -62,6 +62,7 @@ void apply_scene_variant(TomlReader& variant, Scene& scene) {
     if (variant.has("casts_shadows")) {
         const bool casts = variant.get_bool("casts_shadows", true);
         for (Object& object : scene.objects) object.casts_shadows = casts;
+        for (Population& population : scene.populations) population.prototype.casts_shadows = casts;
     }
     variant.finish();
 }
@@ -332,11 +333,15 @@ Experiment load_experiment(const std::filesystem::path& file, const TechniqueReg
     check_case_count(experiment);
 
     // Mesh files change the results as much as the configs do.
-    for (const Scene& scene : experiment.scenes)
-        for (const Object& object : scene.objects)
-            if (object.shape == ShapeType::mesh &&
-                std::find(hashed_files.begin(), hashed_files.end(), object.mesh_file) == hashed_files.end())
-                hashed_files.push_back(object.mesh_file);
+    const auto hash_mesh_file = [&](const Object& object) {
+        if (object.shape == ShapeType::mesh &&
+            std::find(hashed_files.begin(), hashed_files.end(), object.mesh_file) == hashed_files.end())
+            hashed_files.push_back(object.mesh_file);
+    };
+    for (const Scene& scene : experiment.scenes) {
+        for (const Object& object : scene.objects) hash_mesh_file(object);
+        for (const Population& population : scene.populations) hash_mesh_file(population.prototype);
+    }
     experiment.config_hash = hash_files(text, hashed_files);
     return experiment;
 }

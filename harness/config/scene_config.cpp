@@ -394,6 +394,87 @@ Object read_object(TomlReader& reader, size_t index, const std::filesystem::path
     return object;
 }
 
+constexpr std::array kPopulationKindNames{population_kinds::kScatter};
+constexpr std::array kPopulationKinds{population_kinds::kScatter};
+
+Population read_population(TomlReader& reader, size_t index, const std::filesystem::path& config_folder) {
+    Population population;
+    population.where = reader.where();
+    population.kind = read_kind(reader, "kind", kPopulationKindNames, kPopulationKinds, "population kind");
+    population.name = reader.get_string("name", fmt::format("population{}", index));
+    if (population.name.empty())
+        throw reader.error("name", "a population's name must not be empty", "name = \"pebbles\"");
+
+    // Every key is read before the required ones are checked, so that a misspelled required key
+    // is reported as misspelled (with the right name), not as missing.
+    const long long count = reader.get_int("count", 0);
+    population.region_min = reader.get_vec2("region_min", population.region_min, Broadcast::forbidden);
+    population.region_max = reader.get_vec2("region_max", population.region_max, Broadcast::forbidden);
+    population.ground_y = float(reader.get_float("ground", population.ground_y));
+    const long long seed = reader.get_int("seed", 0);
+    const glm::vec2 scale = reader.get_vec2("scale", glm::vec2(1.0f));
+    population.random_yaw = reader.get_bool("random_yaw", population.random_yaw);
+    const std::string prototype_context = fmt::format("prototype of {}", reader.context());
+    std::optional<TomlReader> prototype = reader.get_table("prototype", prototype_context);
+    reader.finish();
+
+    if (!reader.has("count"))
+        throw reader.error("count", fmt::format("{} needs a 'count'", reader.context()),
+                           "say how many copies to scatter, e.g. count = 100");
+    if (count < 1 || count > limits::kMaxPopulationCount)
+        throw reader.error("count", fmt::format("{} must lie in [1, {}], got {}", reader.describe_key("count"),
+                                                limits::kMaxPopulationCount, count),
+                           "the reference flattens every copy into its own triangles (configs/README.md, \"Limits\")");
+    population.count = uint32_t(count);
+
+    for (const char* key : {"region_min", "region_max"})
+        if (!reader.has(key))
+            throw reader.error(key, fmt::format("{} needs 'region_min' and 'region_max'", reader.context()),
+                               "the [x, z] corners of the ground rectangle, e.g. region_min = [-2, -2], "
+                               "region_max = [2, 2]");
+    for (const char* key : {"region_min", "region_max"}) {
+        const glm::vec2 corner = std::string_view(key) == "region_min" ? population.region_min : population.region_max;
+        require_in_scene(reader, key, glm::vec3(corner.x, 0.0f, corner.y));
+    }
+    if (!(population.region_max.x > population.region_min.x && population.region_max.y > population.region_min.y))
+        throw reader.error("region_max",
+                           fmt::format("{} = [{}, {}] must exceed 'region_min' = [{}, {}] in x and in z",
+                                       reader.describe_key("region_max"), population.region_max.x,
+                                       population.region_max.y, population.region_min.x, population.region_min.y),
+                           "region_min is the rectangle's corner with the smaller x and z");
+    require_in_scene(reader, "ground", glm::vec3(0.0f, population.ground_y, 0.0f));
+
+    if (seed < 0)
+        throw reader.error("seed", fmt::format("{} must not be negative, got {}", reader.describe_key("seed"), seed),
+                           "any integer >= 0 picks one arrangement, e.g. seed = 7");
+    population.seed = uint64_t(seed);
+
+    for (int i = 0; i < 2; ++i)
+        require_between(reader, "scale", scale[i], limits::kMinScale, limits::kMaxScale,
+                        "scale = [min, max] draws each copy's uniform scale factor from [min, max]");
+    if (!(scale.x <= scale.y))
+        throw reader.error("scale", fmt::format("{} = [{}, {}]: min exceeds max", reader.describe_key("scale"), scale.x,
+                                                scale.y),
+                           "write it as [min, max], or one number for every copy alike");
+    population.scale_min = scale.x;
+    population.scale_max = scale.y;
+
+    if (!prototype)
+        throw reader.error("prototype", fmt::format("{} needs a 'prototype'", reader.context()),
+                           "describe the copied shape as an [[object]] is described, e.g. "
+                           "prototype = { shape = \"box\", size = 0.2, translate = [0, 0.1, 0] }");
+    if (prototype->has("instances"))
+        throw prototype->error("instances", fmt::format("a population's prototype has no 'instances' ({})",
+                                                        prototype_context),
+                               "the population places the copies: use 'count', the region and 'seed'");
+    if (prototype->has("name"))
+        throw prototype->error("name", fmt::format("a population's prototype has no 'name' ({})", prototype_context),
+                               "name the population instead: name = \"...\" in its [[population]] table");
+    population.prototype = read_object(*prototype, index, config_folder);
+    population.prototype.name = population.name;
+    return population;
+}
+
 }  // namespace
 
 Scene parse_scene(const std::string& text, const std::filesystem::path& file) {
@@ -407,6 +488,7 @@ Scene parse_scene(const std::string& text, const std::filesystem::path& file) {
     std::optional<TomlReader> camera_section = top.get_table("camera", "[camera]");
     std::vector<TomlReader> light_sections = top.get_tables("light", "[[light]]");
     std::vector<TomlReader> object_sections = top.get_tables("object", "[[object]]");
+    std::vector<TomlReader> population_sections = top.get_tables("population", "[[population]]");
     top.finish();  // a misspelled table name is reported before its absence is
 
     if (scene_section) read_scene_section(*scene_section, scene);
@@ -431,6 +513,8 @@ Scene parse_scene(const std::string& text, const std::filesystem::path& file) {
     const std::filesystem::path config_folder = std::filesystem::absolute(file).parent_path();
     for (size_t i = 0; i < object_sections.size(); ++i)
         scene.objects.push_back(read_object(object_sections[i], i, config_folder));
+    for (size_t i = 0; i < population_sections.size(); ++i)
+        scene.populations.push_back(read_population(population_sections[i], i, config_folder));
     return scene;
 }
 

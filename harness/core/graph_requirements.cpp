@@ -24,6 +24,8 @@ std::vector<std::string> graph_requirements(const FrameGraph& graph) {
     needs.insert(needs.end(), compare.begin(), compare.end());
     if (storage_writes) needs.emplace_back("compute filter passes (shaderStorageImageWriteWithoutFormat)");
     if (indirect) needs.emplace_back("indirect draws with a GPU-written count (drawIndirectCount)");
+    // A scene holding a population of a kind the graph does not render is refused (check_supported).
+    if (graph.needs.populations.empty()) needs.emplace_back("a scene without populations");
     for (const std::string& kind : graph.needs.populations) needs.push_back(fmt::format("renders '{}' populations", kind));
     return needs;
 }

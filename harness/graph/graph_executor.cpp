@@ -104,6 +104,10 @@ public:
     void draw_scene(SceneFilter filter) override {
         ex_.scene_.draw(commands_, binding().layout, filter == SceneFilter::shadow_casters);
     }
+    std::span<const GeneratedPopulation> populations() const override { return ex_.scene_.populations(); }
+    void draw_population(const std::string& name) override {
+        ex_.scene_.draw_population(commands_, binding().layout, name);
+    }
     void draw(std::span<const std::string> vertex_buffers, uint32_t vertex_count, uint32_t instance_count) override {
         bind_vertex_buffers(vertex_buffers);
         vkCmdDraw(commands_, vertex_count, instance_count, 0, 0);

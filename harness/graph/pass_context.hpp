@@ -6,6 +6,7 @@
 
 #include "core/frame_state.hpp"
 #include "graph/raster_state.hpp"
+#include "scene/generated_population.hpp"
 
 #include <vulkan/vulkan.h>
 
@@ -32,6 +33,13 @@ public:
     virtual void bind(VkPipeline pipeline) = 0;
     // The scene's objects with the scene's vertex layout; each draw pushes its DrawConstants.
     virtual void draw_scene(SceneFilter filter) = 0;
+    // The scene's populations of the kinds the graph declares (GraphNeeds::populations), in scene
+    // order: name, kind, prototype mesh and every copy, as the reference sees them.
+    virtual std::span<const GeneratedPopulation> populations() const = 0;
+    // Every copy of population `name` in one instanced draw, with VertexLayout::population()
+    // (harness/shaders/population.vert); pushes DrawConstants (identity model, the prototype's
+    // albedo), so the pass declares sizeof(DrawConstants) push-constant bytes like draw_scene.
+    virtual void draw_population(const std::string& name) = 0;
     // Geometry the technique owns: vertex buffers bound in the pipeline's binding order.
     virtual void draw(std::span<const std::string> vertex_buffers, uint32_t vertex_count, uint32_t instance_count) = 0;
     virtual void draw_indexed(std::span<const std::string> vertex_buffers, const std::string& index_buffer,
@@ -71,6 +79,8 @@ class CpuPassContext {
 public:
     virtual ~CpuPassContext() = default;
     virtual const FrameState& frame() const = 0;
+    // As PassContext::populations: e.g. for a CPU cull of the copies.
+    virtual std::span<const GeneratedPopulation> populations() const = 0;
     // Writes into a host-visible buffer (BufferDecl::host_visible); counted in the uploaded bytes.
     virtual void upload(const std::string& buffer, const void* bytes, size_t size, size_t offset = 0) = 0;
     // Reads a host-visible buffer as the GPU left it.

@@ -19,6 +19,16 @@ VertexLayout VertexLayout::scene() {
     return layout;
 }
 
+VertexLayout VertexLayout::population() {
+    VertexLayout layout = scene();
+    const uint32_t stride = uint32_t(sizeof(PopulationInstance));
+    layout.instance_mat4(2, stride, uint32_t(offsetof(PopulationInstance, model)));
+    for (uint32_t c = 0; c < 3; ++c)
+        layout.attributes.push_back({6 + c, 1, VK_FORMAT_R32G32B32A32_SFLOAT,
+                                     uint32_t(offsetof(PopulationInstance, normal_matrix)) + 16 * c});
+    return layout;
+}
+
 VertexLayout& VertexLayout::instance_mat4(uint32_t first_location, uint32_t stride, uint32_t offset) {
     const uint32_t binding = uint32_t(bindings.size());
     bindings.push_back({stride, true});

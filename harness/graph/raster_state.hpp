@@ -29,6 +29,10 @@ struct VertexLayout {
 
     // The scene's vertices (scene/geometry.hpp Vertex): location 0 position, 1 normal.
     static VertexLayout scene();
+    // A population's instanced draw (PassContext::draw_population): the scene's vertices at
+    // binding 0, and per instance (binding 1) a PopulationInstance (scene/population.hpp): its
+    // model matrix at locations 2-5, its normal matrix's columns at 6-8.
+    static VertexLayout population();
     // Appends a per-instance binding whose mat4 occupies four vec4 locations from `first_location`
     // at byte `offset` of a `stride`-byte record.
     VertexLayout& instance_mat4(uint32_t first_location, uint32_t stride, uint32_t offset = 0);

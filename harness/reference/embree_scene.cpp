@@ -53,20 +53,20 @@ void alpha_test_filter(const RTCFilterFunctionNArguments* args) {
 
 EmbreeScene::EmbreeScene(const Scene& scene, const std::vector<TriangleMesh>& meshes,
                          const EmbreeSceneOptions& options) {
-    if (meshes.size() != scene.objects.size())
-        throw std::invalid_argument(fmt::format("EmbreeScene: {} meshes for {} scene objects", meshes.size(),
-                                                scene.objects.size()));
-    materials_.reserve(scene.objects.size());
-    alpha_tests_.resize(scene.objects.size());
-    for (size_t object_index = 0; object_index < scene.objects.size(); ++object_index) {
-        materials_.push_back(scene.objects[object_index].material);
-        if (object_index < options.alpha_tests.size()) alpha_tests_[object_index] = options.alpha_tests[object_index];
-    }
+    if (meshes.size() != scene.objects.size() + scene.populations.size())
+        throw std::invalid_argument(fmt::format("EmbreeScene: {} meshes for {} scene objects and {} populations",
+                                                meshes.size(), scene.objects.size(), scene.populations.size()));
+    alpha_tests_.reserve(scene.objects.size() + scene.populations.size());
 
     // Flatten every instance into world space.
     for (size_t object_index = 0; object_index < scene.objects.size(); ++object_index) {
         const Object& object = scene.objects[object_index];
         const TriangleMesh& mesh = meshes[object_index];
+        int alpha_test = -1;
+        if (object_index < options.alpha_tests.size() && options.alpha_tests[object_index]) {
+            alpha_tests_.push_back(options.alpha_tests[object_index]);
+            alpha_test = int(alpha_tests_.size() - 1);
+        }
         const auto reject = [&](size_t instance, const std::string& message) {
             return ConfigError(object.where.file, object.where.line,
                                fmt::format("the reference renderer cannot represent object '{}' (instance {}): {}",
@@ -90,6 +90,9 @@ EmbreeScene::EmbreeScene(const Scene& scene, const std::vector<TriangleMesh>& me
 
             Record record;
             record.instance = {uint32_t(object_index), uint32_t(instance_index)};
+            record.material = object.material;
+            record.casts_shadows = object.casts_shadows;
+            record.alpha_test = alpha_test;
             record.indices = indices;
             record.positions.reserve(mesh.vertices.size() * 3 + 1);
             record.normals.reserve(mesh.vertices.size());
@@ -108,39 +111,102 @@ EmbreeScene::EmbreeScene(const Scene& scene, const std::vector<TriangleMesh>& me
             records_.push_back(std::move(record));
         }
     }
+    for (size_t population = 0; population < scene.populations.size(); ++population)
+        add_population(scene, meshes, population, options);
     extent_ = bounds_.radius();
 
     try {
-        build_embree_scenes(scene, options.device_config);
+        build_embree_scenes(options.device_config);
     } catch (...) {
         release();
         throw;
     }
 }
 
-void EmbreeScene::build_embree_scenes(const Scene& scene, const std::string& device_config) {
+// One geometry for all of a population's copies (generate_instances, as the raster side draws
+// them), each copy's prototype triangles transformed into world space.
+void EmbreeScene::add_population(const Scene& scene, const std::vector<TriangleMesh>& meshes, size_t index,
+                                 const EmbreeSceneOptions& options) {
+    const Population& population = scene.populations[index];
+    const TriangleMesh& mesh = prototype_mesh(scene, meshes, index);
+    const auto reject = [&](size_t copy, const std::string& message) {
+        return ConfigError(population.where.file, population.where.line,
+                           fmt::format("the reference renderer cannot represent population '{}' (copy {}): {}",
+                                       population.name, copy, message));
+    };
+    const size_t triangles = mesh.triangle_count();
+    if (triangles == 0) return;
+    for (uint32_t vertex : mesh.indices)
+        if (vertex >= mesh.vertices.size())
+            throw reject(0, fmt::format("its prototype's mesh references vertex {} of {}", vertex, mesh.vertices.size()));
+
+    Record record;
+    record.instance.population = int32_t(index);
+    record.instance.prototype_triangles = uint32_t(triangles);
+    record.material = population.prototype.material;
+    record.casts_shadows = population.prototype.casts_shadows;
+    if (index < options.population_alpha_tests.size() && options.population_alpha_tests[index]) {
+        // The filter sees the flattened primitive ID: hand the prototype's triangle to the test.
+        alpha_tests_.push_back([test = options.population_alpha_tests[index], triangles](uint32_t triangle, float u,
+                                                                                       float v) {
+            return test(uint32_t(triangle % triangles), u, v);
+        });
+        record.alpha_test = int(alpha_tests_.size() - 1);
+    }
+    const std::vector<PopulationInstance> copies = generate_instances(population);
+    auto indices = std::make_shared<std::vector<uint32_t>>();
+    indices->reserve(copies.size() * triangles * 3);
+    record.positions.reserve(copies.size() * mesh.vertices.size() * 3 + 1);
+    record.normals.reserve(copies.size() * mesh.vertices.size());
+    for (size_t copy = 0; copy < copies.size(); ++copy) {
+        const glm::mat4& model = copies[copy].model;
+        const float determinant = glm::determinant(glm::mat3(model));
+        if (!is_finite(model) || !std::isfinite(determinant)) throw reject(copy, "its transform is not finite");
+        if (std::abs(determinant) < 1e-12f) throw reject(copy, "its transform is degenerate (a zero scale flattens it)");
+        const glm::mat3 normal_matrix(copies[copy].normal_matrix[0], copies[copy].normal_matrix[1],
+                                      copies[copy].normal_matrix[2]);
+        const uint32_t first_vertex = uint32_t(record.normals.size());
+        for (size_t i = 0; i < triangles * 3; ++i) indices->push_back(first_vertex + mesh.indices[i]);
+        for (const Vertex& vertex : mesh.vertices) {
+            const glm::vec3 world = glm::vec3(model * glm::vec4(vertex.position, 1.0f));
+            if (!std::isfinite(world.x) || !std::isfinite(world.y) || !std::isfinite(world.z))
+                throw reject(copy, "a vertex position is not finite");
+            record.positions.insert(record.positions.end(), {world.x, world.y, world.z});
+            bounds_.extend(world);
+            glm::vec3 normal = normal_matrix * vertex.normal;
+            const float length = glm::length(normal);
+            record.normals.push_back(length > 0.0f && std::isfinite(length) ? normal / length : glm::vec3(0.0f));
+        }
+    }
+    record.positions.push_back(0.0f);  // Embree loads vertices with 16-byte reads
+    record.indices = std::move(indices);
+    triangle_count_ += copies.size() * triangles;
+    records_.push_back(std::move(record));
+}
+
+void EmbreeScene::build_embree_scenes(const std::string& device_config) {
     device_ = rtcNewDevice(device_config.empty() ? nullptr : device_config.c_str());
     if (!device_)
         throw std::runtime_error(fmt::format("Embree: cannot create a device{}: {}",
                                              device_config.empty() ? "" : " with config '" + device_config + "'",
                                              embree_error_name(rtcGetDeviceError(nullptr))));
-    bool every_object_casts = true;
-    for (const Object& object : scene.objects) every_object_casts = every_object_casts && object.casts_shadows;
+    bool every_geometry_casts = true;
+    for (const Record& record : records_) every_geometry_casts = every_geometry_casts && record.casts_shadows;
 
     visible_scene_ = rtcNewScene(device_);
-    shadow_scene_ = every_object_casts ? visible_scene_ : rtcNewScene(device_);
-    if (every_object_casts) rtcRetainScene(visible_scene_);
+    shadow_scene_ = every_geometry_casts ? visible_scene_ : rtcNewScene(device_);
+    if (every_geometry_casts) rtcRetainScene(visible_scene_);
     for (RTCScene target : {visible_scene_, shadow_scene_}) {
         rtcSetSceneBuildQuality(target, RTC_BUILD_QUALITY_HIGH);
         rtcSetSceneFlags(target, RTC_SCENE_FLAG_NONE);
     }
     for (size_t geom_id = 0; geom_id < records_.size(); ++geom_id) {
         const Record& record = records_[geom_id];
-        const AlphaTest* alpha_test = alpha_tests_[record.instance.object] ? &alpha_tests_[record.instance.object] : nullptr;
+        const AlphaTest* alpha_test = record.alpha_test >= 0 ? &alpha_tests_[size_t(record.alpha_test)] : nullptr;
         RTCGeometry visible = create_geometry(record, alpha_test);
         rtcAttachGeometryByID(visible_scene_, visible, unsigned(geom_id));
         rtcReleaseGeometry(visible);
-        if (!every_object_casts && scene.objects[record.instance.object].casts_shadows) {
+        if (!every_geometry_casts && record.casts_shadows) {
             RTCGeometry shadow = create_geometry(record, alpha_test);
             rtcAttachGeometryByID(shadow_scene_, shadow, unsigned(geom_id));
             rtcReleaseGeometry(shadow);
@@ -148,7 +214,7 @@ void EmbreeScene::build_embree_scenes(const Scene& scene, const std::string& dev
     }
     throw_if_embree_failed(device_, "creating geometry");
     rtcCommitScene(visible_scene_);
-    if (!every_object_casts) rtcCommitScene(shadow_scene_);
+    if (!every_geometry_casts) rtcCommitScene(shadow_scene_);
     throw_if_embree_failed(device_, "building the BVH");
 }
 

@@ -1,11 +1,12 @@
-// The scene as Embree sees it: one triangle geometry per object instance, with world-space
-// vertices (instances are flattened, which traces fastest for the scene sizes canopy uses).
+// The scene as Embree sees it: one triangle geometry per object instance, and one per population
+// holding all its copies, with world-space vertices (instances are flattened, which traces
+// fastest for the scene sizes canopy uses; Embree's own instancing hung intermittently).
 //
 // Two Embree scenes share the vertex and index buffers:
 //   visible scene: every object, for camera rays;
 //   shadow scene:  only objects with casts_shadows, for shadow rays (the same RTCScene when
 //                  every object casts shadows).
-// A geometry ID means the same object instance in both (see geometry()).
+// A geometry ID means the same object instance or population in both (see geometry()).
 #pragma once
 
 #include "scene/geometry.hpp"
@@ -31,6 +32,9 @@ using AlphaTest = std::function<bool(uint32_t triangle, float u, float v)>;
 struct EmbreeSceneOptions {
     // Indexed like scene.objects; missing or empty entries are opaque objects.
     std::vector<AlphaTest> alpha_tests;
+    // Indexed like scene.populations; the triangle index is within the prototype's mesh, the same
+    // for every copy. Missing or empty entries are opaque prototypes.
+    std::vector<AlphaTest> population_alpha_tests;
     // Embree's device configuration (rtcNewDevice), e.g. "isa=avx2" to force one code path;
     // empty: Embree picks the best ISA of this CPU. Embree takes its SSE2 path for an ISA name it
     // does not know, silently: check the packet widths with rtcGetDeviceProperty. Every ISA must
@@ -39,10 +43,13 @@ struct EmbreeSceneOptions {
     std::string device_config;
 };
 
-// What one geometry ID stands for.
+// What one geometry ID stands for: an object's instance, or (population >= 0) every copy of a
+// population, copy k's triangles at primitive IDs [k * T, (k + 1) * T) for a T-triangle prototype.
 struct EmbreeInstance {
-    uint32_t object = 0;    // index into scene.objects
-    uint32_t instance = 0;  // index into that object's instances
+    uint32_t object = 0;    // index into scene.objects (0 for a population)
+    uint32_t instance = 0;  // index into that object's instances (0 for a population)
+    int32_t population = -1;                 // index into scene.populations, or -1 for an object
+    uint32_t prototype_triangles = 0;        // a population's T
 };
 
 class EmbreeScene {
@@ -60,7 +67,7 @@ public:
 
     size_t geometry_count() const { return records_.size(); }
     const EmbreeInstance& geometry(unsigned geom_id) const { return records_[geom_id].instance; }
-    const Material& material(unsigned geom_id) const { return materials_[records_[geom_id].instance.object]; }
+    const Material& material(unsigned geom_id) const { return records_[geom_id].material; }
     // Interpolated vertex normal in world space (unit, not yet turned towards the viewer), as
     // the raster pipeline interpolates it.
     glm::vec3 shading_normal(unsigned geom_id, unsigned prim_id, float u, float v) const;
@@ -73,12 +80,17 @@ public:
 private:
     struct Record {
         EmbreeInstance instance;
+        Material material;
+        bool casts_shadows = true;
+        int alpha_test = -1;                    // index into alpha_tests_, or -1: opaque
         std::vector<float> positions;           // xyz per vertex + 1 float of padding Embree may read
         std::vector<glm::vec3> normals;         // world space, unit
         std::shared_ptr<const std::vector<uint32_t>> indices;
     };
 
-    void build_embree_scenes(const Scene& scene, const std::string& device_config);
+    void add_population(const Scene& scene, const std::vector<TriangleMesh>& meshes, size_t index,
+                        const EmbreeSceneOptions& options);
+    void build_embree_scenes(const std::string& device_config);
     RTCGeometry create_geometry(const Record& record, const AlphaTest* alpha_test) const;
     void release();
 
@@ -86,8 +98,9 @@ private:
     RTCScene visible_scene_ = nullptr;
     RTCScene shadow_scene_ = nullptr;
     std::vector<Record> records_;
-    std::vector<Material> materials_;
-    std::vector<AlphaTest> alpha_tests_;  // one per object, stable addresses for Embree user data
+    // Objects' tests, then populations' (mapping a flattened triangle to its prototype's); reserved
+    // up front, so their addresses stay stable for Embree's user data.
+    std::vector<AlphaTest> alpha_tests_;
     Bounds bounds_;
     float extent_ = 0.0f;
     size_t triangle_count_ = 0;

@@ -130,9 +130,22 @@ std::optional<Image> read_exr(const std::filesystem::path& path, const std::stri
 
 namespace {
 
+void hash_mesh(Fnv1a64& hash, const TriangleMesh* mesh) {
+    hash.add(uint64_t(mesh ? mesh->vertices.size() : 0));
+    hash.add(uint64_t(mesh ? mesh->indices.size() : 0));
+    if (!mesh) return;
+    for (const Vertex& vertex : mesh->vertices) {
+        hash_vec(hash, vertex.position);
+        hash_vec(hash, vertex.normal);
+    }
+    hash.bytes(mesh->indices.data(), mesh->indices.size() * sizeof(uint32_t));
+}
+
 // Every input of the scene that changes an image: the camera, ambient, background, every light
-// (all fields but `where`), and every object's material, casts_shadows, world matrix per instance
-// and mesh vertices and indices.
+// (all fields but `where`), every object's material, casts_shadows, world matrix per instance
+// and mesh vertices and indices, and every population's kind, prototype material, casts_shadows
+// and mesh, and its generated copies' matrices (which cover count, region, ground, seed, scale,
+// yaw, the prototype's own transform and the generator itself).
 void hash_scene(Fnv1a64& hash, const Scene& scene, const std::vector<TriangleMesh>& meshes) {
     const Camera& camera = scene.camera;
     hash_vec(hash, camera.position);
@@ -169,15 +182,20 @@ void hash_scene(Fnv1a64& hash, const Scene& scene, const std::vector<TriangleMes
             const glm::mat4 matrix = instance.matrix();
             hash.bytes(&matrix[0][0], sizeof(matrix));
         }
-        const TriangleMesh* mesh = index < meshes.size() ? &meshes[index] : nullptr;
-        hash.add(uint64_t(mesh ? mesh->vertices.size() : 0));
-        hash.add(uint64_t(mesh ? mesh->indices.size() : 0));
-        if (!mesh) continue;
-        for (const Vertex& vertex : mesh->vertices) {
-            hash_vec(hash, vertex.position);
-            hash_vec(hash, vertex.normal);
-        }
-        hash.bytes(mesh->indices.data(), mesh->indices.size() * sizeof(uint32_t));
+        hash_mesh(hash, index < meshes.size() ? &meshes[index] : nullptr);
+    }
+
+    hash.add(uint64_t(scene.populations.size()));
+    for (size_t index = 0; index < scene.populations.size(); ++index) {
+        const Population& population = scene.populations[index];
+        hash.add_string(population.kind);
+        hash_vec(hash, population.prototype.material.albedo);
+        hash.add(uint8_t(population.prototype.casts_shadows));
+        const std::vector<PopulationInstance> copies = generate_instances(population);
+        hash.add(uint64_t(copies.size()));
+        for (const PopulationInstance& copy : copies) hash.bytes(&copy.model[0][0], sizeof(copy.model));
+        const size_t mesh_index = scene.objects.size() + index;
+        hash_mesh(hash, mesh_index < meshes.size() ? &meshes[mesh_index] : nullptr);
     }
 }
 

@@ -6,6 +6,9 @@
 #include "scene/camera.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
 
 #include <cmath>
 #include <cstring>
@@ -88,6 +91,20 @@ std::optional<Unsupported> check_supported(const GpuContext& gpu, const Scene& s
     if (std::string problem = validate(graph); !problem.empty())
         return Unsupported{"the technique's frame graph is malformed: " + problem,
                            "a bug in the technique, please report it"};
+    // Before the light checks: a population the technique cannot draw is refused whatever the light.
+    for (const Population& population : scene.populations) {
+        const std::vector<std::string>& kinds = graph.needs.populations;
+        if (std::find(kinds.begin(), kinds.end(), population.kind) != kinds.end()) continue;
+        return Unsupported{
+            fmt::format("scene '{}' holds population '{}' of kind '{}', which this technique does not render ({})",
+                        scene.name, population.name, population.kind,
+                        kinds.empty() ? std::string("it renders no populations")
+                                      : fmt::format("it renders '{}' populations", fmt::join(kinds, "', '"))),
+            scene_hint(population.where, fmt::format("remove the [[population]] from the scene, or pick a technique "
+                                                     "that renders '{}' populations (`canopy list` shows what each "
+                                                     "renders)",
+                                                     population.kind))};
+    }
     if (scene.lights.size() != 1)
         return Unsupported{fmt::format("scene '{}' has {} lights; the raster lit pass shades exactly one light",
                                        scene.name, scene.lights.size()),
@@ -131,7 +148,7 @@ FrameRenderer::FrameRenderer(const GpuContext& gpu, const Scene& scene, const st
       light_view_resolution_(graph.needs.light_view_resolution),
       shader_params_(graph.shader_params) {
     if (auto reason = unsupported_reason(gpu, scene, graph)) throw GpuError(*reason);
-    scene_ = std::make_unique<GpuScene>(gpu, ledger_, scene, meshes);
+    scene_ = std::make_unique<GpuScene>(gpu, ledger_, scene, meshes, graph.needs.populations);
     if (light_view_resolution_)
         light_view_ = compute_light_view(*scene.shadow_light(), scene_bounds(scene, meshes), *light_view_resolution_);
     for (PassDecl& pass : graph.passes)

@@ -1,9 +1,15 @@
 #include "render/gpu_scene.hpp"
 
+#include <fmt/format.h>
+
+#include <array>
+#include <stdexcept>
+
 namespace canopy {
 
 GpuScene::GpuScene(const GpuContext& gpu, MemoryLedger& ledger, const Scene& scene,
-                   const std::vector<TriangleMesh>& meshes) {
+                   const std::vector<TriangleMesh>& meshes, const std::vector<std::string>& population_kinds)
+    : populations_(generate_populations(scene, meshes, population_kinds)) {
     std::vector<Vertex> all_vertices;
     std::vector<uint32_t> all_indices;
     for (size_t i = 0; i < scene.objects.size(); ++i) {
@@ -27,9 +33,30 @@ GpuScene::GpuScene(const GpuContext& gpu, MemoryLedger& ledger, const Scene& sce
             triangles_ += mesh.triangle_count();
         }
     }
+    for (const GeneratedPopulation& population : populations_) {
+        PopulationDraw draw;
+        draw.draw.first_index = uint32_t(all_indices.size());
+        draw.draw.index_count = uint32_t(population.prototype.indices.size());
+        draw.draw.vertex_offset = int32_t(all_vertices.size());
+        draw.draw.casts_shadows = population.casts_shadows;
+        // The copies' matrices come per instance: the pushed model and normal matrix are identities.
+        draw.draw.constants.model = glm::mat4(1.0f);
+        for (int c = 0; c < 3; ++c) draw.draw.constants.normal_matrix[c] = glm::vec4(glm::mat3(1.0f)[c], 0.0f);
+        draw.draw.constants.albedo = glm::vec4(population.material.albedo, 1.0f);
+        draw.instance_count = uint32_t(population.instances.size());
+        all_vertices.insert(all_vertices.end(), population.prototype.vertices.begin(), population.prototype.vertices.end());
+        all_indices.insert(all_indices.end(), population.prototype.indices.begin(), population.prototype.indices.end());
+        if (draw.draw.index_count > 0 && draw.instance_count > 0)
+            draw.instances = upload_buffer(gpu, ledger, "scene", population.instances.data(),
+                                           population.instances.size() * sizeof(PopulationInstance),
+                                           VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+        population_draws_.push_back(std::move(draw));
+    }
     // A scene without triangles (no objects) draws nothing: Vulkan has no empty buffers.
     if (all_indices.empty()) {
         draws_.clear();
+        population_draws_.clear();
+        populations_.clear();
         return;
     }
     vertices_ = upload_buffer(gpu, ledger, "scene", all_vertices.data(), all_vertices.size() * sizeof(Vertex),
@@ -50,6 +77,27 @@ void GpuScene::draw(VkCommandBuffer commands, VkPipelineLayout layout, bool cast
                            sizeof(DrawConstants), &d.constants);
         vkCmdDrawIndexed(commands, d.index_count, 1, d.first_index, d.vertex_offset, 0);
     }
+}
+
+void GpuScene::draw_population(VkCommandBuffer commands, VkPipelineLayout layout, const std::string& name) const {
+    for (size_t i = 0; i < populations_.size(); ++i) {
+        if (populations_[i].name != name) continue;
+        const PopulationDraw& d = population_draws_[i];
+        if (d.draw.index_count == 0 || d.instance_count == 0) return;
+        const std::array<VkBuffer, 2> buffers{vertices_.handle(), d.instances.handle()};
+        const std::array<VkDeviceSize, 2> offsets{0, 0};
+        vkCmdBindVertexBuffers(commands, 0, 2, buffers.data(), offsets.data());
+        vkCmdBindIndexBuffer(commands, indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
+        vkCmdPushConstants(commands, layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+                           sizeof(DrawConstants), &d.draw.constants);
+        vkCmdDrawIndexed(commands, d.draw.index_count, d.instance_count, d.draw.first_index, d.draw.vertex_offset, 0);
+        return;
+    }
+    std::string names;
+    for (const GeneratedPopulation& p : populations_) names += (names.empty() ? "'" : ", '") + p.name + "'";
+    throw std::logic_error(fmt::format("draw_population: the scene has no population '{}' of the kinds the technique "
+                                       "renders ({})",
+                                       name, names.empty() ? "it has none" : names));
 }
 
 }  // namespace canopy

@@ -1,10 +1,16 @@
 // Scene geometry on the GPU: every object's mesh in one vertex and one index buffer, and a
-// draw per object instance.
+// draw per object instance; and, for the populations of the kinds a graph declares it renders
+// (GraphNeeds::populations), each prototype's mesh in the same buffers and a per-population
+// buffer of its copies (PopulationInstance), drawn instanced. Other populations get nothing.
 #pragma once
 
 #include "gpu/resources.hpp"
 #include "render/frame_uniforms.hpp"
+#include "scene/generated_population.hpp"
 #include "scene/geometry.hpp"
+
+#include <span>
+#include <string>
 
 #include <vector>
 
@@ -20,17 +26,34 @@ struct SceneDraw {
 
 class GpuScene {
 public:
-    GpuScene(const GpuContext& gpu, MemoryLedger& ledger, const Scene& scene, const std::vector<TriangleMesh>& meshes);
+    // `population_kinds`: the kinds the technique renders; only their populations are uploaded.
+    GpuScene(const GpuContext& gpu, MemoryLedger& ledger, const Scene& scene, const std::vector<TriangleMesh>& meshes,
+             const std::vector<std::string>& population_kinds = {});
 
     // Binds the buffers and draws every instance (only shadow casters when `casters_only`).
     void draw(VkCommandBuffer commands, VkPipelineLayout layout, bool casters_only) const;
-    size_t triangle_count() const { return triangles_; }  // summed over instances
+    size_t triangle_count() const { return triangles_; }  // summed over instances, populations excluded
+
+    // The uploaded populations, in scene order.
+    std::span<const GeneratedPopulation> populations() const { return populations_; }
+    // One instanced draw of every copy of population `name` (VertexLayout::population), pushing
+    // DrawConstants with an identity model and the prototype's albedo. Throws std::logic_error
+    // naming the populations there are when `name` is not one of them.
+    void draw_population(VkCommandBuffer commands, VkPipelineLayout layout, const std::string& name) const;
 
 private:
+    struct PopulationDraw {
+        SceneDraw draw;
+        uint32_t instance_count = 0;
+        Buffer instances;
+    };
+
     Buffer vertices_;
     Buffer indices_;
     std::vector<SceneDraw> draws_;
     size_t triangles_ = 0;
+    std::vector<GeneratedPopulation> populations_;
+    std::vector<PopulationDraw> population_draws_;  // parallel to populations_
 };
 
 }  // namespace canopy

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -173,6 +174,38 @@ void require_in_scene(const Object& object, const TriangleMesh& mesh) {
     }
 }
 
+// A population's copies: within the coordinate range (bounded conservatively, by the region's
+// corners and the largest copy's reach, so that a million copies cost no more than one), and
+// within the triangle budget of the reference's flattened geometry.
+void require_in_scene(const Population& population, const TriangleMesh& mesh) {
+    const auto error = [&](const std::string& message, const std::string& hint) {
+        return ConfigError(population.where.file, population.where.line,
+                           fmt::format("population '{}': {}", population.name, message), hint);
+    };
+    const double triangles = double(population.count) * double(mesh.triangle_count());
+    if (triangles > limits::kMaxPopulationTriangles)
+        throw error(fmt::format("{} copies of a {}-triangle prototype make {:.3g} triangles, more than the {:.3g} the "
+                                "reference can flatten",
+                                population.count, mesh.triangle_count(), triangles, limits::kMaxPopulationTriangles),
+                    "lower 'count', or use a prototype with fewer triangles (fewer 'segments')");
+    const glm::dmat4 own(population.prototype.instances.empty() ? glm::mat4(1.0f)
+                                                               : population.prototype.instances.front().matrix());
+    double reach = 0.0;  // the farthest a prototype vertex lies from the copy's origin
+    for (const Vertex& vertex : mesh.vertices)
+        reach = std::max(reach, glm::length(glm::dvec3(own * glm::dvec4(glm::dvec3(vertex.position), 1.0))));
+    reach *= std::max(std::abs(double(population.scale_min)), std::abs(double(population.scale_max)));
+    const double bound = limits::kMaxCoordinate;
+    const double far_x = std::max(std::abs(double(population.region_min.x)), std::abs(double(population.region_max.x)));
+    const double far_z = std::max(std::abs(double(population.region_min.y)), std::abs(double(population.region_max.y)));
+    const double far_y = std::abs(double(population.ground_y));
+    if (far_x + reach <= bound && far_y + reach <= bound && far_z + reach <= bound) return;
+    throw error(fmt::format("its copies may reach {:.3g} scene units from the origin, outside the scene's coordinate "
+                            "range [-{:g}, {:g}]",
+                            std::max({far_x, far_y, far_z}) + reach, bound, bound),
+                "canopy computes in single precision: keep every coordinate within 1e6 scene units "
+                "(configs/README.md, \"Limits\"); check the region, ground, scale and the prototype's size");
+}
+
 }  // namespace
 
 TriangleMesh build_object_mesh(const Object& object) {
@@ -188,24 +221,41 @@ TriangleMesh build_object_mesh(const Object& object) {
 
 std::vector<TriangleMesh> build_scene_meshes(const Scene& scene) {
     std::vector<TriangleMesh> meshes;
-    meshes.reserve(scene.objects.size());
+    meshes.reserve(scene.objects.size() + scene.populations.size());
     for (const Object& object : scene.objects) {
         meshes.push_back(build_object_mesh(object));
         require_in_scene(object, meshes.back());
     }
+    for (const Population& population : scene.populations) {
+        meshes.push_back(build_object_mesh(population.prototype));
+        require_in_scene(population, meshes.back());
+    }
     return meshes;
 }
 
+const TriangleMesh& prototype_mesh(const Scene& scene, const std::vector<TriangleMesh>& meshes, size_t index) {
+    if (meshes.size() != scene.objects.size() + scene.populations.size() || index >= scene.populations.size())
+        throw std::logic_error(fmt::format("prototype_mesh: population {} of {}, with {} meshes for {} objects",
+                                           index, scene.populations.size(), meshes.size(), scene.objects.size()));
+    return meshes[scene.objects.size() + index];
+}
+
 Bounds scene_bounds(const Scene& scene, const std::vector<TriangleMesh>& meshes) {
-    if (meshes.size() != scene.objects.size())
-        throw std::logic_error("scene_bounds: one mesh per scene object expected");
+    if (meshes.size() != scene.objects.size() + scene.populations.size())
+        throw std::logic_error("scene_bounds: one mesh per scene object and population expected");
     Bounds bounds;
-    for (size_t i = 0; i < meshes.size(); ++i) {
+    for (size_t i = 0; i < scene.objects.size(); ++i) {
         for (const Transform& instance : scene.objects[i].instances) {
             const glm::mat4 matrix = instance.matrix();
             for (const Vertex& vertex : meshes[i].vertices)
                 bounds.extend(glm::vec3(matrix * glm::vec4(vertex.position, 1.0f)));
         }
+    }
+    for (size_t p = 0; p < scene.populations.size(); ++p) {
+        const TriangleMesh& mesh = prototype_mesh(scene, meshes, p);
+        for (const PopulationInstance& instance : generate_instances(scene.populations[p]))
+            for (const Vertex& vertex : mesh.vertices)
+                bounds.extend(glm::vec3(instance.model * glm::vec4(vertex.position, 1.0f)));
     }
     return bounds;
 }

@@ -35,11 +35,18 @@ struct Bounds {
 // process: scene/isolated_mesh_import.hpp).
 TriangleMesh build_object_mesh(const Object& object);
 
-// All objects' meshes, in scene.objects order. Throws ConfigError (naming the object) when an
-// instance places a vertex outside the scene's coordinate range (scene/scene_limits.hpp).
+// All objects' meshes, in scene.objects order, then every population's prototype mesh (local
+// space, its own transform not applied), in scene.populations order: population p's is
+// meshes[scene.objects.size() + p] (prototype_mesh). Throws ConfigError (naming the object or
+// population) when a copy may place a vertex outside the scene's coordinate range, or a
+// population's copies hold too many triangles (scene/scene_limits.hpp).
 std::vector<TriangleMesh> build_scene_meshes(const Scene& scene);
 
-// World-space bounds of every instance of every object.
+// Population `index`'s prototype mesh within build_scene_meshes' result; throws std::logic_error
+// when `meshes` does not hold one mesh per object and population.
+const TriangleMesh& prototype_mesh(const Scene& scene, const std::vector<TriangleMesh>& meshes, size_t index);
+
+// World-space bounds of every instance of every object and every copy of every population.
 Bounds scene_bounds(const Scene& scene, const std::vector<TriangleMesh>& meshes);
 
 }  // namespace canopy

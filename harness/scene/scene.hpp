@@ -2,6 +2,9 @@
 // Raster techniques and the ray-traced reference both consume exactly this.
 #pragma once
 
+#include "scene/object.hpp"
+#include "scene/population.hpp"
+
 #include <glm/glm.hpp>
 
 #include <filesystem>
@@ -9,12 +12,6 @@
 #include <vector>
 
 namespace canopy {
-
-// Where a value came from, so errors found after parsing can still name file:line.
-struct SourceLocation {
-    std::filesystem::path file;
-    int line = 0;  // 1-based; 0 when unknown
-};
 
 struct Camera {
     glm::vec3 position{0.0f, 2.0f, 6.0f};
@@ -51,38 +48,6 @@ struct Light {
     float size() const;
 };
 
-struct Transform {
-    glm::vec3 translate{0.0f};
-    glm::vec3 rotate_degrees{0.0f};  // Euler angles, applied X, then Y, then Z
-    glm::vec3 scale{1.0f};
-    // Applied after scale/rotate/translate: an [[object]] instance placing the transformed object
-    // (world = instance * object). Identity for plain objects.
-    glm::mat4 outer{1.0f};
-    glm::mat4 matrix() const;  // outer * T * Rz * Ry * Rx * S
-};
-
-enum class ShapeType { plane, box, sphere, cylinder, mesh };
-
-struct Material {
-    glm::vec3 albedo{0.8f, 0.8f, 0.8f};  // diffuse reflectance in [0,1]
-};
-
-struct Object {
-    std::string name;
-    ShapeType shape = ShapeType::box;
-    glm::vec2 plane_size{10.0f, 10.0f};  // plane: extent in x and z, normal +y
-    glm::vec3 box_size{1.0f, 1.0f, 1.0f};
-    float radius = 0.5f;                 // sphere, cylinder
-    float height = 1.0f;                 // cylinder, along +y, centred at the origin
-    int segments = 32;                   // sphere and cylinder tessellation
-    std::filesystem::path mesh_file;     // mesh: absolute path (resolved against the config's folder)
-    Material material;
-    bool casts_shadows = true;
-    // One transform per drawn copy; a plain object has exactly one.
-    std::vector<Transform> instances{Transform{}};
-    SourceLocation where;
-};
-
 struct Scene {
     std::string name;
     std::filesystem::path file;          // the TOML it came from
@@ -91,6 +56,7 @@ struct Scene {
     glm::vec3 ambient{0.03f, 0.03f, 0.03f};  // constant ambient radiance multiplied by albedo
     glm::vec3 background{0.0f, 0.0f, 0.0f};  // radiance of rays that hit nothing
     std::vector<Object> objects;
+    std::vector<Population> populations;  // drawn by techniques that declare their kind
 
     // The light that shadow techniques work with, or nullptr if no light casts shadows.
     const Light* shadow_light() const;

@@ -1,0 +1,27 @@
+// A population as the raster side receives it (PassContext::populations): what to draw, its
+// prototype's triangles and every generated copy, the very copies the reference traces.
+#pragma once
+
+#include "scene/geometry.hpp"
+#include "scene/population.hpp"
+
+#include <string>
+#include <vector>
+
+namespace canopy {
+
+struct GeneratedPopulation {
+    std::string name;
+    std::string kind;
+    Material material;  // the prototype's
+    bool casts_shadows = true;
+    TriangleMesh prototype;                   // local space, as in build_scene_meshes
+    std::vector<PopulationInstance> instances;  // generate_instances
+};
+
+// The scene's populations whose kind is one of `kinds`, in scene order; `meshes` as
+// build_scene_meshes returns them.
+std::vector<GeneratedPopulation> generate_populations(const Scene& scene, const std::vector<TriangleMesh>& meshes,
+                                                      const std::vector<std::string>& kinds);
+
+}  // namespace canopy
