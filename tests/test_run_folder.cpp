@@ -69,6 +69,7 @@ RunRecord awkward_record(const RunIdentity& id) {
     run.status = "interrupted";
     run.planned_cases = 3;
     run.reference_enabled = true;
+    run.camera_path = CameraPath{2, {{{0, 1, 2}, {0, 0, 0}, 0.0f}, {{1.0f / 3.0f, 2, 3}, {0, 0.5f, 0}, 30.0f}}};
     ReferenceRecord r;
     r.scene = "tiny";
     r.resolution = {96, 64};
@@ -97,6 +98,10 @@ RunRecord awkward_record(const RunIdentity& id) {
     c.passes = {{"shadow_map", {0.01, 0.02, 0.03}, {3, 0.02, 0.01, 0.03, 0.02, 0.01, 0.5}}};
     c.cpu = {"cpu", {1.5, 2.5, 3.5}, {3, 2.5, 1.5, 3.5, 2.5, 1, 0.4}};
     c.sample_start_s = {0.0, 0.25, 1.0 / 3.0};
+    c.cpu_passes = {{"lod_select", {0.5, 0.25, 1.0 / 9.0}, {3, 0.25, 1.0 / 9.0, 0.5, 0.3, 0.1, 0.6}}};
+    c.record_cpu = {"record_cpu", {0.05, 0.06, 0.07}, {3, 0.06, 0.05, 0.07, 0.06, 0.01, 0.1}};
+    c.timing_check = check_pass_timing({{0.01, 0.02, 0.03}}, {1, 2, 3});
+    c.path_frames = {{c.gpu_frame, c.passes}, {c.wall, c.passes}};
     c.group = 0;
     c.chunk = 1;
     c.ratio.per_round = {1.5, 2.0 / 3.0, 1.75};
@@ -187,13 +192,20 @@ TEST_CASE("results.json reads back exactly: every field, NaN, infinity, every di
     // Written again, the cases, references and run fields are the same text: nothing was lost.
     const nlohmann::json a = nlohmann::json::parse(json_report(run)), b = nlohmann::json::parse(json_report(back));
     for (const char* key : {"cases", "groups", "references", "run_identity", "status", "error", "started_at", "resumed_at",
-                            "rounds", "frames_per_sample", "measured_frames", "warmup_frames", "quick", "planned_cases", "config", "description"})
+                            "rounds", "frames_per_sample", "measured_frames", "warmup_frames", "quick", "planned_cases", "config", "description", "camera_path"})
         CHECK_MESSAGE(a[key].dump() == b[key].dump(), key);
     CHECK(back.cases[0].gpu_frame.samples_ms[2] == 1.0 / 7.0);
     CHECK(back.cases[0].ratio.per_round[1] == 2.0 / 3.0);
     CHECK(back.cases[0].ratio.estimate.ci.high == 1.75);
     CHECK(back.cases[1].ratio.measured() == false);  // the failed case has none
     CHECK(back.groups[0].chunks[1].baseline_gpu_ms[2] == 1.0 / 11.0);
+    CHECK(back.cases[0].cpu_passes[0].samples_ms[2] == 1.0 / 9.0);
+    CHECK(back.cases[0].timing_check.checked);
+    CHECK(back.cases[0].timing_check.gap_ms == run.cases[0].timing_check.gap_ms);
+    REQUIRE(back.cases[0].path_frames.size() == 2);
+    CHECK(back.cases[0].path_frames[1].gpu_frame.name == "wall");
+    REQUIRE(back.camera_path.has_value());
+    CHECK(back.camera_path->poses[1].position.x == 1.0f / 3.0f);
     CHECK(std::isinf(back.cases[0].image_error->psnr));
     CHECK(std::isnan(back.cases[0].image_error->light_bleeding));
     CHECK(back.cases[0].image_error->visibility_mae == 1.0 / 3.0);

@@ -22,6 +22,7 @@
 #include "run/stability_bench.hpp"
 #include "report/stability_report.hpp"
 #include "core/graph_requirements.hpp"
+#include "graph/frame_graph.hpp"
 #include "run/environment.hpp"
 #include "run/output_folder.hpp"
 #include "report/gbench_report.hpp"
@@ -73,6 +74,23 @@ int list_techniques() {
                        to_string(p.default_value), default_width, p.doc);
         fmt::print("\n");
     }
+    return kExitOk;
+}
+
+// The frame graph a technique declares at its default parameters, as describe() prints it.
+int print_graph(const std::string& name) {
+    const TechniqueRegistry& registry = TechniqueRegistry::instance();
+    const Technique* technique = registry.find(name);
+    if (!technique) {
+        std::vector<std::string> names;
+        for (const Technique* t : registry.all()) names.push_back(t->name());
+        const std::string near = closest_match(name, names);
+        throw ConfigError("", 0, fmt::format("unknown technique '{}'", name),
+                          near.empty() ? "run `canopy list` to see every technique"
+                                       : fmt::format("did you mean '{}'? (`canopy list` shows every technique)", near));
+    }
+    const ParamSet defaults = ParamSet::resolve(technique->params(), {}, {}, {}, technique->name());
+    fmt::print("{} at its defaults ({}):\n{}", technique->name(), defaults.summary(), describe(technique->graph(defaults)));
     return kExitOk;
 }
 
@@ -501,6 +519,11 @@ int main(int argc, char** argv) {
     export_cmd->add_flag("--force", export_force, "also into committed results (results/paper/, results/baselines/)");
 
     CLI::App* list_cmd = app.add_subcommand("list", "List every technique with its parameters (type, range, default).");
+    std::string graph_technique;
+    CLI::App* graph_cmd = app.add_subcommand(
+        "graph", "Print the frame graph a technique declares at its default parameters: its images, buffers and "
+                 "passes with every use (what the harness allocates, binds, barriers and times).");
+    graph_cmd->add_option("technique", graph_technique, "a technique name, e.g. shadow.pcss")->required();
     CLI::App* devices_cmd = app.add_subcommand("devices", "List the Vulkan devices canopy can run on.");
     CLI::App* metrics_cmd = app.add_subcommand(
         "metrics", "List every error metric: its names in results and [paper] claims, unit, better direction, group, "
@@ -515,6 +538,7 @@ int main(int argc, char** argv) {
 
     try {
         if (*list_cmd) return list_techniques();
+        if (*graph_cmd) return print_graph(graph_technique);
         if (*devices_cmd) return list_devices();
         if (*metrics_cmd) {
             fmt::print("{}", metric_list());

@@ -129,7 +129,7 @@ struct PassDecl {
 // What a graph needs of the scene and device beyond its resources' formats.
 struct GraphNeeds {
     // The frame uniforms' light-view fields describe the shadow light seen by a map of this many
-    // texels (graph/frame_inputs.hpp); unset: no light view (a scene without a shadow light runs).
+    // texels (render/light_view.hpp); unset: no light view (a scene without a shadow light runs).
     std::optional<uint32_t> light_view_resolution;
     bool area_light = false;  // refuses scenes whose shadow light has no size
     // Population kinds (scene/population.hpp) the technique renders; a scene holding another is refused.

@@ -35,7 +35,15 @@ case $case in
       grep -q "^$technique\$" "$work/list" || fail "list lacks $technique"
     done
     grep -q "kernel" "$work/list" || fail "list lacks the kernel parameter"
-    "$canopy" devices >"$work/devices" && grep -q "0:" "$work/devices" || fail "devices lists no device" ;;
+    "$canopy" devices >"$work/devices" && grep -q "0:" "$work/devices" || fail "devices lists no device"
+    # canopy graph: the declared frame graph, every pass with its uses; a misspelled name gets a suggestion.
+    "$canopy" graph shadow.ssss >"$work/graph" || fail "graph shadow.ssss failed"
+    grep -q "^pass frame raster shadow_map" "$work/graph" || fail "graph lacks the shadow_map pass"
+    grep -q "^pass frame compute" "$work/graph" || fail "graph lacks SSSS's compute passes"
+    grep -q "storage-write" "$work/graph" || fail "graph lacks the uses of the compute passes"
+    "$canopy" graph shadow.pcs >"$work/graph" 2>&1; code=$?
+    [ "$code" -eq 2 ] || fail "graph of an unknown technique exited $code, not 2"
+    grep -q "did you mean 'shadow.pc" "$work/graph" || fail "graph of an unknown technique suggests nothing" ;;
   run)
     "$canopy" run "$data/experiments/tiny.toml" --out "$work/out" --quick --no-cache >"$work/stdout" 2>"$work/stderr" || fail "run failed: $(cat "$work/stderr")"
     cat "$work/stdout"
