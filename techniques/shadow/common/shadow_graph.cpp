@@ -178,12 +178,10 @@ FrameGraph shadow_graph(const ShadowPlan& plan) {
         p.uses = {frame_uniforms(0), attachment(shadow_images::kDepthMap, Use::depth_attachment, far_depth)};
         graph.passes.push_back(std::move(p));
         light_maps.push_back(sampled(shadow_images::kDepthMap, 1));
-        // Binding 2 is the same map through a LINEAR depth-compare sampler (hardware 2x2 PCF), for
-        // every technique: forward_lighting.glsl declares it a sampler2DShadow. A technique that
-        // never samples it could take a NEAREST sampler there (valid Vulkan), but on lavapipe
-        // that made shadow.hard's frame dearer relative to shadow.pcf's by about 14 %
-        // (results/frame-graph-check): what is bound to an unused binding still changes the cost.
-        light_maps.push_back(sampled(shadow_images::kDepthMap, 2, SamplerKind::compare_linear));
+        // Binding 2 is the same map through a LINEAR depth-compare sampler (hardware 2x2 PCF)
+        // for techniques that ask for it, else through NEAREST (their shaders never sample it).
+        light_maps.push_back(sampled(shadow_images::kDepthMap, 2,
+                                     needs.compare_sampler ? SamplerKind::compare_linear : SamplerKind::nearest));
         graph.report["shadow_sampler"] = needs.compare_sampler ? "compare-linear" : "nearest";
         if (!needs.coarse_filters.empty()) {
             // The coarse passes may read the frame (e.g. the light's size).
