@@ -37,6 +37,22 @@ bool is_finite(const glm::mat4& m) {
     return true;
 }
 
+// Appends `mesh`'s vertices moved into world space by `model` (normals by `normal_matrix`, unit
+// length) to `positions` and `normals`, and grows `bounds`. False when a position is not finite.
+bool append_world_vertices(const TriangleMesh& mesh, const glm::mat4& model, const glm::mat3& normal_matrix,
+                           std::vector<float>& positions, std::vector<glm::vec3>& normals, Bounds& bounds) {
+    for (const Vertex& vertex : mesh.vertices) {
+        const glm::vec3 world = glm::vec3(model * glm::vec4(vertex.position, 1.0f));
+        if (!std::isfinite(world.x) || !std::isfinite(world.y) || !std::isfinite(world.z)) return false;
+        positions.insert(positions.end(), {world.x, world.y, world.z});
+        bounds.extend(world);
+        const glm::vec3 normal = normal_matrix * vertex.normal;
+        const float length = glm::length(normal);
+        normals.push_back(length > 0.0f && std::isfinite(length) ? normal / length : glm::vec3(0.0f));
+    }
+    return true;
+}
+
 // Discards hits the object's alpha test calls transparent; serves camera and shadow rays alike.
 void alpha_test_filter(const RTCFilterFunctionNArguments* args) {
     const AlphaTest& alpha_test = *static_cast<const AlphaTest*>(args->geometryUserPtr);
@@ -96,16 +112,8 @@ EmbreeScene::EmbreeScene(const Scene& scene, const std::vector<TriangleMesh>& me
             record.indices = indices;
             record.positions.reserve(mesh.vertices.size() * 3 + 1);
             record.normals.reserve(mesh.vertices.size());
-            for (const Vertex& vertex : mesh.vertices) {
-                const glm::vec3 world = glm::vec3(model * glm::vec4(vertex.position, 1.0f));
-                if (!std::isfinite(world.x) || !std::isfinite(world.y) || !std::isfinite(world.z))
-                    throw reject(instance_index, "a vertex position is not finite");
-                record.positions.insert(record.positions.end(), {world.x, world.y, world.z});
-                bounds_.extend(world);
-                glm::vec3 normal = normal_matrix * vertex.normal;
-                const float length = glm::length(normal);
-                record.normals.push_back(length > 0.0f && std::isfinite(length) ? normal / length : glm::vec3(0.0f));
-            }
+            if (!append_world_vertices(mesh, model, normal_matrix, record.positions, record.normals, bounds_))
+                throw reject(instance_index, "a vertex position is not finite");
             record.positions.push_back(0.0f);  // Embree loads vertices with 16-byte reads
             triangle_count_ += mesh.triangle_count();
             records_.push_back(std::move(record));
@@ -167,16 +175,8 @@ void EmbreeScene::add_population(const Scene& scene, const std::vector<TriangleM
                                       copies[copy].normal_matrix[2]);
         const uint32_t first_vertex = uint32_t(record.normals.size());
         for (size_t i = 0; i < triangles * 3; ++i) indices->push_back(first_vertex + mesh.indices[i]);
-        for (const Vertex& vertex : mesh.vertices) {
-            const glm::vec3 world = glm::vec3(model * glm::vec4(vertex.position, 1.0f));
-            if (!std::isfinite(world.x) || !std::isfinite(world.y) || !std::isfinite(world.z))
-                throw reject(copy, "a vertex position is not finite");
-            record.positions.insert(record.positions.end(), {world.x, world.y, world.z});
-            bounds_.extend(world);
-            glm::vec3 normal = normal_matrix * vertex.normal;
-            const float length = glm::length(normal);
-            record.normals.push_back(length > 0.0f && std::isfinite(length) ? normal / length : glm::vec3(0.0f));
-        }
+        if (!append_world_vertices(mesh, model, normal_matrix, record.positions, record.normals, bounds_))
+            throw reject(copy, "a vertex position is not finite");
     }
     record.positions.push_back(0.0f);  // Embree loads vertices with 16-byte reads
     record.indices = std::move(indices);
