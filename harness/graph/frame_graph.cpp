@@ -1,5 +1,7 @@
 #include "graph/frame_graph.hpp"
 
+#include "gpu/format_names.hpp"
+
 #include <fmt/format.h>
 
 #include <set>
@@ -160,7 +162,7 @@ std::string describe(const FrameGraph& graph) {
         const std::string size = i.extent.rule == ImageExtent::Rule::screen
                                      ? fmt::format("screen/{}", i.extent.divisor)
                                      : fmt::format("{}x{}", i.extent.width, i.extent.height);
-        out += fmt::format("image {} format={} size={} layers={} mips={} samples={}{}\n", i.name, int(i.format), size,
+        out += fmt::format("image {} format={} size={} layers={} mips={} samples={}{}\n", i.name, format_name(i.format), size,
                            i.layers, i.mips, i.samples, i.persistent ? " persistent" : "");
     }
     for (const BufferDecl& b : graph.buffers)

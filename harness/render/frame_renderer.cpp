@@ -1,6 +1,7 @@
 #include "render/frame_renderer.hpp"
 
 #include "core/pixel_visibility.hpp"
+#include "gpu/format_names.hpp"
 #include "graph/graph_readback.hpp"
 #include "render/frame_uniforms.hpp"
 #include "scene/camera.hpp"
@@ -28,22 +29,6 @@ std::string scene_hint(const SourceLocation& where, const std::string& change) {
 std::string device_hint() {
     return "pick another device with --device (`canopy devices` lists them), or another format parameter of the "
            "technique if it has one";
-}
-
-std::string format_name(VkFormat format) {
-    switch (format) {
-        case VK_FORMAT_D16_UNORM: return "d16";
-        case VK_FORMAT_D32_SFLOAT: return "d32f";
-        case VK_FORMAT_R16_SFLOAT: return "r16f";
-        case VK_FORMAT_R32_SFLOAT: return "r32f";
-        case VK_FORMAT_R16G16_SFLOAT: return "rg16f";
-        case VK_FORMAT_R32G32_SFLOAT: return "rg32f";
-        case VK_FORMAT_R16G16B16A16_SFLOAT: return "rgba16f";
-        case VK_FORMAT_R32G32B32A32_SFLOAT: return "rgba32f";
-        case VK_FORMAT_R16G16B16A16_UNORM: return "rgba16unorm";
-        case VK_FORMAT_R8G8B8A8_UNORM: return "rgba8";
-        default: return fmt::format("VkFormat {}", int(format));
-    }
 }
 
 // What `graph`'s uses of image `name` need of its format.
