@@ -71,12 +71,15 @@ TEST_CASE("every column gives as many cells as headers, for every case") {
     const RunRecord run = run_of_two();
     for (const ResultColumn& column : result_columns()) {
         CAPTURE(column.name);
-        REQUIRE(column.csv_headers);
-        REQUIRE(column.csv_cells);
-        CHECK(bool(column.markdown_headers) == bool(column.markdown_cells));
+        REQUIRE(column.csv);
+        const auto csv = column.csv(run);
+        REQUIRE(csv.cells);
         for (const CaseResult& c : run.cases) {
-            CHECK(column.csv_cells(run, c).size() == column.csv_headers(run).size());
-            if (column.markdown_headers) CHECK(column.markdown_cells(run, c).size() == column.markdown_headers(run).size());
+            CHECK(csv.cells(c).size() == csv.headers.size());
+            if (!column.markdown) continue;
+            const auto markdown = column.markdown(run);
+            REQUIRE(markdown.cells);
+            CHECK(markdown.cells(c).size() == markdown.headers.size());
         }
     }
 }

@@ -7,15 +7,16 @@ namespace canopy {
 
 std::string csv_report(const RunRecord& run) {
     // Every column from the one list (report/result_columns.hpp), in its order.
-    const std::vector<ResultColumn>& columns = result_columns();
+    std::vector<ResultColumn::Bound<std::string>> columns;
+    for (const ResultColumn& column : result_columns()) columns.push_back(column.csv(run));
     std::string out;
     const auto append = [&out](const std::vector<std::string>& cells) {
         for (const std::string& cell : cells) out += (out.empty() || out.back() == '\n' ? "" : ",") + cell;
     };
-    for (const ResultColumn& column : columns) append(column.csv_headers(run));
+    for (const auto& column : columns) append(column.headers);
     out += "\n";
     for (const CaseResult& c : run.cases) {
-        for (const ResultColumn& column : columns) append(column.csv_cells(run, c));
+        for (const auto& column : columns) append(column.cells(c));
         out += "\n";
     }
     return out;

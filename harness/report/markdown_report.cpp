@@ -17,11 +17,11 @@ std::string markdown_table(const RunRecord& run) {
     // The columns results.md shows, from the one list (report/result_columns.hpp), in its order.
     std::vector<std::string> header;
     std::vector<bool> right;
-    std::vector<const ResultColumn*> shown;
+    std::vector<ResultColumn::Bound<ResultColumn::MarkdownHeader>> shown;
     for (const ResultColumn& column : result_columns()) {
-        if (!column.markdown_headers) continue;
-        shown.push_back(&column);
-        for (const ResultColumn::MarkdownHeader& h : column.markdown_headers(run)) {
+        if (!column.markdown) continue;
+        shown.push_back(column.markdown(run));
+        for (const ResultColumn::MarkdownHeader& h : shown.back().headers) {
             header.push_back(h.text);
             right.push_back(h.right);
         }
@@ -29,8 +29,8 @@ std::string markdown_table(const RunRecord& run) {
     std::vector<std::vector<std::string>> rows;
     for (const CaseResult& c : run.cases) {
         std::vector<std::string> row;
-        for (const ResultColumn* column : shown)
-            for (std::string& cell : column->markdown_cells(run, c)) row.push_back(std::move(cell));
+        for (const auto& column : shown)
+            for (std::string& cell : column.cells(c)) row.push_back(std::move(cell));
         rows.push_back(std::move(row));
     }
     return render_table(header, rows, right);

@@ -26,22 +26,36 @@ std::string ms3(double value) { return fmt::format("{:.3f}", value); }
 std::string mib(uint64_t bytes) { return fmt::format("{:.2f}", double(bytes) / (1024.0 * 1024.0)); }
 bool timed(const CaseResult& c) { return c.gpu_frame.stats.count > 0; }
 
+using CsvBound = ResultColumn::Bound<std::string>;
+using MarkdownBound = ResultColumn::Bound<ResultColumn::MarkdownHeader>;
+using CaseCell = std::function<std::string(const RunRecord&, const CaseResult&)>;
+
 // A column of one CSV cell, not in results.md.
-ResultColumn csv_only(std::string name, std::function<std::string(const RunRecord&, const CaseResult&)> cell) {
+ResultColumn csv_only(std::string name, CaseCell cell) {
     ResultColumn column;
-    column.csv_headers = [name](const RunRecord&) { return Cells{name}; };
-    column.csv_cells = [cell](const RunRecord& run, const CaseResult& c) { return Cells{cell(run, c)}; };
+    column.csv = [name, cell](const RunRecord& run) {
+        return CsvBound{{name}, [&run, cell](const CaseResult& c) { return Cells{cell(run, c)}; }};
+    };
     column.name = std::move(name);
     return column;
 }
 
 // A column of one CSV cell that results.md shows too.
-ResultColumn both(std::string name, std::function<std::string(const RunRecord&, const CaseResult&)> cell,
-                  std::string markdown_header, bool right,
-                  std::function<std::string(const RunRecord&, const CaseResult&)> markdown_cell) {
+ResultColumn both(std::string name, CaseCell cell, std::string markdown_header, bool right, CaseCell markdown_cell) {
     ResultColumn column = csv_only(std::move(name), std::move(cell));
-    column.markdown_headers = [markdown_header, right](const RunRecord&) { return Headers{{markdown_header, right}}; };
-    column.markdown_cells = [markdown_cell](const RunRecord& run, const CaseResult& c) { return Cells{markdown_cell(run, c)}; };
+    column.markdown = [markdown_header, right, markdown_cell](const RunRecord& run) {
+        return MarkdownBound{{{markdown_header, right}},
+                             [&run, markdown_cell](const CaseResult& c) { return Cells{markdown_cell(run, c)}; }};
+    };
+    return column;
+}
+
+// A column results.md shows and results.csv does not.
+ResultColumn markdown_only(std::string name, Headers headers, std::function<Cells(const CaseResult&)> cells) {
+    ResultColumn column;
+    column.name = std::move(name);
+    column.csv = [](const RunRecord&) { return CsvBound{{}, [](const CaseResult&) { return Cells{}; }}; };
+    column.markdown = [headers, cells](const RunRecord&) { return MarkdownBound{headers, cells}; };
     return column;
 }
 
@@ -65,60 +79,59 @@ const TimingSeries* find_pass(const CaseResult& c, std::vector<TimingSeries> Cas
 ResultColumn pass_family(std::string name, std::vector<TimingSeries> CaseResult::*passes, std::string suffix) {
     ResultColumn column;
     column.name = std::move(name);
-    column.csv_headers = [passes, suffix](const RunRecord& run) {
-        Cells headers;
-        for (const std::string& pass : pass_names(run, passes)) {
-            headers.push_back(fmt::format("{}{}_ms_median", pass, suffix));
-            headers.push_back(fmt::format("{}{}_ms_mad", pass, suffix));
+    column.csv = [passes, suffix](const RunRecord& run) {
+        const std::vector<std::string> names = pass_names(run, passes);
+        CsvBound bound;
+        for (const std::string& pass : names) {
+            bound.headers.push_back(fmt::format("{}{}_ms_median", pass, suffix));
+            bound.headers.push_back(fmt::format("{}{}_ms_mad", pass, suffix));
         }
-        return headers;
-    };
-    column.csv_cells = [passes](const RunRecord& run, const CaseResult& c) {
-        Cells cells;
-        for (const std::string& pass : pass_names(run, passes)) {
-            const TimingSeries* p = find_pass(c, passes, pass);
-            cells.push_back(p ? full(p->stats.median) : "");
-            cells.push_back(p ? full(p->stats.mad) : "");
-        }
-        return cells;
+        bound.cells = [passes, names](const CaseResult& c) {
+            Cells cells;
+            for (const std::string& pass : names) {
+                const TimingSeries* p = find_pass(c, passes, pass);
+                cells.push_back(p ? full(p->stats.median) : "");
+                cells.push_back(p ? full(p->stats.mad) : "");
+            }
+            return cells;
+        };
+        return bound;
     };
     return column;
 }
 
 // Every registered error metric (metrics/metric_registry.hpp): full precision in the CSV ("n/a"
-// where the technique does not declare its group meaningful); in results.md those it shows.
+// where the technique does not declare its group meaningful); in results.md those it shows, when
+// the run measured errors.
 ResultColumn metric_family() {
     ResultColumn column;
     column.name = "error metrics";
-    column.csv_headers = [](const RunRecord&) {
-        Cells headers;
-        for (const MetricInfo& metric : registered_metrics()) headers.emplace_back(metric.name);
-        return headers;
+    column.csv = [](const RunRecord&) {
+        CsvBound bound;
+        for (const MetricInfo& metric : registered_metrics()) bound.headers.emplace_back(metric.name);
+        bound.cells = [](const CaseResult& c) {
+            Cells cells;
+            for (const MetricInfo& metric : registered_metrics()) {
+                const auto& m = c.image_error;
+                cells.push_back(!m ? "" : group_declared(metric.group, m->columns) ? full((*m).*metric.value) : "n/a");
+            }
+            return cells;
+        };
+        return bound;
     };
-    column.csv_cells = [](const RunRecord&, const CaseResult& c) {
-        Cells cells;
-        for (const MetricInfo& metric : registered_metrics()) {
-            const auto& m = c.image_error;
-            cells.push_back(!m ? "" : group_declared(metric.group, m->columns) ? full((*m).*metric.value) : "n/a");
-        }
-        return cells;
-    };
-    const auto shown = [](const RunRecord& run) {
-        std::vector<const MetricInfo*> metrics;
+    column.markdown = [](const RunRecord& run) {
+        std::vector<const MetricInfo*> shown;
         const bool errors = std::any_of(run.cases.begin(), run.cases.end(), [](const CaseResult& c) { return c.image_error.has_value(); });
         for (const MetricInfo& metric : registered_metrics())
-            if (errors && metric.shown_in(shown_in_markdown)) metrics.push_back(&metric);
-        return metrics;
-    };
-    column.markdown_headers = [shown](const RunRecord& run) {
-        Headers headers;
-        for (const MetricInfo* metric : shown(run)) headers.push_back({std::string(metric->column), true});
-        return headers;
-    };
-    column.markdown_cells = [shown](const RunRecord& run, const CaseResult& c) {
-        Cells cells;
-        for (const MetricInfo* metric : shown(run)) cells.push_back(c.image_error ? table_cell(*metric, *c.image_error) : "-");
-        return cells;
+            if (errors && metric.shown_in(shown_in_markdown)) shown.push_back(&metric);
+        MarkdownBound bound;
+        for (const MetricInfo* metric : shown) bound.headers.push_back({std::string(metric->column), true});
+        bound.cells = [shown](const CaseResult& c) {
+            Cells cells;
+            for (const MetricInfo* metric : shown) cells.push_back(c.image_error ? table_cell(*metric, *c.image_error) : "-");
+            return cells;
+        };
+        return bound;
     };
     return column;
 }
@@ -134,11 +147,16 @@ std::vector<ResultColumn> make_columns() {
     {
         ResultColumn size;
         size.name = "resolution";
-        size.csv_headers = [](R) { return Cells{"width", "height"}; };
-        size.csv_cells = [](R, C c) { return Cells{std::to_string(c.resolution.width), std::to_string(c.resolution.height)}; };
-        size.markdown_headers = [](R) { return Headers{{"resolution", false}, {"technique", false}, {"parameters", false}}; };
-        size.markdown_cells = [](R, C c) {
-            return Cells{fmt::format("{}x{}", c.resolution.width, c.resolution.height), c.technique, c.params_shown};
+        size.csv = [](R) {
+            return CsvBound{{"width", "height"}, [](C c) {
+                                return Cells{std::to_string(c.resolution.width), std::to_string(c.resolution.height)};
+                            }};
+        };
+        size.markdown = [](R) {
+            return MarkdownBound{{{"resolution", false}, {"technique", false}, {"parameters", false}}, [](C c) {
+                                     return Cells{fmt::format("{}x{}", c.resolution.width, c.resolution.height),
+                                                  c.technique, c.params_shown};
+                                 }};
         };
         columns.push_back(std::move(size));
     }
@@ -151,16 +169,9 @@ std::vector<ResultColumn> make_columns() {
                            [](R, C c) { return timed(c) ? ms3(c.gpu_frame.stats.mad) : "-"; }));
     columns.push_back(both("gpu_cv", [](R, C c) { return full(c.gpu_frame.stats.cv); }, "CV %", true,
                            [](R, C c) { return timed(c) ? fmt::format("{:.1f}", 100.0 * c.gpu_frame.stats.cv) : "-"; }));
-    {
-        // The ratio's three CSV columns sit after the wall and CPU times; results.md shows it first.
-        ResultColumn ratio;
-        ratio.name = "ratio";
-        ratio.csv_headers = [](R) { return Cells{}; };
-        ratio.csv_cells = [](R, C) { return Cells{}; };
-        ratio.markdown_headers = [](R) { return Headers{{"ratio", true}}; };
-        ratio.markdown_cells = [](R, C c) { return Cells{c.ok ? ratio_cell(c.ratio.estimate) : "-"}; };
-        columns.push_back(std::move(ratio));
-    }
+    // The ratio's three CSV columns sit after the wall and CPU times; results.md shows it first.
+    columns.push_back(markdown_only("ratio", {{"ratio", true}},
+                                    [](C c) { return Cells{c.ok ? ratio_cell(c.ratio.estimate) : "-"}; }));
     columns.push_back(both("wall_ms_median", [](R, C c) { return full(c.wall.stats.median); }, "wall ms", true,
                            [](R, C c) { return timed(c) ? ms3(c.wall.stats.median) : "-"; }));
     columns.push_back(csv_only("wall_ms_mad", [](R, C c) { return full(c.wall.stats.mad); }));
@@ -169,10 +180,12 @@ std::vector<ResultColumn> make_columns() {
     {
         ResultColumn ratio;
         ratio.name = "ratio_ci95";
-        ratio.csv_headers = [](R) { return Cells{"ratio", "ratio_ci95_low", "ratio_ci95_high"}; };
-        ratio.csv_cells = [](R, C c) {
-            const Estimate& r = c.ratio.estimate;
-            return c.ratio.measured() ? Cells{full(r.value), full(r.ci.low), full(r.ci.high)} : Cells{"", "", ""};
+        ratio.csv = [](R) {
+            return CsvBound{{"ratio", "ratio_ci95_low", "ratio_ci95_high"}, [](C c) {
+                                const Estimate& r = c.ratio.estimate;
+                                return c.ratio.measured() ? Cells{full(r.value), full(r.ci.low), full(r.ci.high)}
+                                                          : Cells{"", "", ""};
+                            }};
         };
         columns.push_back(std::move(ratio));
     }
@@ -180,11 +193,13 @@ std::vector<ResultColumn> make_columns() {
     columns.push_back(csv_only("frames_per_sample", [](R run, C) { return std::to_string(run.frames_per_sample); }));
     {
         ResultColumn passes = pass_family("passes", &CaseResult::passes, "_gpu");
-        passes.markdown_headers = [](R) { return Headers{{"passes (GPU ms)", false}}; };
-        passes.markdown_cells = [](R, C c) {
-            std::string text;
-            for (const TimingSeries& p : c.passes) text += fmt::format("{}{} {:.3f}", text.empty() ? "" : ", ", p.name, p.stats.median);
-            return Cells{text.empty() ? "-" : text};
+        passes.markdown = [](R) {
+            return MarkdownBound{{{"passes (GPU ms)", false}}, [](C c) {
+                                     std::string text;
+                                     for (const TimingSeries& p : c.passes)
+                                         text += fmt::format("{}{} {:.3f}", text.empty() ? "" : ", ", p.name, p.stats.median);
+                                     return Cells{text.empty() ? "-" : text};
+                                 }};
         };
         columns.push_back(std::move(passes));
     }
@@ -204,15 +219,8 @@ std::vector<ResultColumn> make_columns() {
     columns.push_back(csv_only("shadow_sampler", [](R, C c) { return quoted(c.shadow_sampler); }));
     columns.push_back(csv_only("nonfinite_pixels", [](R, C c) { return std::to_string(c.nonfinite_pixels); }));
     columns.push_back(metric_family());
-    {
-        ResultColumn status;
-        status.name = "status";
-        status.csv_headers = [](R) { return Cells{}; };
-        status.csv_cells = [](R, C) { return Cells{}; };
-        status.markdown_headers = [](R) { return Headers{{"status", false}}; };
-        status.markdown_cells = [](R, C c) { return Cells{c.ok ? "ok" : "FAILED: " + c.error}; };
-        columns.push_back(std::move(status));
-    }
+    columns.push_back(markdown_only("status", {{"status", false}},
+                                    [](C c) { return Cells{c.ok ? "ok" : "FAILED: " + c.error}; }));
     columns.push_back(csv_only("device", [](R run, C) { return quoted(run.environment.device.name); }));
     columns.push_back(csv_only("commit", [](R run, C) { return quoted(run.environment.git_commit); }));
     return columns;

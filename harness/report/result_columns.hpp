@@ -14,17 +14,23 @@
 namespace canopy {
 
 struct ResultColumn {
-    std::string name;  // what it holds, for docs and tests ("gpu_ms_median", family: "passes")
-    // results.csv: the headers it adds for `run` and a case's cells, as many as headers.
-    std::function<std::vector<std::string>(const RunRecord&)> csv_headers;
-    std::function<std::vector<std::string>(const RunRecord&, const CaseResult&)> csv_cells;
-    // results.md's table (none: not shown there): headers with their alignment, and cells.
+    using Cells = std::vector<std::string>;
     struct MarkdownHeader {
         std::string text;
         bool right = true;
     };
-    std::function<std::vector<MarkdownHeader>(const RunRecord&)> markdown_headers;
-    std::function<std::vector<std::string>(const RunRecord&, const CaseResult&)> markdown_cells;
+    // A column bound to one run: the headers it adds and a case's cells, as many as headers.
+    // Families work out their names (the run's passes, the metrics shown) once, when bound; the
+    // cells refer to the run, which must outlive them.
+    template <typename Header>
+    struct Bound {
+        std::vector<Header> headers;
+        std::function<Cells(const CaseResult&)> cells;
+    };
+
+    std::string name;  // what it holds, for docs and tests ("gpu_ms_median", family: "passes")
+    std::function<Bound<std::string>(const RunRecord&)> csv;          // results.csv
+    std::function<Bound<MarkdownHeader>(const RunRecord&)> markdown;  // results.md's table; empty: not shown
 };
 
 const std::vector<ResultColumn>& result_columns();

@@ -1,5 +1,7 @@
 #include "report/timing_sections.hpp"
 
+#include "run/statistics.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -12,18 +14,6 @@ std::string disagreement(const CaseResult& c) {
     const TimingCheck& t = c.timing_check;
     return fmt::format("{}: GPU passes sum to {:.3f} ms, wall {:.3f} ms, median gap {:+.3f} ms (tolerance {:.3f} ms)",
                        c.id, t.pass_sum_ms, t.wall_ms, t.gap_ms, t.tolerance_ms);
-}
-
-// min / median / max of per-frame medians.
-struct Spread {
-    double min = 0, median = 0, max = 0;
-};
-Spread spread(std::vector<double> values) {
-    if (values.empty()) return {};
-    std::sort(values.begin(), values.end());
-    const size_t n = values.size();
-    const double median = n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-    return {values.front(), median, values.back()};
 }
 
 }  // namespace
@@ -83,7 +73,7 @@ std::string camera_path_section(const RunRecord& run) {
         const auto row = [&](const std::string& name, auto&& value_of) {
             std::vector<double> medians;
             for (const CaseResult::PathFrame& f : c.path_frames) medians.push_back(value_of(f));
-            const Spread s = spread(medians);
+            const SampleStats s = summarize(medians);
             const size_t slowest = size_t(std::max_element(medians.begin(), medians.end()) - medians.begin());
             out += fmt::format("| {} | {} | {:.3f} | {:.3f} | {:.3f} | {} |\n", c.id, name, s.min, s.median, s.max, slowest);
         };
