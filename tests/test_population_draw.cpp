@@ -153,23 +153,7 @@ std::vector<ReferencePixel> reference_pixels(const Scene& scene) {
             p.view_depth = hit->view_depth;
             // Copies of one population are one geometry: the copy tells their silhouettes apart.
             p.label = int64_t(hit->geometry) << 32;
-            if (p.population) {
-                RTCRayHit probe{};  // the primitive ID is not in PrimaryHit: trace again for it
-                probe.ray.org_x = ray.origin.x;
-                probe.ray.org_y = ray.origin.y;
-                probe.ray.org_z = ray.origin.z;
-                probe.ray.dir_x = ray.direction.x;
-                probe.ray.dir_y = ray.direction.y;
-                probe.ray.dir_z = ray.direction.z;
-                probe.ray.tfar = INFINITY;
-                probe.ray.mask = 0xffffffffu;
-                probe.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-                probe.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-                RTCIntersectContext context{};
-                rtcInitIntersectContext(&context);
-                rtcIntersect1(embree.visible_scene(), &context, &probe);
-                p.label |= int64_t(probe.hit.primID / what.prototype_triangles);
-            }
+            if (p.population) p.label |= int64_t(hit->primitive / what.prototype_triangles);
         }
     return pixels;
 }

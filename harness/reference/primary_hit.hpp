@@ -21,6 +21,7 @@ struct PrimaryHit {
     SurfacePoint surface;
     float view_depth = 0.0f;  // distance along the camera's view axis
     unsigned geometry = RTC_INVALID_GEOMETRY_ID;  // Embree geomID, for the material
+    unsigned primitive = 0;                        // Embree primID: the triangle within the geometry
 };
 
 // `forward`: the camera's unit view direction. nullopt when the ray sees the background.
@@ -49,6 +50,7 @@ inline std::optional<PrimaryHit> trace_primary(const EmbreeScene& embree, const 
 
     PrimaryHit result;
     result.geometry = hit.hit.geomID;
+    result.primitive = hit.hit.primID;
     const float distance = hit.ray.tfar;
     result.view_depth = distance * along_axis;
     SurfacePoint& surface = result.surface;
