@@ -127,8 +127,12 @@ TEST_CASE("a measured group follows the path: per-frame times, the image at the 
     settings.frames_per_sample = path.frames;
 
     std::vector<Image> images;
+    std::vector<FrameState> baseline_frames;
     GroupCallbacks callbacks;
     callbacks.case_measured = [&](size_t, CaseResult&, Image&& image, Image&&) { images.push_back(std::move(image)); };
+    callbacks.frame_rendered = [&](size_t index, const FrameState& state) {
+        if (index == 0) baseline_frames.push_back(state);
+    };
     const auto group = measure_group(test::gpu(), input, settings, {}, callbacks);
     REQUIRE(group.has_value());
     for (const CaseResult& c : group->cases) {
@@ -145,6 +149,19 @@ TEST_CASE("a measured group follows the path: per-frame times, the image at the 
             for (const CaseResult::PathFrame& f : c.path_frames) sum += f.gpu_frame.samples_ms[r];
             CHECK(c.gpu_frame.samples_ms[r] == doctest::Approx(sum / 4).epsilon(1e-9));
         }
+    }
+    // Every frame follows the path, frame indices counting on: 1 warm-up frame (the path's first),
+    // then per round, under adjacent pairing, the baseline's traversal before and after the other
+    // case's (2 traversals of 4), then one more frame at the scene's camera for the image.
+    REQUIRE(baseline_frames.size() == 1 + 3 * 2 * 4 + 1);
+    for (size_t f = 0; f < baseline_frames.size(); ++f) {
+        CAPTURE(f);
+        CHECK(baseline_frames[f].frame_index == f);
+        const Camera expected = f == 0 ? path.at(scene.camera, 0)
+                                : f + 1 == baseline_frames.size() ? scene.camera
+                                                                  : path.at(scene.camera, int((f - 1) % 4));
+        CHECK(glm::length(baseline_frames[f].camera.position - expected.position) < 1e-5f);
+        CHECK(glm::length(baseline_frames[f].camera.target - expected.target) < 1e-5f);
     }
     // The image errors are measured on is the scene camera's, not the path's last frame.
     REQUIRE(images.size() == 2);

@@ -51,6 +51,7 @@ struct LiveCase {
     Camera camera;                    // the scene's
     const CameraPath* path = nullptr;  // frames follow it when set
     uint32_t next_frame = 0;          // FrameState::frame_index of the next frame (warm-up included)
+    std::function<void(size_t, const FrameState&)> frame_rendered;  // GroupCallbacks::frame_rendered
     std::vector<std::string> pass_names, cpu_pass_names;
     std::vector<std::vector<double>> pass_samples, cpu_pass_samples;
     std::vector<double> gpu, wall, cpu, record_cpu, start;
@@ -73,9 +74,14 @@ struct LiveCase {
 
     // One frame at traversal frame `path_frame` of the path (the scene's camera without one), with
     // the test ballast after it when there is one.
+    // The next frame of the run at `at`.
+    FrameTiming render(const Camera& at) {
+        const FrameState state{next_frame++, at};
+        if (frame_rendered) frame_rendered(index, state);
+        return renderer->render(state);
+    }
     FrameTiming frame(int path_frame) {
-        const Camera at = path ? path->at(camera, path_frame) : camera;
-        FrameTiming t = renderer->render(FrameState{next_frame++, at});
+        FrameTiming t = render(path ? path->at(camera, path_frame) : camera);
         if (ballast) {
             const auto before = Clock::now();
             const double ballast_ms = ballast->run_ms();
@@ -313,7 +319,7 @@ void finish(LiveCase& live, size_t chunk_index, const MeasurementChunk& chunk, c
         try {
             // The reference is ray-traced from the scene's camera: after a path, one more frame
             // there (untimed), so the error measures the technique and not the camera's move.
-            if (live.path) live.renderer->render(FrameState{live.next_frame++, live.camera});
+            if (live.path) live.render(live.camera);
             FrameRenderer::ColorAndVisibility frame = live.renderer->read_color_and_pixel_visibility();
             image = std::move(frame.color);
             visibility = std::move(frame.visibility);
@@ -347,6 +353,7 @@ std::optional<MeasuredGroup> measure_group(const GpuContext& gpu, const GroupInp
     for (size_t i = 0; i < group.cases.size(); ++i) {
         const Case& c = *group.cases[i].c;
         live[i].index = i;
+        live[i].frame_rendered = callbacks.frame_rendered;
         live[i].result.id = c.id;
         live[i].result.group_baseline = i == 0;
         live[i].result.scene = group.scene->name;
