@@ -13,6 +13,8 @@
 #include "support/test_gpu.hpp"
 #include "support/text_search.hpp"
 
+#include "alpha_mask.h"
+
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -77,6 +79,38 @@ TEST_CASE("population: a [[population]] table loads with every key") {
     CHECK(p.prototype.instances[0].translate == glm::vec3(0.0f, 0.1f, 0.0f));
     CHECK(p.where.line == 13);
     CHECK(scene.objects.size() == 1);  // the population is not an object
+}
+
+TEST_CASE("population: an alpha mask loads, reaches every copy and cuts what alpha_mask.h says") {
+    const Scene scene =
+        meadow(kPopulation + "alpha_mask = { kind = \"stripes\", axis = \"z\", period = 0.25, opaque = 0.4 }\n");
+    const AlphaMask& mask = scene.populations[0].alpha_mask;
+    CHECK(mask.kind == AlphaMask::Kind::stripes);
+    CHECK(mask.axis == 2);
+    CHECK(mask.period == 0.25f);
+    CHECK(mask.opaque == 0.4f);
+    CHECK(meadow().populations[0].alpha_mask.kind == AlphaMask::Kind::none);  // none unless asked
+    for (const PopulationInstance& copy : generate_instances(scene.populations[0]))
+        CHECK(copy.alpha_mask == glm::vec4(shader::ALPHA_MASK_STRIPES, 2.0f, 0.25f, 0.4f));
+
+    // The function the fragment shader and the reference's filter both call.
+    const glm::vec4 packed = mask.packed();
+    using shader::alpha_mask_opaque;
+    CHECK(alpha_mask_opaque(packed, glm::vec3(9.0f, 9.0f, 0.05f)));    // 0.2 of the period: stays
+    CHECK(!alpha_mask_opaque(packed, glm::vec3(0.0f, 0.0f, 0.15f)));   // 0.6: cut
+    CHECK(alpha_mask_opaque(packed, glm::vec3(0.0f, 0.0f, -0.2f)));    // -0.8 -> phase 0.2: stays
+    CHECK(!alpha_mask_opaque(packed, glm::vec3(0.0f, 0.0f, -0.1f)));   // phase 0.6: cut
+    CHECK(shader::alpha_mask_period_index(packed, glm::vec3(0.0f, 0.0f, -0.1f)) == -1.0f);
+    CHECK(alpha_mask_opaque(glm::vec4(0.0f), glm::vec3(0.3f)));  // no mask: opaque everywhere
+    AlphaMask solid = mask;
+    solid.opaque = 1.0f;  // the extreme the config allows: nothing is cut
+    for (float z = -3.0f; z <= 3.0f; z += 0.0137f) CHECK(alpha_mask_opaque(solid.packed(), glm::vec3(0.0f, 0.0f, z)));
+    // The smallest period the config allows still cuts at far coordinates, finitely.
+    const glm::vec4 fine(shader::ALPHA_MASK_STRIPES, 0.0f, 1e-3f, 0.5f);
+    int cut = 0;
+    for (int i = 0; i < 1000; ++i) cut += !alpha_mask_opaque(fine, glm::vec3(100.0f + float(i) * 1.37e-4f, 0.0f, 0.0f));
+    CHECK(cut > 300);
+    CHECK(cut < 700);
 }
 
 TEST_CASE("population: the generator is deterministic, stays in its region and ranges, and copy k ignores count") {
@@ -163,6 +197,17 @@ TEST_CASE("population: every mistake in a [[population]] is reported at its line
         {replace_line(kPopulation, "prototype", "prototype = { shape = \"box\", name = \"x\" }"), 22, "has no 'name'", ""},
         {replace_line(kPopulation, "prototype", "prototype = { shape = \"box\", radius = 1 }"), 22, "radius", ""},
         {replace_line(kPopulation, "prototype", "prototype = { shape = \"box\", colour = 1 }"), 22, "colour", ""},
+        // alpha_mask = { ... } on the line after the prototype (line 23).
+        {kPopulation + "alpha_mask = { kind = \"stripe\", axis = \"x\", period = 0.1 }\n", 23,
+         "unknown alpha mask kind 'stripe'", "did you mean 'stripes'?"},
+        {kPopulation + "alpha_mask = { kind = \"stripes\", axis = \"w\", period = 0.1 }\n", 23, "unknown axis 'w'", "x, y, z"},
+        {kPopulation + "alpha_mask = { kind = \"stripes\", axis = \"x\" }\n", 23, "needs a 'period'", "period = 0.1"},
+        {kPopulation + "alpha_mask = { kind = \"stripes\", axis = \"x\", period = 0 }\n", 23,
+         "'period' in alpha_mask of [[population]] #1 must lie in [0.001, 1000], got 0", ""},
+        {kPopulation + "alpha_mask = { kind = \"stripes\", axis = \"x\", period = 0.1, opaque = 0 }\n", 23,
+         "must lie in (0, 1], got 0", "1 cuts nothing"},
+        {kPopulation + "alpha_mask = { kind = \"stripes\", axis = \"x\", period = 0.1, opaqe = 0.5 }\n", 23, "opaqe",
+         "opaque"},
     };
     for (const Case& c : cases) {
         CAPTURE(c.population);
@@ -294,7 +339,12 @@ TEST_CASE("population: the reference cache key covers every population setting")
     keys.insert(key_with([](Population& p) { p.prototype.casts_shadows = false; }));
     keys.insert(key_with([](Population& p) { p.prototype.box_size = glm::vec3(0.3f); }));
     keys.insert(key_with([](Population& p) { p.prototype.instances[0].translate.y = 0.2f; }));
-    CHECK(keys.size() == 11);
+    keys.insert(key_with([](Population& p) { p.alpha_mask.kind = AlphaMask::Kind::stripes; }));
+    keys.insert(key_with([](Population& p) {
+        p.alpha_mask.kind = AlphaMask::Kind::stripes;
+        p.alpha_mask.opaque = 0.5f;
+    }));
+    CHECK(keys.size() == 13);
     // A scene without the population has yet another key.
     Scene bare = scene;
     bare.populations.clear();

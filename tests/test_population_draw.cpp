@@ -23,7 +23,9 @@
 #include "scene/population.hpp"
 #include "support/test_gpu.hpp"
 
+#include "alpha_mask.h"
 #include "shaders/tests/population_flat_frag.h"
+#include "shaders/tests/population_masked_frag.h"
 #include "shaders/harness/population_vert.h"
 #include "shaders/harness/scene_vert.h"
 
@@ -32,6 +34,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -80,6 +83,26 @@ prototype = { shape = "box", size = [0.3, 0.2, 0.18], translate = [0, 0.1, 0], a
 
 Scene field() { return parse_scene(kScene, "scatter-field.toml"); }
 
+// Fewer, larger copies with slots cut across their x axis: each slab about 5 pixels wide.
+const char* kMaskedPopulation = R"(
+[[population]]
+name = "slatted"
+kind = "scatter"
+count = 12
+region_min = [-2.2, -1.6]
+region_max = [2.2, 1.8]
+seed = 5
+scale = [0.9, 1.2]
+prototype = { shape = "box", size = [0.9, 0.5, 0.6], translate = [0, 0.25, 0], albedo = [0.9, 0.2, 0.1] }
+alpha_mask = { kind = "stripes", axis = "x", period = 0.4, opaque = 0.5 }
+)";
+
+Scene slatted_field() {
+    std::string text = kScene;
+    text.erase(text.find("[[population]]"));
+    return parse_scene(text + kMaskedPopulation, "slatted-field.toml");
+}
+
 // --- The test technique's frame graph ---------------------------------------------------------
 
 RasterState scene_state() {
@@ -96,7 +119,7 @@ RasterState population_state() {
     return s;
 }
 
-FrameGraph population_graph() {
+FrameGraph population_graph(std::span<const uint32_t> population_fragment = population_flat_frag) {
     FrameGraph g;
     g.needs.populations = {population_kinds::kScatter};
     PassDecl lit{.name = "lit", .kind = PassKind::raster};
@@ -106,7 +129,9 @@ FrameGraph population_graph() {
                 ResourceUse{.resource = graph_names::kDepth, .use = Use::depth_attachment,
                             .clear = std::array<float, 4>{1.0f, 0.0f, 0.0f, 0.0f}}};
     lit.push_constant_bytes = sizeof(DrawConstants);
-    lit.record = [objects = scene_state(), copies = population_state()](PassContext& pc) {
+    RasterState copies_state = population_state();
+    copies_state.fragment_spirv = population_fragment;
+    lit.record = [objects = scene_state(), copies = copies_state](PassContext& pc) {
         pc.bind(pc.raster_pipeline(objects));
         pc.draw_scene(SceneFilter::all);
         pc.bind(pc.raster_pipeline(copies));
@@ -120,8 +145,9 @@ struct Raster {
     Image color, visibility;
 };
 
-Raster render(const Scene& scene) {
-    FrameRenderer renderer(test::gpu(), scene, build_scene_meshes(scene), kWidth, kHeight, population_graph());
+Raster render(const Scene& scene, std::span<const uint32_t> population_fragment = population_flat_frag) {
+    FrameRenderer renderer(test::gpu(), scene, build_scene_meshes(scene), kWidth, kHeight,
+                           population_graph(population_fragment));
     renderer.render();
     FrameRenderer::ColorAndVisibility images = renderer.read_color_and_pixel_visibility();
     return {std::move(images.color), std::move(images.visibility)};
@@ -138,8 +164,12 @@ struct ReferencePixel {
     float view_depth = 0.0f;
 };
 
+// A masked population's label also carries the mask's period under the hit and the side of its
+// cut, so the silhouette band covers the mask's edges too (where float rounding may decide either way).
 std::vector<ReferencePixel> reference_pixels(const Scene& scene) {
     const EmbreeScene embree(scene, build_scene_meshes(scene));
+    std::vector<std::vector<PopulationInstance>> copies;
+    for (const Population& population : scene.populations) copies.push_back(generate_instances(population));
     const glm::vec3 forward = glm::normalize(scene.camera.target - scene.camera.position);
     std::vector<ReferencePixel> pixels(size_t(kWidth) * kHeight);
     for (uint32_t y = 0; y < kHeight; ++y)
@@ -152,8 +182,23 @@ std::vector<ReferencePixel> reference_pixels(const Scene& scene) {
             p.population = what.population >= 0;
             p.view_depth = hit->view_depth;
             // Copies of one population are one geometry: the copy tells their silhouettes apart.
-            p.label = int64_t(hit->geometry) << 32;
-            if (p.population) p.label |= int64_t(hit->primitive / what.prototype_triangles);
+            p.label = int64_t(hit->geometry) << 40;
+            if (p.population) {
+                const uint32_t copy = hit->primitive / what.prototype_triangles;
+                p.label |= int64_t(copy) << 20;
+                const Population& population = scene.populations[size_t(what.population)];
+                if (population.alpha_mask.kind != AlphaMask::Kind::none) {
+                    const glm::mat4& model = copies[size_t(what.population)][copy].model;
+                    const glm::vec3 local = glm::vec3(glm::inverse(model) * glm::vec4(hit->surface.position, 1.0f));
+                    // Which period, and which side of the cut within it: both edges of a slot.
+                    const glm::vec4 mask = population.alpha_mask.packed();
+                    const int period = int(shader::alpha_mask_period_index(mask, local));
+                    const bool opaque = shader::alpha_mask_opaque(mask, local);
+                    // and the prototype's triangle: a slot may show the copy's own far side.
+                    p.label |= int64_t(hit->primitive % what.prototype_triangles) << 12;
+                    p.label |= int64_t((2 * period + (opaque ? 0 : 1)) & 0xfff);
+                }
+            }
         }
     return pixels;
 }
@@ -259,6 +304,50 @@ TEST_CASE("population draw: the instanced copies cover what the reference's prim
     }
 }
 
+TEST_CASE("population draw: an alpha-masked population is cut where the reference's rays pass through it") {
+    const Scene scene = slatted_field();
+    const Raster raster = render(scene, population_masked_frag);
+    const Disagreement same = compare_with_reference(raster, reference_pixels(scene));
+    CAPTURE(same.compared);
+    CAPTURE(same.population_pixels);
+    CHECK(same.compared > int(kWidth * kHeight) / 2);
+    CHECK(same.population_pixels > 400);
+    CHECK(same.coverage == 0);
+    CHECK(same.depth == 0);
+
+    // The cuts must show and agree: each breakage, on one side alone, must be seen.
+    Scene solid = scene;
+    solid.populations[0].alpha_mask = AlphaMask{};
+    SUBCASE("the raster ignores the mask") {
+        const Disagreement d = compare_with_reference(render(scene, population_flat_frag), reference_pixels(scene));
+        CAPTURE(d.coverage);
+        CHECK(d.coverage > 150);
+    }
+    SUBCASE("the reference ignores the mask") {
+        const Disagreement d = compare_with_reference(raster, reference_pixels(solid));
+        CAPTURE(d.coverage);
+        CHECK(d.coverage > 150);
+    }
+    SUBCASE("the reference cuts wider slots") {
+        Scene wider = scene;
+        wider.populations[0].alpha_mask.opaque = 0.3f;
+        const Disagreement d = compare_with_reference(raster, reference_pixels(wider));
+        CAPTURE(d.coverage);
+        CHECK(d.coverage > 50);
+    }
+    SUBCASE("the reference cuts across another axis") {
+        Scene turned = scene;
+        turned.populations[0].alpha_mask.axis = 2;
+        const Disagreement d = compare_with_reference(raster, reference_pixels(turned));
+        CAPTURE(d.coverage);
+        CHECK(d.coverage > 50);
+    }
+    // The fragment shader's mask discards: a masked shader on an unmasked population cuts nothing.
+    const ImageDifference unmasked = differences(render(solid, population_masked_frag), render(solid, population_flat_frag));
+    CHECK(unmasked.color == 0);
+    CHECK(unmasked.depth == 0);
+}
+
 TEST_CASE("population draw: one instanced draw renders exactly what one object per copy renders") {
     const Scene scene = field();
     const Raster instanced = render(scene);
@@ -297,7 +386,7 @@ TEST_CASE("population draw: the harness uploads populations only for a graph tha
         bare.populations.clear();
         FrameRenderer without(test::gpu(), bare, build_scene_meshes(bare), kWidth, kHeight, graph);
         without.render();
-        // The copies' buffer (40 x 112 bytes) and the prototype's 24 vertices and 36 indices.
+        // The copies' buffer (40 x 128 bytes) and the prototype's 24 vertices and 36 indices.
         CHECK(with.scene_bytes >= without.memory().scene_bytes + 40 * sizeof(PopulationInstance));
     }
     REQUIRE(seen.size() == 2);

@@ -397,6 +397,31 @@ Object read_object(TomlReader& reader, size_t index, const std::filesystem::path
 constexpr std::array kPopulationKindNames{population_kinds::kScatter};
 constexpr std::array kPopulationKinds{population_kinds::kScatter};
 
+constexpr std::array kAlphaMaskKindNames{"stripes"};
+constexpr std::array kAlphaMaskKinds{AlphaMask::Kind::stripes};
+constexpr std::array kAxisNames{"x", "y", "z"};
+constexpr std::array kAxes{0, 1, 2};
+
+// alpha_mask = { kind = "stripes", axis = "x", period = 0.1, opaque = 0.5 } (harness/shaders/alpha_mask.h).
+AlphaMask read_alpha_mask(TomlReader& reader) {
+    AlphaMask mask;
+    mask.kind = read_kind(reader, "kind", kAlphaMaskKindNames, kAlphaMaskKinds, "alpha mask kind");
+    mask.axis = read_kind(reader, "axis", kAxisNames, kAxes, "axis");
+    mask.period = float(reader.get_float("period", 0.0));
+    mask.opaque = float(reader.get_float("opaque", 0.5));
+    reader.finish();
+    if (!reader.has("period"))
+        throw reader.error("period", fmt::format("{} needs a 'period'", reader.context()),
+                           "the length, in the prototype's own units, of one opaque slab and the gap after it, e.g. "
+                           "period = 0.1");
+    require_between(reader, "period", mask.period, limits::kMinScale, limits::kMaxScale,
+                    "a length in the prototype's mesh space, e.g. period = 0.1");
+    if (!(mask.opaque > 0.0f && mask.opaque <= 1.0f))
+        throw reader.error("opaque", fmt::format("{} must lie in (0, 1], got {}", reader.describe_key("opaque"), mask.opaque),
+                           "the fraction of each period that stays; 1 cuts nothing");
+    return mask;
+}
+
 Population read_population(TomlReader& reader, size_t index, const std::filesystem::path& config_folder) {
     Population population;
     population.where = reader.where();
@@ -416,7 +441,9 @@ Population read_population(TomlReader& reader, size_t index, const std::filesyst
     population.random_yaw = reader.get_bool("random_yaw", population.random_yaw);
     const std::string prototype_context = fmt::format("prototype of {}", reader.context());
     std::optional<TomlReader> prototype = reader.get_table("prototype", prototype_context);
+    std::optional<TomlReader> alpha_mask = reader.get_table("alpha_mask", fmt::format("alpha_mask of {}", reader.context()));
     reader.finish();
+    if (alpha_mask) population.alpha_mask = read_alpha_mask(*alpha_mask);
 
     if (!reader.has("count"))
         throw reader.error("count", fmt::format("{} needs a 'count'", reader.context()),

@@ -26,6 +26,7 @@ VertexLayout VertexLayout::population() {
     for (uint32_t c = 0; c < 3; ++c)
         layout.attributes.push_back({6 + c, 1, VK_FORMAT_R32G32B32A32_SFLOAT,
                                      uint32_t(offsetof(PopulationInstance, normal_matrix)) + 16 * c});
+    layout.attributes.push_back({9, 1, VK_FORMAT_R32G32B32A32_SFLOAT, uint32_t(offsetof(PopulationInstance, alpha_mask))});
     return layout;
 }
 

@@ -1,5 +1,7 @@
 #include "reference/embree_scene.hpp"
 
+#include "alpha_mask.h"
+
 #include "core/error.hpp"
 
 #include <fmt/format.h>
@@ -153,11 +155,28 @@ void EmbreeScene::add_population(const Scene& scene, const std::vector<TriangleM
     record.instance.prototype_triangles = uint32_t(triangles);
     record.material = population.prototype.material;
     record.casts_shadows = population.prototype.casts_shadows;
-    if (index < options.population_alpha_tests.size() && options.population_alpha_tests[index]) {
-        // The filter sees the flattened primitive ID: hand the prototype's triangle to the test.
-        alpha_tests_.push_back([test = options.population_alpha_tests[index], triangles](uint32_t triangle, float u,
-                                                                                       float v) {
-            return test(uint32_t(triangle % triangles), u, v);
+    // The filter sees the flattened primitive ID: the prototype's triangle is primitive % triangles.
+    // A copy's ray passes where the scene's alpha mask (alpha_mask.h, as population.vert and
+    // population_alpha.glsl cut it) or the caller's test says so.
+    AlphaTest caller;
+    if (index < options.population_alpha_tests.size()) caller = options.population_alpha_tests[index];
+    const glm::vec4 mask = population.alpha_mask.packed();
+    const bool masked = population.alpha_mask.kind != AlphaMask::Kind::none;
+    if (masked || caller) {
+        std::vector<glm::vec3> corners;  // the prototype's triangles in its mesh space
+        if (masked) {
+            corners.reserve(mesh.indices.size());
+            for (uint32_t vertex : mesh.indices) corners.push_back(mesh.vertices[vertex].position);
+        }
+        alpha_tests_.push_back([caller, masked, mask, corners = std::move(corners), triangles](uint32_t primitive,
+                                                                                              float u, float v) {
+            const uint32_t triangle = uint32_t(primitive % triangles);
+            if (masked) {
+                const glm::vec3 p = (1.0f - u - v) * corners[3 * triangle] + u * corners[3 * triangle + 1] +
+                                    v * corners[3 * triangle + 2];
+                if (!shader::alpha_mask_opaque(mask, p)) return false;
+            }
+            return !caller || caller(triangle, u, v);
         });
         record.alpha_test = int(alpha_tests_.size() - 1);
     }

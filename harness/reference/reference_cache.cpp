@@ -194,6 +194,8 @@ void hash_scene(Fnv1a64& hash, const Scene& scene, const std::vector<TriangleMes
         const std::vector<PopulationInstance> copies = generate_instances(population);
         hash.add(uint64_t(copies.size()));
         for (const PopulationInstance& copy : copies) hash.bytes(&copy.model[0][0], sizeof(copy.model));
+        const glm::vec4 mask = population.alpha_mask.packed();
+        for (int c = 0; c < 4; ++c) hash.add(mask[c]);
         const size_t mesh_index = scene.objects.size() + index;
         hash_mesh(hash, mesh_index < meshes.size() ? &meshes[mesh_index] : nullptr);
     }

@@ -1,5 +1,7 @@
 #include "scene/population.hpp"
 
+#include "alpha_mask.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -43,6 +45,11 @@ glm::mat4 scatter_placement(const Population& p, uint32_t index) {
     return m;
 }
 
+glm::vec4 AlphaMask::packed() const {
+    const float k = kind == Kind::stripes ? shader::ALPHA_MASK_STRIPES : shader::ALPHA_MASK_NONE;
+    return glm::vec4(k, float(axis), period, opaque);
+}
+
 std::vector<PopulationInstance> generate_instances(const Population& population) {
     const glm::mat4 own = population.prototype.instances.empty() ? glm::mat4(1.0f)
                                                                  : population.prototype.instances.front().matrix();
@@ -53,6 +60,7 @@ std::vector<PopulationInstance> generate_instances(const Population& population)
         // As GpuScene computes an object's DrawConstants::normal_matrix.
         const glm::mat3 normal = glm::transpose(glm::inverse(glm::mat3(instance.model)));
         for (int c = 0; c < 3; ++c) instance.normal_matrix[c] = glm::vec4(normal[c], 0.0f);
+        instance.alpha_mask = population.alpha_mask.packed();
     }
     return instances;
 }

@@ -24,6 +24,17 @@ inline constexpr const char* kScatter = "scatter";  // copies scattered over a r
 // +y (when random_yaw) and scaled uniformly by a factor drawn from [scale_min, scale_max].
 // A copy's world matrix is placement * prototype.instances[0].matrix(): the prototype's own
 // transform (e.g. a translate lifting a box onto the ground) applies first.
+// An alpha mask cut into every copy (harness/shaders/alpha_mask.h), in the prototype's mesh space:
+// both renderers evaluate the same function at the same points.
+struct AlphaMask {
+    enum class Kind { none, stripes };
+    Kind kind = Kind::none;
+    int axis = 0;           // 0 x, 1 y, 2 z
+    float period = 1.0f;    // > 0
+    float opaque = 1.0f;    // fraction of each period that stays, in (0, 1]
+    glm::vec4 packed() const;  // the shader's vec4
+};
+
 struct Population {
     std::string name;
     std::string kind = population_kinds::kScatter;
@@ -36,17 +47,19 @@ struct Population {
     float scale_min = 1.0f;
     float scale_max = 1.0f;
     bool random_yaw = true;
+    AlphaMask alpha_mask;
     SourceLocation where;
 };
 
 // One generated copy: its world matrix and the inverse-transpose of its linear part (for normals),
-// laid out as DrawConstants' model and normal_matrix, so a vertex shader reads it as per-instance
-// attributes (harness/shaders/population.vert).
+// laid out as DrawConstants' model and normal_matrix, and the population's alpha mask, so a vertex
+// shader reads it as per-instance attributes (harness/shaders/population.vert).
 struct PopulationInstance {
     glm::mat4 model{1.0f};
     glm::vec4 normal_matrix[3]{glm::vec4(1, 0, 0, 0), glm::vec4(0, 1, 0, 0), glm::vec4(0, 0, 1, 0)};
+    glm::vec4 alpha_mask{0.0f};  // AlphaMask::packed(), the same for every copy
 };
-static_assert(sizeof(PopulationInstance) == 112, "population.vert reads 7 vec4 per instance");
+static_assert(sizeof(PopulationInstance) == 128, "population.vert reads 8 vec4 per instance");
 
 // The placement (translate, yaw, scale; without the prototype's own transform) of copy `index`.
 // Deterministic and portable: a splitmix64 hash of (seed, index, draw) feeds each random number,
