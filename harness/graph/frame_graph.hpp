@@ -130,6 +130,7 @@ struct PassDecl {
 struct GraphNeeds {
     // The frame uniforms' light-view fields describe the shadow light seen by a map of this many
     // texels (render/light_view.hpp); unset: no light view (a scene without a shadow light runs).
+    // A shared service, not the shadow family's: any pass that renders from the light uses it.
     std::optional<uint32_t> light_view_resolution;
     bool area_light = false;  // refuses scenes whose shadow light has no size
     // Population kinds (scene/population.hpp) the technique renders; a scene holding another is refused.

@@ -1,4 +1,7 @@
-// How the shadow light sees the scene: the view and projection of its shadow map.
+// How the scene's shadow-casting light sees it: a view and projection fitted to the scene. A
+// service any family may declare (GraphNeeds::light_view_resolution) for passes that render
+// from the light: the shadow family's maps today; a grass or foliage technique that casts
+// shadows, or slices baked under the sun, would declare it the same way.
 #pragma once
 
 #include "scene/geometry.hpp"
