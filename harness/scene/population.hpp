@@ -19,11 +19,6 @@ namespace population_kinds {
 inline constexpr const char* kScatter = "scatter";  // copies scattered over a rectangle of ground
 }  // namespace population_kinds
 
-// A scatter population: `count` copies of `prototype`, each placed at a uniformly random point of
-// the rectangle [region_min, region_max] (x, z) at height `ground_y`, turned by a random yaw about
-// +y (when random_yaw) and scaled uniformly by a factor drawn from [scale_min, scale_max].
-// A copy's world matrix is placement * prototype.instances[0].matrix(): the prototype's own
-// transform (e.g. a translate lifting a box onto the ground) applies first.
 // An alpha mask cut into every copy (harness/shaders/alpha_mask.h), in the prototype's mesh space:
 // both renderers evaluate the same function at the same points.
 struct AlphaMask {
@@ -35,6 +30,11 @@ struct AlphaMask {
     glm::vec4 packed() const;  // the shader's vec4
 };
 
+// A scatter population: `count` copies of `prototype`, each placed at a uniformly random point of
+// the rectangle [region_min, region_max] (x, z) at height `ground_y`, turned by a random yaw about
+// +y (when random_yaw) and scaled uniformly by a factor drawn from [scale_min, scale_max].
+// A copy's world matrix is placement * prototype.instances[0].matrix(): the prototype's own
+// transform (e.g. a translate lifting a box onto the ground) applies first.
 struct Population {
     std::string name;
     std::string kind = population_kinds::kScatter;
