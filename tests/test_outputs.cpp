@@ -47,7 +47,7 @@ TEST_CASE("canopy run writes JSON, CSV, Markdown, EXR and PNG for every case") {
     CHECK(json["status"] == "complete");
     CHECK(json["measured_frames"] == 3);
     const auto& env = json["environment"];
-    for (const char* key : {"device", "driver_info", "commit", "nproc", "lp_num_threads", "cpu_model", "build_type", "config_hash"}) {
+    for (const char* key : {"device", "driver_info", "commit", "nproc", "lp_num_threads", "heap", "cpu_model", "build_type", "config_hash"}) {
         CAPTURE(key);
         CHECK(env.contains(key));
     }

@@ -177,7 +177,7 @@ TEST_CASE("a run's identity: what differs is named, field by field") {
     CHECK(two[0].find("config_hash") == 0);
     CHECK(two[1].find("images: the folder's run has 'png', this one 'all'") == 0);
     // The device, the build and the thread count are part of it: timings of one run compare.
-    for (const char* field : {"device", "driver", "commit", "build_type", "lp_num_threads", "nproc", "reference",
+    for (const char* field : {"device", "driver", "commit", "build_type", "lp_num_threads", "heap", "nproc", "reference",
                               "rounds", "frames_per_sample", "round_order", "chunk_limits", "test_ballast"})
         CHECK_MESSAGE(identity().find(field) != nullptr, field);
 }

@@ -24,6 +24,7 @@
 #include "core/graph_requirements.hpp"
 #include "graph/frame_graph.hpp"
 #include "run/environment.hpp"
+#include "run/heap_settings.hpp"
 #include "run/output_folder.hpp"
 #include "report/gbench_report.hpp"
 #include "run/run_identity.hpp"
@@ -368,6 +369,7 @@ int run(const RunCommand& command, const ReferenceOptions& reference_options) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    hold_heap_still();  // before any driver allocates: see run/heap_settings.hpp
     CLI::App app{"canopy: benchmark real-time rendering techniques for nature scenes against a ray-traced reference.\n"
                  "Measures how long each technique takes and how far its image is from the truth."};
     app.require_subcommand(1);

@@ -64,6 +64,7 @@ ordered_json context(const RunRecord& run) {
     j["driver_info"] = e.device.driver_info;
     j["cpu_model"] = e.cpu_model;
     j["lp_num_threads"] = e.lp_num_threads;
+    j["heap"] = e.heap;
     j["status"] = run.status;
     j["measurement"] = std::to_string(run.warmup_frames) + " warm-up frames, " + std::to_string(run.rounds) +
                        " rounds of " + std::to_string(run.frames_per_sample) +

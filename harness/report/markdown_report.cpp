@@ -46,6 +46,7 @@ std::string markdown_report(const RunRecord& run) {
                        "start {:.2f} {:.2f} {:.2f}\n",
                        e.cpu_model, e.nproc, e.cpus_allowed, e.lp_num_threads, e.load_average[0], e.load_average[1],
                        e.load_average[2]);
+    out += fmt::format("- heap while measuring: {}\n", e.heap);
     out += fmt::format("- canopy {} ({} build), commit {}{}, config hash {}\n", e.canopy_version, e.build_type,
                        e.git_commit, e.git_dirty ? " (with uncommitted changes)" : "", e.config_hash);
     std::string resumed;

@@ -1,5 +1,7 @@
 #include "run/environment.hpp"
 
+#include "run/heap_settings.hpp"
+
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
@@ -120,6 +122,7 @@ Environment collect_environment(const GpuContext& gpu, const std::string& config
     e.nproc = std::thread::hardware_concurrency();
     const char* threads = std::getenv("LP_NUM_THREADS");
     e.lp_num_threads = threads ? threads : "unset";
+    e.heap = heap_settings();
     e.cpu_model = cpu_model();
     e.cpu_mhz = cpu_mhz();
     const std::string governor = first_line("/sys/devices/system/cpu/cpu0/cpufreq/scaling_governor");
@@ -162,6 +165,7 @@ void to_json(nlohmann::json& j, const Environment& e) {
          {"vulkan_api", e.device.api_version},
          {"nproc", e.nproc},
          {"lp_num_threads", e.lp_num_threads},
+         {"heap", e.heap},
          {"cpu_model", e.cpu_model},
          {"cpu_mhz", e.cpu_mhz},
          {"cpu_scaling", e.cpu_scaling},
@@ -188,6 +192,7 @@ void from_json(const nlohmann::json& j, Environment& e) {
     read("vulkan_api", e.device.api_version);
     read("nproc", e.nproc);
     read("lp_num_threads", e.lp_num_threads);
+    read("heap", e.heap);
     read("cpu_model", e.cpu_model);
     read("cpu_mhz", e.cpu_mhz);
     read("cpu_scaling", e.cpu_scaling);

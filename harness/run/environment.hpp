@@ -25,6 +25,7 @@ struct Environment {
     std::string mesa_version;      // "22.3.6" for Mesa drivers, "" otherwise
     unsigned nproc = 0;            // hardware threads available to this process
     std::string lp_num_threads;    // LP_NUM_THREADS as set, or "unset" (lavapipe then uses nproc)
+    std::string heap;              // the C heap's settings while measuring (run/heap_settings.hpp)
     std::string cpu_model;
     double cpu_mhz = 0;            // /proc/cpuinfo's "cpu MHz" of the first CPU, 0 if unknown
     bool cpu_scaling = false;      // a cpufreq governor other than "performance" is active

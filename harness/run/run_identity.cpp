@@ -53,6 +53,7 @@ RunIdentity make_run_identity(const Experiment& experiment, const RunOptions& op
     add("commit", environment.git_commit + (environment.git_dirty ? " (with uncommitted changes)" : ""));
     add("build_type", environment.build_type);
     add("lp_num_threads", environment.lp_num_threads);
+    add("heap", environment.heap);
     add("nproc", std::to_string(environment.nproc));
     return identity;
 }

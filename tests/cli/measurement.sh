@@ -82,7 +82,7 @@ g, r = json.load(open(sys.argv[1])), json.load(open(sys.argv[2]))
 for key in ("date", "host_name", "num_cpus", "mhz_per_cpu", "caches", "library_build_type"):
     assert key in g["context"], key
 # Which run, build and device the timings come from, named as in results.json's environment.
-for key in ("commit", "commit_dirty", "device", "driver_info", "cpu_model", "lp_num_threads", "config_hash"):
+for key in ("commit", "commit_dirty", "device", "driver_info", "cpu_model", "lp_num_threads", "heap", "config_hash"):
     assert str(g["context"][key]).lower() == str(r["environment"][key]).lower(), key
 cases = r["cases"]
 iterations = [b for b in g["benchmarks"] if b["run_type"] == "iteration"]

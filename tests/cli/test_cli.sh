@@ -48,6 +48,11 @@ case $case in
     "$canopy" run "$data/experiments/tiny.toml" --out "$work/out" --quick --no-cache >"$work/stdout" 2>"$work/stderr" || fail "run failed: $(cat "$work/stderr")"
     cat "$work/stdout"
     for f in results.json results.csv results.md; do [ -s "$work/out/$f" ] || fail "missing $f"; done
+    # canopy holds the heap still before the device starts (run/heap_settings.hpp) and says how;
+    # under a sanitizer, whose allocator refuses mallopt, the record says that instead.
+    heap=$(python3 -c "import json; print(json.load(open('$work/out/results.json'))['environment']['heap'])")
+    case "$heap" in "glibc trim_threshold="*|"allocator defaults (mallopt refused)") ;; *) fail "environment.heap is '$heap'" ;; esac
+    grep -q "^- heap while measuring: $heap" "$work/out/results.md" || fail "results.md does not name the heap settings"
     cases=$(ls "$work/out/images" | grep -v -e '^reference_' -e '\.error\.png$' -e '\.flip\.png$' -e '\.visibility\.exr$')
     [ "$(grep -c '\.png$' <<<"$cases")" -eq 3 ] || fail "expected 3 case PNGs"
     [ "$(grep -c '\.exr$' <<<"$cases")" -eq 3 ] || fail "expected 3 case EXRs"
