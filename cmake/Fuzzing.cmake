@@ -10,4 +10,11 @@ if(CANOPY_FUZZ)
   add_compile_options(-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined
                       -fno-omit-frame-pointer)
   add_link_options(-fsanitize=address,undefined)
+  # Replaying the committed corpus once (scripts/fuzz --replay, as scripts/test does) needs the
+  # checks, not the speed: unoptimised and without debug information, clang builds the targets in
+  # about half the time. Fuzzing for minutes keeps the build type's -O2 -g.
+  option(CANOPY_FUZZ_REPLAY_BUILD "Build the fuzz targets with -O0 -g0, for a one-off corpus replay" OFF)
+  if(CANOPY_FUZZ_REPLAY_BUILD)
+    add_compile_options(-O0 -g0)
+  endif()
 endif()

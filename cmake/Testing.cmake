@@ -6,12 +6,17 @@
 # clock, which other tests loading the machine would disturb.
 include(${doctest_DIR}/doctest.cmake)
 
+# Test code itself is compiled -O1 in Release: what the tests time and check is canopy_core and
+# the techniques, built -O3 as the canopy command is, and -O1 compiles them in 40 % less time (GCC 12: test_config 19.0 s at -O3, 11.9 s at -O1).
+set(canopy_test_compile_options $<$<CONFIG:Release>:-O1>)
+
 function(canopy_add_doctests)
   cmake_parse_arguments(ARG "SERIAL" "LABEL" "SOURCES" ${ARGN})
   foreach(src IN LISTS ARG_SOURCES)
     get_filename_component(name ${src} NAME_WE)
     add_executable(${name} ${src})
     target_link_libraries(${name} PRIVATE canopy_core canopy_techniques canopy_test_support)
+    target_compile_options(${name} PRIVATE ${canopy_test_compile_options})
     target_compile_definitions(${name} PRIVATE CANOPY_TEST_DATA="${PROJECT_SOURCE_DIR}/tests/data"
                                                CANOPY_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
     set(labels ${name})
