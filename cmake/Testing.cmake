@@ -19,14 +19,22 @@ function(canopy_add_doctests)
     target_compile_options(${name} PRIVATE ${canopy_test_compile_options})
     target_compile_definitions(${name} PRIVATE CANOPY_TEST_DATA="${PROJECT_SOURCE_DIR}/tests/data"
                                                CANOPY_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+    doctest_discover_tests(${name} TEST_PREFIX "${name}:")
+    # Labels and RUN_SERIAL are set by a file ctest includes after doctest's list of the tests
+    # (<name>_TESTS): passed through doctest_discover_tests' PROPERTIES, a list of labels loses
+    # its escaping and doctest appends an empty LABELS of its own, so `ctest -L <family>` found
+    # nothing.
     set(labels ${name})
     if(ARG_LABEL)
       list(APPEND labels ${ARG_LABEL})
     endif()
-    set(properties LABELS "${labels}")
+    set(serial "")
     if(ARG_SERIAL)
-      list(APPEND properties RUN_SERIAL TRUE)
+      set(serial " RUN_SERIAL TRUE")
     endif()
-    doctest_discover_tests(${name} TEST_PREFIX "${name}:" PROPERTIES ${properties})
+    set(properties_file ${CMAKE_CURRENT_BINARY_DIR}/${name}_properties.cmake)
+    file(WRITE ${properties_file}
+         "if(DEFINED ${name}_TESTS)\n  set_tests_properties(\${${name}_TESTS} PROPERTIES LABELS \"${labels}\"${serial})\nendif()\n")
+    set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES ${properties_file})
   endforeach()
 endfunction()
