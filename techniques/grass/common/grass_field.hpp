@@ -1,0 +1,49 @@
+// A field of grass: a grid of terrain cells, each showing the one blade patch mirrored its own way
+// (shaders/cell_mirroring.h), thinned by a density map. Pure CPU: the reference and the tests
+// enumerate exactly the blades every representation must show.
+#pragma once
+
+#include "blade_patch.hpp"
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+namespace canopy::grass {
+
+// A grey density map over the field, 1 = every blade, 0 = none, sampled bilinearly at texel
+// centres with clamped edges (Lemme L797, Boulanger B L918). Empty: density 1 everywhere.
+struct DensityMap {
+    uint32_t width = 0, height = 0;
+    std::vector<float> values;  // row-major, row 0 at field z = 0
+    float sample(glm::vec2 field_uv) const;  // field_uv in [0, 1]^2 over the whole field
+};
+
+struct GrassField {
+    glm::uvec2 cells{32, 32};  // Lemme's Table 7.1 field (L1022)
+    float cell_size = 1.0f;    // world units a cell (and a patch) is wide
+    glm::vec3 origin{0.0f};    // the corner of cell (0, 0)
+    uint32_t mirror_seed = 1;
+    DensityMap density;
+};
+
+// Where a patch point lands in the world in `cell`: mirrored about the patch centre, then
+// scaled and moved to the cell. (A mirrored blade is the same strip seen the other way round:
+// blades are two-sided.)
+glm::vec3 field_point(const GrassField& field, glm::ivec2 cell, glm::vec3 patch_point);
+
+struct FieldBlade {
+    glm::ivec2 cell{0};
+    uint32_t blade = 0;      // index in the patch
+    glm::vec3 root{0.0f};    // world
+    float density = 1.0f;    // the map's value at the root
+};
+
+// Calls `visit` for every blade the field draws (threshold <= density at its world root), cell
+// by cell in row order, blades in patch order; returns how many.
+uint64_t for_each_drawn_blade(const GrassField& field, const BladePatch& patch,
+                              const std::function<void(const FieldBlade&)>& visit = {});
+
+}  // namespace canopy::grass

@@ -1,0 +1,18 @@
+#version 450
+// Compiles the grass family's GLSL/C++ headers as GLSL (ctest grass:glsl_headers), so a C++-only
+// construct in them fails here and not in a technique's shader later.
+#extension GL_GOOGLE_include_directive : require
+#include "blade_curve.h"
+#include "cell_mirroring.h"
+
+layout(local_size_x = 1) in;
+layout(std430, binding = 0) buffer Out { vec4 values[]; };
+
+void main() {
+    vec3 b = vec3(0.1, 1.0, 0.0), g = vec3(0.0, -0.4, 0.0);
+    values[0] = vec4(blade_point(b, g, 0.5), blade_max_pull(b.y));
+    values[1] = vec4(blade_tangent(b, g, 0.5), grass_fract(-0.25));
+    vec2 s = grass_mirror_signs(ivec2(-3, 7), 1u);
+    values[2] = vec4(grass_mirror_patch_point(vec3(0.2, 0.0, 0.7), s), float(grass_hash(5u)));
+    values[3] = vec4(grass_mirror_slice_uv(vec2(3.25, -1.5), s), s);
+}

@@ -1,0 +1,123 @@
+// The field (common/grass_field.hpp) and its aperiodic tiling (shaders/cell_mirroring.h, Lemme
+// eq 6.4-6.7): mirror signs per cell, geometry and slice coordinates mirrored alike, density
+// maps, and the blades a field draws.
+#include "../common/grass_field.hpp"
+#include "../shaders/cell_mirroring.h"
+
+#include <doctest/doctest.h>
+
+#include <array>
+#include <cmath>
+
+using namespace canopy::grass;
+namespace shader = canopy::shader;
+
+TEST_CASE("grass tiling: each cell is one of the four mirrored versions, a quarter each, fixed by the seed") {
+    std::array<int, 4> counts{};
+    int same_as_right = 0;
+    for (int z = -32; z < 32; ++z)
+        for (int x = -32; x < 32; ++x) {
+            const glm::vec2 s = shader::grass_mirror_signs({x, z}, 1u);
+            REQUIRE(std::abs(s.x) == 1.0f);
+            REQUIRE(std::abs(s.y) == 1.0f);
+            ++counts[size_t((s.x < 0) + 2 * (s.y < 0))];
+            same_as_right += s == shader::grass_mirror_signs({x + 1, z}, 1u);
+            REQUIRE(s == shader::grass_mirror_signs({x, z}, 1u));
+        }
+    double chi2 = 0.0;
+    for (int c : counts) chi2 += (c - 1024.0) * (c - 1024.0) / 1024.0;
+    CHECK(chi2 < 16.3);  // 3 degrees of freedom, p = 0.001
+    CHECK(std::abs(same_as_right - 1024) < 120);  // neighbours independent: 1/4 alike
+    int differ = 0;
+    for (int x = 0; x < 64; ++x) differ += shader::grass_mirror_signs({x, 0}, 1u) != shader::grass_mirror_signs({x, 0}, 2u);
+    CHECK(differ > 32);
+}
+
+TEST_CASE("grass tiling: mirroring keeps a patch point in the patch, undoes itself, and only flips the signed axes") {
+    for (glm::vec2 s : {glm::vec2(1, 1), glm::vec2(-1, 1), glm::vec2(1, -1), glm::vec2(-1, -1)})
+        for (glm::vec3 p : {glm::vec3(0.0f, 0.3f, 0.0f), glm::vec3(0.2f, 0.0f, 0.9f), glm::vec3(1.0f, 2.0f, 0.5f)}) {
+            const glm::vec3 m = shader::grass_mirror_patch_point(p, s);
+            CHECK(m.y == p.y);
+            CHECK(m.x == doctest::Approx(s.x > 0 ? p.x : 1.0f - p.x));
+            CHECK(m.z == doctest::Approx(s.y > 0 ? p.z : 1.0f - p.z));
+            CHECK(glm::length(shader::grass_mirror_patch_point(m, s) - p) < 1e-6f);  // up to rounding
+        }
+}
+
+TEST_CASE("grass tiling: slice coordinates (eq 6.6) mirror exactly as geometry does (eq 6.7) inside a cell") {
+    CHECK(shader::grass_fract(-0.25f) == 0.75f);  // not fmod's -0.25
+    CHECK(shader::grass_fract(2.5f) == 0.5f);
+    for (glm::vec2 s : {glm::vec2(1, 1), glm::vec2(-1, 1), glm::vec2(1, -1), glm::vec2(-1, -1)})
+        for (glm::vec2 u : {glm::vec2(3.25f, -1.5f), glm::vec2(0.125f, 7.875f), glm::vec2(-4.75f, 0.5f)}) {
+            const glm::vec2 cell = glm::floor(u);
+            const glm::vec2 local = u - cell;
+            const glm::vec3 geometry = shader::grass_mirror_patch_point({local.x, 0.0f, local.y}, s);
+            const glm::vec2 slice = shader::grass_mirror_slice_uv(u, s);
+            CHECK(slice.x == doctest::Approx(cell.x + geometry.x));
+            CHECK(slice.y == doctest::Approx(cell.y + geometry.z));
+        }
+    // The documented seam: with s = -1 a cell's lower edge maps to itself, geometry to the upper.
+    CHECK(shader::grass_mirror_slice_uv({3.0f, 0.5f}, {-1.0f, 1.0f}).x == 3.0f);
+}
+
+TEST_CASE("grass field: a blade's root stays in its own cell, mirrored as the cell says") {
+    GrassField field;
+    field.cells = {8, 8};
+    field.cell_size = 0.5f;
+    field.origin = {-2.0f, 0.0f, -2.0f};
+    BladePatchParams p;
+    p.blades = 300;
+    p.subdivisions = 0;
+    const BladePatch patch = generate_blade_patch(p);
+    for (int z = 0; z < 8; ++z)
+        for (int x = 0; x < 8; ++x) {
+            const glm::vec2 s = shader::grass_mirror_signs({x, z}, field.mirror_seed);
+            for (const Blade& b : patch.blades) {
+                const glm::vec3 w = field_point(field, {x, z}, b.root);
+                const glm::vec3 local = (w - field.origin) / field.cell_size - glm::vec3(float(x), 0.0f, float(z));
+                REQUIRE(local.x >= 0.0f);
+                REQUIRE(local.x <= 1.0f);
+                REQUIRE(local.z >= 0.0f);
+                REQUIRE(local.z <= 1.0f);
+                REQUIRE(local.x == doctest::Approx(s.x > 0 ? b.root.x : 1.0f - b.root.x).epsilon(1e-5));
+                REQUIRE(local.z == doctest::Approx(s.y > 0 ? b.root.z : 1.0f - b.root.z).epsilon(1e-5));
+            }
+        }
+}
+
+TEST_CASE("grass field: density maps sample bilinearly between texel centres and clamp at the edges") {
+    DensityMap empty;
+    CHECK(empty.sample({0.3f, 0.7f}) == 1.0f);
+    DensityMap m{2, 2, {0.0f, 1.0f, 0.5f, 0.25f}};  // row 0: 0, 1; row 1: 0.5, 0.25
+    CHECK(m.sample({0.25f, 0.25f}) == doctest::Approx(0.0f));   // texel (0, 0)'s centre
+    CHECK(m.sample({0.75f, 0.25f}) == doctest::Approx(1.0f));
+    CHECK(m.sample({0.25f, 0.75f}) == doctest::Approx(0.5f));
+    CHECK(m.sample({0.5f, 0.5f}) == doctest::Approx((0.0f + 1.0f + 0.5f + 0.25f) / 4.0f));
+    CHECK(m.sample({0.0f, 0.0f}) == doctest::Approx(0.0f));     // clamped, not wrapped
+    CHECK(m.sample({1.0f, 0.0f}) == doctest::Approx(1.0f));
+    CHECK(m.sample({-5.0f, 9.0f}) == doctest::Approx(0.5f));
+}
+
+TEST_CASE("grass field: it draws the blades whose threshold the density reaches") {
+    GrassField field;
+    field.cells = {16, 16};
+    BladePatchParams p;
+    p.subdivisions = 0;
+    const BladePatch patch = generate_blade_patch(p);
+    const uint64_t all = uint64_t(16) * 16 * p.blades;
+    CHECK(for_each_drawn_blade(field, patch) == all);  // no map: density 1
+    field.density = {1, 1, {0.0f}};
+    CHECK(for_each_drawn_blade(field, patch) == 0);  // thresholds in ]0, 1]
+    field.density = {1, 1, {0.3f}};
+    CHECK(double(for_each_drawn_blade(field, patch)) / double(all) == doctest::Approx(0.3).epsilon(0.05));
+    // A ramp from 0 at x = 0 to 1 at the far side: half the blades, most where it is dense.
+    field.density = {64, 1, {}};
+    for (uint32_t i = 0; i < 64; ++i) field.density.values.push_back((float(i) + 0.5f) / 64.0f);
+    uint64_t near_side = 0, far_side = 0;
+    const uint64_t drawn = for_each_drawn_blade(field, patch, [&](const FieldBlade& b) {
+        CHECK(patch.blades[b.blade].threshold <= b.density);
+        (b.root.x < 8.0f ? near_side : far_side) += 1;
+    });
+    CHECK(double(drawn) / double(all) == doctest::Approx(0.5).epsilon(0.05));
+    CHECK(double(far_side) / double(near_side) == doctest::Approx(3.0).epsilon(0.1));  // mean 3/4 against 1/4
+}
