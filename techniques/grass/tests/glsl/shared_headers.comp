@@ -2,6 +2,7 @@
 // Compiles the grass family's GLSL/C++ headers as GLSL (ctest grass:glsl_headers), so a C++-only
 // construct in them fails here and not in a technique's shader later.
 #extension GL_GOOGLE_include_directive : require
+#include "blade_alpha.h"
 #include "blade_curve.h"
 #include "cell_mirroring.h"
 
@@ -15,4 +16,7 @@ void main() {
     vec2 s = grass_mirror_signs(ivec2(-3, 7), 1u);
     values[2] = vec4(grass_mirror_patch_point(vec3(0.2, 0.0, 0.7), s), float(grass_hash(5u)));
     values[3] = vec4(grass_mirror_slice_uv(vec2(3.25, -1.5), s), s);
+    vec2 uv = vec2(0.3, 0.6);
+    values[4] = vec4(blade_half_width(uv.y, 2.0), blade_opaque(uv, 2.0) ? 1.0 : 0.0, blade_alpha(uv, 2.0, 0.01),
+                     blade_coverage(2.0));
 }
