@@ -7,7 +7,8 @@
 include(${doctest_DIR}/doctest.cmake)
 
 # Test code itself is compiled -O1 in Release: what the tests time and check is canopy_core and
-# the techniques, built -O3 as the canopy command is, and -O1 compiles them in 40 % less time (GCC 12: test_config 19.0 s at -O3, 11.9 s at -O1).
+# the techniques, built -O3 as the canopy command is, and -O1 compiles them in 40 % less time
+# (GCC 12: test_config 19.0 s at -O3, 11.9 s at -O1).
 set(canopy_test_compile_options $<$<CONFIG:Release>:-O1>)
 
 function(canopy_add_doctests)

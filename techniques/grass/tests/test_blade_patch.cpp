@@ -195,8 +195,10 @@ TEST_CASE("grass blades: uniform roots cover the patch evenly") {
 }
 
 TEST_CASE("grass blades: parameters out of range are refused by name") {
-    const auto refused = [](BladePatchParams p, const char* name) {
+    const auto refused = [](const char* name, auto change) {
         CAPTURE(name);
+        BladePatchParams p;
+        change(p);
         try {
             generate_blade_patch(p);
             FAIL("accepted");
@@ -204,26 +206,14 @@ TEST_CASE("grass blades: parameters out of range are refused by name") {
             CHECK(std::string(e.what()).find(name) != std::string::npos);
         }
     };
-    BladePatchParams p;
-    p.blades = 0;
-    refused(p, "blades");
-    p = {};
-    p.subdivisions = 65;
-    refused(p, "subdivisions");
-    p = {};
-    p.height_min = 0.5f;  // above height_max
-    refused(p, "height");
-    p = {};
-    p.tilt_max_degrees = 89.0f;
-    refused(p, "tilt");
-    p = {};
-    p.bend_max = 1.5f;
-    refused(p, "bend");
-    p = {};
-    p.width_min = std::nanf("");
-    refused(p, "width");
-    p = {};
-    p.thresholds.distribution = ThresholdDistribution::clustered;
-    p.thresholds.noise_periods = 0;
-    refused(p, "noise_periods");
+    refused("blades", [](BladePatchParams& p) { p.blades = 0; });
+    refused("subdivisions", [](BladePatchParams& p) { p.subdivisions = 65; });
+    refused("height", [](BladePatchParams& p) { p.height_min = 0.5f; });  // above height_max
+    refused("tilt", [](BladePatchParams& p) { p.tilt_max_degrees = 89.0f; });
+    refused("bend", [](BladePatchParams& p) { p.bend_max = 1.5f; });
+    refused("width", [](BladePatchParams& p) { p.width_min = std::nanf(""); });
+    refused("noise_periods", [](BladePatchParams& p) {
+        p.thresholds.distribution = ThresholdDistribution::clustered;
+        p.thresholds.noise_periods = 0;
+    });
 }

@@ -47,6 +47,13 @@ double neighbour_difference(const std::vector<glm::vec3>& roots, const std::vect
     return sum / double(pairs);
 }
 
+ThresholdParams clustered(float sigma) {
+    ThresholdParams p;
+    p.distribution = ThresholdDistribution::clustered;
+    p.sigma = sigma;
+    return p;
+}
+
 }  // namespace
 
 TEST_CASE("thresholds: a blade is drawn where the density reaches its threshold, and density 0 draws none") {
@@ -113,9 +120,7 @@ TEST_CASE("thresholds: equalised ranks are (rank + 1) / N, ties in index order")
 
 TEST_CASE("thresholds: clustered with sigma 0 are the equalised noise: exactly uniform, and clustered in space") {
     const auto roots = random_roots(3000);
-    ThresholdParams p;
-    p.distribution = ThresholdDistribution::clustered;
-    p.sigma = 0.0f;
+    ThresholdParams p = clustered(0.0f);
     const std::vector<float> t = density_thresholds(p, roots, 3);
     CHECK(histogram_deviation(t) < 0.02);  // ranks: flat up to the bin edges
     // Lemme's "strongly clustered": neighbours' thresholds are close (1/3 if independent).
@@ -127,9 +132,7 @@ TEST_CASE("thresholds: clustered with sigma 0 are the equalised noise: exactly u
 
 TEST_CASE("thresholds: clustered with sigma 0.12 is clustered, and uniform only to within about 14 % (Lemme L384)") {
     const auto roots = random_roots(100000);
-    ThresholdParams p;
-    p.distribution = ThresholdDistribution::clustered;
-    p.sigma = 0.12f;
+    ThresholdParams p = clustered(0.12f);
     const std::vector<float> t = density_thresholds(p, roots, 3);
     // The Gaussian cut to ]0, 1] piles thresholds away from the ends: the end bins hold fewer.
     const double deviation = histogram_deviation(t);
@@ -151,8 +154,7 @@ TEST_CASE("thresholds: clustered with sigma 0.12 is clustered, and uniform only 
 
 TEST_CASE("thresholds: clustered extremes stay above 0 and at most 1") {
     const auto roots = random_roots(5000);
-    ThresholdParams p;
-    p.distribution = ThresholdDistribution::clustered;
+    ThresholdParams p = clustered(0.12f);
     for (float sigma : {1e-6f, 10.0f})
         for (uint32_t periods : {1u, 256u}) {
             p.sigma = sigma;
