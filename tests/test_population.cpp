@@ -91,7 +91,7 @@ TEST_CASE("population: an alpha mask loads, reaches every copy and cuts what alp
     CHECK(mask.opaque == 0.4f);
     CHECK(meadow().populations[0].alpha_mask.kind == AlphaMask::Kind::none);  // none unless asked
     for (const PopulationInstance& copy : generate_instances(scene.populations[0]))
-        CHECK(copy.alpha_mask == glm::vec4(shader::ALPHA_MASK_STRIPES, 2.0f, 0.25f, 0.4f));
+        CHECK(copy.data == glm::vec4(shader::ALPHA_MASK_STRIPES, 2.0f, 0.25f, 0.4f));
 
     // The function the fragment shader and the reference's filter both call.
     const glm::vec4 packed = mask.packed();

@@ -24,6 +24,7 @@
 #include "scene/camera.hpp"
 #include "scene/geometry.hpp"
 #include "scene/population.hpp"
+#include "support/reference_hits.hpp"
 #include "support/test_gpu.hpp"
 
 #include "alpha_mask.h"
@@ -173,36 +174,34 @@ std::vector<ReferencePixel> reference_pixels(const Scene& scene) {
     const EmbreeScene embree(scene, build_scene_meshes(scene));
     std::vector<std::vector<PopulationInstance>> copies;
     for (const Population& population : scene.populations) copies.push_back(generate_instances(population));
-    const glm::vec3 forward = glm::normalize(scene.camera.target - scene.camera.position);
+    const std::vector<std::optional<test::ReferenceHit>> hits = test::reference_hits(scene, embree, kWidth, kHeight);
     std::vector<ReferencePixel> pixels(size_t(kWidth) * kHeight);
-    for (uint32_t y = 0; y < kHeight; ++y)
-        for (uint32_t x = 0; x < kWidth; ++x) {
-            const Ray ray = primary_ray(scene.camera, int(kWidth), int(kHeight), float(x) + 0.5f, float(y) + 0.5f);
-            const std::optional<PrimaryHit> hit = trace_primary(embree, scene.camera, forward, ray);
-            if (!hit) continue;
-            ReferencePixel& p = pixels[size_t(y) * kWidth + x];
-            const EmbreeInstance& what = embree.geometry(hit->geometry);
-            p.population = what.population >= 0;
-            p.view_depth = hit->view_depth;
-            // Copies of one population are one geometry: the copy tells their silhouettes apart.
-            p.label = int64_t(hit->geometry) << 40;
-            if (p.population) {
-                const uint32_t copy = hit->primitive / what.prototype_triangles;
-                p.label |= int64_t(copy) << 20;
-                const Population& population = scene.populations[size_t(what.population)];
-                if (population.alpha_mask.kind != AlphaMask::Kind::none) {
-                    const glm::mat4& model = copies[size_t(what.population)][copy].model;
-                    const glm::vec3 local = glm::vec3(glm::inverse(model) * glm::vec4(hit->surface.position, 1.0f));
-                    // Which period, and which side of the cut within it: both edges of a slot.
-                    const glm::vec4 mask = population.alpha_mask.packed();
-                    const int period = int(shader::alpha_mask_period_index(mask, local));
-                    const bool opaque = shader::alpha_mask_opaque(mask, local);
-                    // and the prototype's triangle: a slot may show the copy's own far side.
-                    p.label |= int64_t(hit->primitive % what.prototype_triangles) << 12;
-                    p.label |= int64_t((2 * period + (opaque ? 0 : 1)) & 0xfff);
-                }
+    for (size_t i = 0; i < hits.size(); ++i) {
+        if (!hits[i]) continue;
+        const PrimaryHit* hit = &hits[i]->hit;
+        ReferencePixel& p = pixels[i];
+        const EmbreeInstance& what = hits[i]->what;
+        p.population = what.population >= 0;
+        p.view_depth = hit->view_depth;
+        // Copies of one population are one geometry: the copy tells their silhouettes apart.
+        p.label = int64_t(hit->geometry) << 40;
+        if (p.population) {
+            const uint32_t copy = hit->primitive / what.prototype_triangles;
+            p.label |= int64_t(copy) << 20;
+            const Population& population = scene.populations[size_t(what.population)];
+            if (population.alpha_mask.kind != AlphaMask::Kind::none) {
+                const glm::mat4& model = copies[size_t(what.population)][copy].model;
+                const glm::vec3 local = glm::vec3(glm::inverse(model) * glm::vec4(hit->surface.position, 1.0f));
+                // Which period, and which side of the cut within it: both edges of a slot.
+                const glm::vec4 mask = population.alpha_mask.packed();
+                const int period = int(shader::alpha_mask_period_index(mask, local));
+                const bool opaque = shader::alpha_mask_opaque(mask, local);
+                // and the prototype's triangle: a slot may show the copy's own far side.
+                p.label |= int64_t(hit->primitive % what.prototype_triangles) << 12;
+                p.label |= int64_t((2 * period + (opaque ? 0 : 1)) & 0xfff);
             }
         }
+    }
     return pixels;
 }
 

@@ -6,6 +6,7 @@
 #include "report/image_files.hpp"
 #include "run/reference_provider.hpp"
 #include "core/registry.hpp"
+#include "scene/population_kind.hpp"
 #include "gpu/context.hpp"
 #include "report/markdown_report.hpp"
 #include "report/paper_report.hpp"
@@ -56,12 +57,16 @@ constexpr int kExitTerminated = 143;    // 128 + SIGTERM
 int list_techniques() {
     // One column width for every technique, so long names do not push the columns apart.
     size_t name_width = 0, type_width = 0, default_width = 0;
-    for (const Technique* t : TechniqueRegistry::instance().all())
-        for (const ParamSpec& p : t->params()) {
+    // (and every population kind's, printed after the techniques in the same columns).
+    const auto widen = [&](const std::vector<ParamSpec>& specs) {
+        for (const ParamSpec& p : specs) {
             name_width = std::max(name_width, p.name.size());
             type_width = std::max(type_width, p.type_and_range().size());
             default_width = std::max(default_width, to_string(p.default_value).size());
         }
+    };
+    for (const Technique* t : TechniqueRegistry::instance().all()) widen(t->params());
+    for (const PopulationKind* kind : PopulationKindRegistry::instance().all()) widen(kind->params());
     for (const Technique* t : TechniqueRegistry::instance().all()) {
         fmt::print("{}\n  {}\n  from: {}\n", t->name(), t->summary(), t->paper());
         const std::vector<ParamSpec> specs = t->params();
@@ -71,6 +76,16 @@ int list_techniques() {
             requires_text += (requires_text.empty() ? "" : "; ") + need;
         fmt::print("  requires: {}\n  parameters:\n", requires_text.empty() ? "nothing beyond the scene" : requires_text);
         for (const ParamSpec& p : specs)
+            fmt::print("    {:<{}}  {:<{}}  default {:<{}}  {}\n", p.name, name_width, p.type_and_range(), type_width,
+                       to_string(p.default_value), default_width, p.doc);
+        fmt::print("\n");
+    }
+    // The population kinds families define, with the parameters a scene's [[population]] gives
+    // them in `params = { ... }` (the harness's own "scatter" is described in configs/README.md).
+    for (const PopulationKind* kind : PopulationKindRegistry::instance().all()) {
+        fmt::print("population kind \"{}\"\n  {}\n  parameters (in a [[population]]'s params = {{ ... }}):\n",
+                   kind->name(), kind->summary());
+        for (const ParamSpec& p : kind->params())
             fmt::print("    {:<{}}  {:<{}}  default {:<{}}  {}\n", p.name, name_width, p.type_and_range(), type_width,
                        to_string(p.default_value), default_width, p.doc);
         fmt::print("\n");
@@ -522,7 +537,7 @@ int main(int argc, char** argv) {
     export_cmd->add_option("runs", export_runs, "run folders or their results.json")->required();
     export_cmd->add_flag("--force", export_force, "also into committed results (results/paper/, results/baselines/)");
 
-    CLI::App* list_cmd = app.add_subcommand("list", "List every technique with its parameters (type, range, default).");
+    CLI::App* list_cmd = app.add_subcommand("list", "List every technique with its parameters (type, range, default), then the population kinds technique families define for scenes.");
     std::string graph_technique;
     CLI::App* graph_cmd = app.add_subcommand(
         "graph", "Print the frame graph a technique declares at its default parameters: its images, buffers and "

@@ -2,6 +2,7 @@
 
 #include "config/file_name_rules.hpp"
 #include "config/toml_reader.hpp"
+#include "scene/population_kind.hpp"
 #include "scene/scene_limits.hpp"
 
 #include <fmt/format.h>
@@ -394,9 +395,6 @@ Object read_object(TomlReader& reader, size_t index, const std::filesystem::path
     return object;
 }
 
-constexpr std::array kPopulationKindNames{population_kinds::kScatter};
-constexpr std::array kPopulationKinds{population_kinds::kScatter};
-
 constexpr std::array kAlphaMaskKindNames{"stripes"};
 constexpr std::array kAlphaMaskKinds{AlphaMask::Kind::stripes};
 constexpr std::array kAxisNames{"x", "y", "z"};
@@ -422,13 +420,64 @@ AlphaMask read_alpha_mask(TomlReader& reader) {
     return mask;
 }
 
+// A kind a technique family registered (scene/population_kind.hpp): name, material and the
+// kind's typed parameters in `params`, checked like a technique's; the copies are generated now.
+Population read_family_population(TomlReader& reader, Population population, const PopulationKind& kind) {
+    Object& material = population.prototype;
+    material.name = population.name;
+    material.material.albedo = reader.get_vec3("albedo", material.material.albedo);
+    require_in_range(reader, "albedo", material.material.albedo, 0.0f, 1.0f);
+    material.casts_shadows = reader.get_bool("casts_shadows", material.casts_shadows);
+    std::map<std::string, ParamValue> given;
+    std::map<std::string, int> lines;
+    const std::string params_context = fmt::format("params of {}", reader.context());
+    if (std::optional<TomlReader> params = reader.get_table("params", params_context)) {
+        for (auto&& [key, value] : params->table()) {
+            if (!is_param_scalar(value))
+                throw params->error_at(value, fmt::format("parameter '{}' of population kind '{}' must be a number, "
+                                                          "boolean or string, got {}",
+                                                          key.str(), kind.name(), describe_node(value)),
+                                       "`canopy list` shows each population kind's parameters");
+            given.emplace(std::string(key.str()), to_param_value(value));
+            lines.emplace(std::string(key.str()), int(key.source().begin.line));
+        }
+    }
+    reader.finish();
+    population.params =
+        ParamSet::resolve(kind.params(), given, lines, population.where, fmt::format("population kind '{}'", kind.name()));
+    try {
+        population.family = std::make_shared<const FamilyPopulation>(kind.generate(population.params));
+    } catch (const std::invalid_argument& e) {
+        throw ConfigError(population.where.file, population.where.line,
+                          fmt::format("population '{}' (kind '{}') cannot be generated: {}", population.name,
+                                      kind.name(), e.what()),
+                          "`canopy list` shows the kind's parameters and their ranges");
+    }
+    return population;
+}
+
 Population read_population(TomlReader& reader, size_t index, const std::filesystem::path& config_folder) {
     Population population;
     population.where = reader.where();
-    population.kind = read_kind(reader, "kind", kPopulationKindNames, kPopulationKinds, "population kind");
     population.name = reader.get_string("name", fmt::format("population{}", index));
     if (population.name.empty())
         throw reader.error("name", "a population's name must not be empty", "name = \"pebbles\"");
+    const std::string kind_name = reader.require_string("kind", "\"scatter\"");
+    if (kind_name != population_kinds::kScatter) {
+        const PopulationKindRegistry& registry = PopulationKindRegistry::instance();
+        if (const PopulationKind* kind = registry.find(kind_name)) {
+            population.kind = kind_name;
+            return read_family_population(reader, std::move(population), *kind);
+        }
+        std::vector<std::string> names{population_kinds::kScatter};
+        for (const std::string& name : registry.names()) names.push_back(name);
+        const std::string suggestion = closest_match(kind_name, names);
+        throw reader.error("kind", fmt::format("unknown population kind '{}'", kind_name),
+                           fmt::format("{}population kinds: {}",
+                                       suggestion.empty() ? "" : fmt::format("did you mean '{}'? ", suggestion),
+                                       fmt::join(names, ", ")));
+    }
+    population.kind = population_kinds::kScatter;
 
     // Every key is read before the required ones are checked, so that a misspelled required key
     // is reported as misspelled (with the right name), not as missing.

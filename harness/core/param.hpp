@@ -2,7 +2,7 @@
 // declares ParamSpecs; configs give ParamValues; validation checks type and range.
 #pragma once
 
-#include "scene/scene.hpp"
+#include "scene/object.hpp"
 
 #include <map>
 #include <string>

@@ -27,7 +27,8 @@ class CpuPassContext;  // graph/pass_context.hpp: what a CPU pass may do
 namespace graph_names {
 inline constexpr const char* kFrameUniforms = "frame";  // uniform buffer: harness/shaders/frame_uniforms.glsl
 // RGBA32F camera target: rgb radiance, a = the shadow light's visibility. A pass that clears it
-// gets the scene's background radiance as the clear rgb (its declared clear gives only alpha).
+// gets the scene's background radiance as the clear rgb (its declared clear gives only alpha), and
+// so does a multisampled colour attachment of a pass that resolves into it.
 inline constexpr const char* kColor = "color";
 inline constexpr const char* kDepth = "depth";          // D32F camera depth, stored (pixel-centre visibility)
 }  // namespace graph_names

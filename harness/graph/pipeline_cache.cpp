@@ -3,6 +3,7 @@
 #include "gpu/pipeline.hpp"
 
 #include "scene/geometry.hpp"
+#include "scene/population_kind.hpp"
 
 #include <fmt/format.h>
 
@@ -26,7 +27,11 @@ VertexLayout VertexLayout::population() {
     for (uint32_t c = 0; c < 3; ++c)
         layout.attributes.push_back({6 + c, 1, VK_FORMAT_R32G32B32A32_SFLOAT,
                                      uint32_t(offsetof(PopulationInstance, normal_matrix)) + 16 * c});
-    layout.attributes.push_back({9, 1, VK_FORMAT_R32G32B32A32_SFLOAT, uint32_t(offsetof(PopulationInstance, alpha_mask))});
+    layout.attributes.push_back({9, 1, VK_FORMAT_R32G32B32A32_SFLOAT, uint32_t(offsetof(PopulationInstance, data))});
+    layout.bindings.push_back({uint32_t(sizeof(PopulationVertexData)), false});
+    for (uint32_t v = 0; v < 2; ++v)
+        layout.attributes.push_back({10 + v, 2, VK_FORMAT_R32G32B32A32_SFLOAT,
+                                     uint32_t(offsetof(PopulationVertexData, data)) + 16 * v});
     return layout;
 }
 

@@ -31,7 +31,8 @@ struct VertexLayout {
     static VertexLayout scene();
     // A population's instanced draw (PassContext::draw_population): the scene's vertices at
     // binding 0, and per instance (binding 1) a PopulationInstance (scene/population.hpp): its
-    // model matrix at locations 2-5, its normal matrix's columns at 6-8.
+    // model matrix at locations 2-5, its normal matrix's columns at 6-8, its data at 9; and per
+    // vertex (binding 2) the kind's PopulationVertexData (scene/population_kind.hpp) at 10-11.
     static VertexLayout population();
     // Appends a per-instance binding whose mat4 occupies four vec4 locations from `first_location`
     // at byte `offset` of a `stride`-byte record.

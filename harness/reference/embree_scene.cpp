@@ -3,6 +3,7 @@
 #include "alpha_mask.h"
 
 #include "core/error.hpp"
+#include "scene/population_kind.hpp"
 
 #include <fmt/format.h>
 
@@ -162,7 +163,19 @@ void EmbreeScene::add_population(const Scene& scene, const std::vector<TriangleM
     if (index < options.population_alpha_tests.size()) caller = options.population_alpha_tests[index];
     const glm::vec4 mask = population.alpha_mask.packed();
     const bool masked = population.alpha_mask.kind != AlphaMask::Kind::none;
-    if (masked || caller) {
+    if (population.family) {
+        // A family's kind cuts its copies itself, per copy (copy k's triangles start at k * T).
+        record.albedo_scale = population.family->albedo_scale;
+        if (population.family->opaque || caller) {
+            alpha_tests_.push_back([caller, opaque = population.family->opaque, triangles](uint32_t primitive, float u,
+                                                                                            float v) {
+                const uint32_t triangle = uint32_t(primitive % triangles), copy = uint32_t(primitive / triangles);
+                if (opaque && !opaque(copy, triangle, u, v)) return false;
+                return !caller || caller(triangle, u, v);
+            });
+            record.alpha_test = int(alpha_tests_.size() - 1);
+        }
+    } else if (masked || caller) {
         std::vector<glm::vec3> corners;  // the prototype's triangles in its mesh space
         if (masked) {
             corners.reserve(mesh.indices.size());
@@ -262,6 +275,13 @@ void EmbreeScene::release() {
     if (device_) rtcReleaseDevice(device_);
     shadow_scene_ = visible_scene_ = nullptr;
     device_ = nullptr;
+}
+
+glm::vec3 EmbreeScene::albedo(unsigned geom_id, unsigned prim_id, float u, float v) const {
+    const Record& record = records_[geom_id];
+    if (!record.albedo_scale) return record.material.albedo;
+    const uint32_t triangles = record.instance.prototype_triangles;
+    return record.material.albedo * record.albedo_scale(prim_id / triangles, prim_id % triangles, u, v);
 }
 
 glm::vec3 EmbreeScene::shading_normal(unsigned geom_id, unsigned prim_id, float u, float v) const {

@@ -68,6 +68,9 @@ public:
     size_t geometry_count() const { return records_.size(); }
     const EmbreeInstance& geometry(unsigned geom_id) const { return records_[geom_id].instance; }
     const Material& material(unsigned geom_id) const { return records_[geom_id].material; }
+    // The albedo at a hit: the material's, times a family population's albedo scale there
+    // (FamilyPopulation::albedo_scale, as its shaders modulate it).
+    glm::vec3 albedo(unsigned geom_id, unsigned prim_id, float u, float v) const;
     // Interpolated vertex normal in world space (unit, not yet turned towards the viewer), as
     // the raster pipeline interpolates it.
     glm::vec3 shading_normal(unsigned geom_id, unsigned prim_id, float u, float v) const;
@@ -83,6 +86,8 @@ private:
         Material material;
         bool casts_shadows = true;
         int alpha_test = -1;                    // index into alpha_tests_, or -1: opaque
+        // A family population's (copy, prototype triangle, u, v) -> albedo factor, or empty.
+        std::function<float(uint32_t, uint32_t, float, float)> albedo_scale;
         std::vector<float> positions;           // xyz per vertex + 1 float of padding Embree may read
         std::vector<glm::vec3> normals;         // world space, unit
         std::shared_ptr<const std::vector<uint32_t>> indices;

@@ -109,7 +109,7 @@ PixelIntegrator::SubpixelResult PixelIntegrator::shade(const Ray& ray, uint64_t 
             result.visible_fraction = estimate.visible_fraction;
         }
     }
-    const glm::vec3 albedo = embree_.material(hit->geometry).albedo;
+    const glm::vec3 albedo = embree_.albedo(hit->geometry, hit->primitive, hit->u, hit->v);
     result.radiance = shader::lambert_radiance(albedo, irradiance, 1.0f, ambient_);
     const glm::vec3 scale = albedo / shader::PI;
     result.light_variance = scale * scale * irradiance_variance;

@@ -22,6 +22,7 @@ struct PrimaryHit {
     float view_depth = 0.0f;  // distance along the camera's view axis
     unsigned geometry = RTC_INVALID_GEOMETRY_ID;  // Embree geomID, for the material
     unsigned primitive = 0;                        // Embree primID: the triangle within the geometry
+    float u = 0.0f, v = 0.0f;                      // the hit's barycentrics (weights of vertices 1, 2)
 };
 
 // `forward`: the camera's unit view direction. nullopt when the ray sees the background.
@@ -51,6 +52,8 @@ inline std::optional<PrimaryHit> trace_primary(const EmbreeScene& embree, const 
     PrimaryHit result;
     result.geometry = hit.hit.geomID;
     result.primitive = hit.hit.primID;
+    result.u = hit.hit.u;
+    result.v = hit.hit.v;
     const float distance = hit.ray.tfar;
     result.view_depth = distance * along_axis;
     SurfacePoint& surface = result.surface;

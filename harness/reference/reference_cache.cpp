@@ -1,5 +1,7 @@
 #include "reference/reference_cache.hpp"
 
+#include "scene/population_kind.hpp"
+
 #include <OpenImageIO/imageio.h>
 #include <fmt/format.h>
 
@@ -193,9 +195,21 @@ void hash_scene(Fnv1a64& hash, const Scene& scene, const std::vector<TriangleMes
         hash.add(uint8_t(population.prototype.casts_shadows));
         const std::vector<PopulationInstance> copies = generate_instances(population);
         hash.add(uint64_t(copies.size()));
-        for (const PopulationInstance& copy : copies) hash.bytes(&copy.model[0][0], sizeof(copy.model));
+        for (const PopulationInstance& copy : copies) {
+            hash.bytes(&copy.model[0][0], sizeof(copy.model));
+            hash.bytes(&copy.data[0], sizeof(copy.data));
+        }
         const glm::vec4 mask = population.alpha_mask.packed();
         for (int c = 0; c < 4; ++c) hash.add(mask[c]);
+        if (population.family) {
+            // The kind's alpha test and albedo scale are code: its version and parameters stand for them.
+            const PopulationKind* kind = PopulationKindRegistry::instance().find(population.kind);
+            hash.add(int32_t(kind ? kind->version() : -1));
+            hash.add_string(population.params.summary());
+            const auto& data = population.family->vertex_data;
+            hash.add(uint64_t(data.size()));
+            if (!data.empty()) hash.bytes(data.data(), data.size() * sizeof(PopulationVertexData));
+        }
         const size_t mesh_index = scene.objects.size() + index;
         hash_mesh(hash, mesh_index < meshes.size() ? &meshes[mesh_index] : nullptr);
     }

@@ -1,5 +1,7 @@
 #include "render/gpu_scene.hpp"
 
+#include "scene/population_kind.hpp"
+
 #include <fmt/format.h>
 
 #include <array>
@@ -12,6 +14,7 @@ GpuScene::GpuScene(const GpuContext& gpu, MemoryLedger& ledger, const Scene& sce
     : populations_(generate_populations(scene, meshes, population_kinds)) {
     std::vector<Vertex> all_vertices;
     std::vector<uint32_t> all_indices;
+    std::vector<PopulationVertexData> all_vertex_data;  // only when there are populations
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         const Object& object = scene.objects[i];
         const TriangleMesh& mesh = meshes[i];
@@ -44,7 +47,13 @@ GpuScene::GpuScene(const GpuContext& gpu, MemoryLedger& ledger, const Scene& sce
         for (int c = 0; c < 3; ++c) draw.draw.constants.normal_matrix[c] = glm::vec4(glm::mat3(1.0f)[c], 0.0f);
         draw.draw.constants.albedo = glm::vec4(population.material.albedo, 1.0f);
         draw.instance_count = uint32_t(population.instances.size());
+        // Per-vertex family data parallel to the shared vertex buffer: zeros for the objects'
+        // vertices and for populations that have none.
+        all_vertex_data.resize(all_vertices.size());
+        if (population.vertex_data.size() == population.prototype.vertices.size())
+            all_vertex_data.insert(all_vertex_data.end(), population.vertex_data.begin(), population.vertex_data.end());
         all_vertices.insert(all_vertices.end(), population.prototype.vertices.begin(), population.prototype.vertices.end());
+        all_vertex_data.resize(all_vertices.size());
         all_indices.insert(all_indices.end(), population.prototype.indices.begin(), population.prototype.indices.end());
         if (draw.draw.index_count > 0 && draw.instance_count > 0)
             draw.instances = upload_buffer(gpu, ledger, "scene", population.instances.data(),
@@ -63,6 +72,10 @@ GpuScene::GpuScene(const GpuContext& gpu, MemoryLedger& ledger, const Scene& sce
                               VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
     indices_ = upload_buffer(gpu, ledger, "scene", all_indices.data(), all_indices.size() * sizeof(uint32_t),
                              VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+    if (!population_draws_.empty())
+        vertex_data_ = upload_buffer(gpu, ledger, "scene", all_vertex_data.data(),
+                                     all_vertex_data.size() * sizeof(PopulationVertexData),
+                                     VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
 }
 
 void GpuScene::draw(VkCommandBuffer commands, VkPipelineLayout layout, bool casters_only) const {
@@ -84,9 +97,9 @@ void GpuScene::draw_population(VkCommandBuffer commands, VkPipelineLayout layout
         if (populations_[i].name != name) continue;
         const PopulationDraw& d = population_draws_[i];
         if (d.draw.index_count == 0 || d.instance_count == 0) return;
-        const std::array<VkBuffer, 2> buffers{vertices_.handle(), d.instances.handle()};
-        const std::array<VkDeviceSize, 2> offsets{0, 0};
-        vkCmdBindVertexBuffers(commands, 0, 2, buffers.data(), offsets.data());
+        const std::array<VkBuffer, 3> buffers{vertices_.handle(), d.instances.handle(), vertex_data_.handle()};
+        const std::array<VkDeviceSize, 3> offsets{0, 0, 0};
+        vkCmdBindVertexBuffers(commands, 0, 3, buffers.data(), offsets.data());
         vkCmdBindIndexBuffer(commands, indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
         vkCmdPushConstants(commands, layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                            sizeof(DrawConstants), &d.draw.constants);

@@ -50,6 +50,7 @@ private:
 
     Buffer vertices_;
     Buffer indices_;
+    Buffer vertex_data_;  // PopulationVertexData parallel to vertices_, when populations are drawn
     std::vector<SceneDraw> draws_;
     size_t triangles_ = 0;
     std::vector<GeneratedPopulation> populations_;

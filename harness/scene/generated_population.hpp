@@ -4,6 +4,7 @@
 
 #include "scene/geometry.hpp"
 #include "scene/population.hpp"
+#include "scene/population_kind.hpp"
 
 #include <string>
 #include <vector>
@@ -17,6 +18,7 @@ struct GeneratedPopulation {
     bool casts_shadows = true;
     TriangleMesh prototype;                   // local space, as in build_scene_meshes
     std::vector<PopulationInstance> instances;  // generate_instances
+    std::vector<PopulationVertexData> vertex_data;  // a family's kind: one per prototype vertex; else empty
 };
 
 // The scene's populations whose kind is one of `kinds`, in scene order; `meshes` as

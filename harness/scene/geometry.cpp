@@ -1,5 +1,7 @@
 #include "scene/geometry.hpp"
 
+#include "scene/population_kind.hpp"
+
 #include "core/error.hpp"
 #include "scene/isolated_mesh_import.hpp"
 #include "scene/scene_limits.hpp"
@@ -182,12 +184,32 @@ void require_in_scene(const Population& population, const TriangleMesh& mesh) {
         return ConfigError(population.where.file, population.where.line,
                            fmt::format("population '{}': {}", population.name, message), hint);
     };
-    const double triangles = double(population.count) * double(mesh.triangle_count());
+    const double copies = population.family ? double(population.family->instances.size()) : double(population.count);
+    const double triangles = copies * double(mesh.triangle_count());
     if (triangles > limits::kMaxPopulationTriangles)
         throw error(fmt::format("{} copies of a {}-triangle prototype make {:.3g} triangles, more than the {:.3g} the "
                                 "reference can flatten",
-                                population.count, mesh.triangle_count(), triangles, limits::kMaxPopulationTriangles),
-                    "lower 'count', or use a prototype with fewer triangles (fewer 'segments')");
+                                copies, mesh.triangle_count(), triangles, limits::kMaxPopulationTriangles),
+                    population.family ? "make the field smaller or its patch sparser (see the kind's parameters in "
+                                        "`canopy list`)"
+                                      : "lower 'count', or use a prototype with fewer triangles (fewer 'segments')");
+    if (population.family) {
+        Bounds local;
+        for (const Vertex& vertex : mesh.vertices) local.extend(vertex.position);
+        double far = 0.0;
+        for (const PopulationInstance& copy : population.family->instances)
+            for (int corner = 0; corner < 8 && !local.empty(); ++corner) {
+                const glm::vec3 p((corner & 1) ? local.max.x : local.min.x, (corner & 2) ? local.max.y : local.min.y,
+                                  (corner & 4) ? local.max.z : local.min.z);
+                const glm::dvec4 world = glm::dmat4(copy.model) * glm::dvec4(glm::dvec3(p), 1.0);
+                far = std::max({far, std::abs(world.x), std::abs(world.y), std::abs(world.z)});
+            }
+        if (far <= limits::kMaxCoordinate) return;
+        throw error(fmt::format("its copies reach {:.3g} scene units from the origin, outside the scene's coordinate "
+                                "range [-{:g}, {:g}]", far, limits::kMaxCoordinate, limits::kMaxCoordinate),
+                    "canopy computes in single precision: keep every coordinate within 1e6 scene units "
+                    "(configs/README.md, \"Limits\")");
+    }
     const glm::dmat4 own(population.prototype.instances.empty() ? glm::mat4(1.0f)
                                                                : population.prototype.instances.front().matrix());
     double reach = 0.0;  // the farthest a prototype vertex lies from the copy's origin
@@ -227,7 +249,7 @@ std::vector<TriangleMesh> build_scene_meshes(const Scene& scene) {
         require_in_scene(object, meshes.back());
     }
     for (const Population& population : scene.populations) {
-        meshes.push_back(build_object_mesh(population.prototype));
+        meshes.push_back(population.family ? population.family->prototype : build_object_mesh(population.prototype));
         require_in_scene(population, meshes.back());
     }
     return meshes;

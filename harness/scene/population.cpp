@@ -1,5 +1,7 @@
 #include "scene/population.hpp"
 
+#include "scene/population_kind.hpp"
+
 #include "alpha_mask.h"
 
 #include <algorithm>
@@ -51,6 +53,7 @@ glm::vec4 AlphaMask::packed() const {
 }
 
 std::vector<PopulationInstance> generate_instances(const Population& population) {
+    if (population.family) return population.family->instances;
     const glm::mat4 own = population.prototype.instances.empty() ? glm::mat4(1.0f)
                                                                  : population.prototype.instances.front().matrix();
     std::vector<PopulationInstance> instances(population.count);
@@ -60,7 +63,7 @@ std::vector<PopulationInstance> generate_instances(const Population& population)
         // As GpuScene computes an object's DrawConstants::normal_matrix.
         const glm::mat3 normal = glm::transpose(glm::inverse(glm::mat3(instance.model)));
         for (int c = 0; c < 3; ++c) instance.normal_matrix[c] = glm::vec4(normal[c], 0.0f);
-        instance.alpha_mask = population.alpha_mask.packed();
+        instance.data = population.alpha_mask.packed();
     }
     return instances;
 }

@@ -4,20 +4,25 @@
 // as ground truth. Both get the copies from generate_instances, so they see the same ones.
 #pragma once
 
+#include "core/param.hpp"
 #include "scene/object.hpp"
 
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace canopy {
 
-// The population kinds the harness knows (what a [[population]]'s `kind` may be).
+// The population kind the harness itself knows; technique families register more
+// (scene/population_kind.hpp), e.g. the grass family's "grass".
 namespace population_kinds {
 inline constexpr const char* kScatter = "scatter";  // copies scattered over a rectangle of ground
 }  // namespace population_kinds
+
+struct FamilyPopulation;  // scene/population_kind.hpp
 
 // An alpha mask cut into every copy (harness/shaders/alpha_mask.h), in the prototype's mesh space:
 // both renderers evaluate the same function at the same points.
@@ -49,15 +54,24 @@ struct Population {
     bool random_yaw = true;
     AlphaMask alpha_mask;
     SourceLocation where;
+
+    // A family's kind (not scatter): its parameters as the config gave them, defaults filled in,
+    // and what they generate, made once when the scene is read (its prototype's triangles,
+    // per-vertex data, copies and alpha test). The scatter fields above are then unused but for
+    // prototype.material and prototype.casts_shadows.
+    ParamSet params;
+    std::shared_ptr<const FamilyPopulation> family;
 };
 
 // One generated copy: its world matrix and the inverse-transpose of its linear part (for normals),
-// laid out as DrawConstants' model and normal_matrix, and the population's alpha mask, so a vertex
-// shader reads it as per-instance attributes (harness/shaders/population.vert).
+// laid out as DrawConstants' model and normal_matrix, and four floats of per-copy data, so a
+// vertex shader reads it as per-instance attributes (harness/shaders/population.vert).
 struct PopulationInstance {
     glm::mat4 model{1.0f};
     glm::vec4 normal_matrix[3]{glm::vec4(1, 0, 0, 0), glm::vec4(0, 1, 0, 0), glm::vec4(0, 0, 1, 0)};
-    glm::vec4 alpha_mask{0.0f};  // AlphaMask::packed(), the same for every copy
+    // scatter: AlphaMask::packed(), the same for every copy; a family's kind: what its shaders
+    // read per copy (e.g. the grass cell's corner densities).
+    glm::vec4 data{0.0f};
 };
 static_assert(sizeof(PopulationInstance) == 128, "population.vert reads 8 vec4 per instance");
 
@@ -66,7 +80,7 @@ static_assert(sizeof(PopulationInstance) == 128, "population.vert reads 8 vec4 p
 // so copy `index` is the same whatever `count` is, on every standard library.
 glm::mat4 scatter_placement(const Population& population, uint32_t index);
 
-// Every copy, in index order: count entries.
+// Every copy, in index order: count entries (a family's kind: the copies it generated).
 std::vector<PopulationInstance> generate_instances(const Population& population);
 
 // The scene's populations whose kind is one of `kinds` (indices into scene.populations).

@@ -3,7 +3,7 @@
 // shading is identical for all.
 #include "frame_uniforms.glsl"
 #include "draw_constants.glsl"
-#include "shading.h"
+#include "scene_lighting.glsl"
 #include "lit_pass_output.h"
 #include "shadow_common.h"
 #include "light_space.glsl"
@@ -37,15 +37,8 @@ vec2 sample_offset(int i) { vec4 v = frame.sample_offsets[i / 2]; return (i % 2 
 float shadow_resolution() { return frame.shadow_texel.x; }
 float shadow_texel_uv() { return frame.shadow_texel.y; }
 void main() {
-    vec3 n = normalize(world_normal);
-    // Two-sided surfaces: shade the side the camera sees (the reference does the same).
-    if (dot(n, frame.camera_position.xyz - world_position) < 0.0) n = -n;
-
-    int light_type = int(frame.light_position.w);
-    vec3 irradiance = light_type == LIGHT_DIRECTIONAL
-        ? directional_irradiance(n, frame.light_axis.xyz, frame.light_intensity.rgb)
-        : point_irradiance(light_type, world_position, n, frame.light_position.xyz, frame.light_axis.xyz,
-                           frame.light_intensity.rgb, frame.light_axis.w);
+    vec3 n = camera_side_normal(world_normal, world_position);
+    vec3 irradiance = scene_light_irradiance(world_position, n);
 
     float visibility = 1.0;
     float cos_theta = dot(n, direction_to_light(world_position));
