@@ -50,7 +50,7 @@ TEST_CASE("under the occluder is dark and the open floor is lit exactly as Lambe
                                                       light.direction, glm::vec3(light.intensity), 1.0f).x;
     const float lit_expected = albedo * (irradiance / shader::PI + ambient);
     const float umbra_expected = albedo * ambient;
-    for (const test::TechniqueVariant& v : test::technique_variants()) {
+    for (const test::TechniqueVariant& v : test::technique_variants("shadow")) {
         const std::string name = test::describe(v);
         CAPTURE(name);
         const Image image = render(scene, v.technique, v.params);
@@ -99,7 +99,7 @@ TEST_CASE("the same configuration renders identical images: any renderer, any or
     // held another technique's data rather than its own last image; and it renders two frames,
     // as runs keep the last of several (a technique must carry no state from frame to frame).
     const Scene scene = test::tiny_scene_under_rect_light();
-    const std::vector<test::TechniqueVariant> all = test::technique_variants();
+    const std::vector<test::TechniqueVariant> all = test::technique_variants("shadow");
     std::vector<Image> first;
     for (const test::TechniqueVariant& v : all) first.push_back(render(scene, v.technique, v.params));
     const auto same_bits = [](const Image& a, const Image& b) {

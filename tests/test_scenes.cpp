@@ -8,6 +8,8 @@
 #include "render/frame_renderer.hpp"
 #include "support/test_gpu.hpp"
 
+#include "support/technique_variants.hpp"
+
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -71,7 +73,7 @@ void check_scene(const std::string& name) {
     REQUIRE(baseline.shadowed >= 0.01);
     REQUIRE(baseline.lit >= 0.5);
 
-    for (const Technique* t : TechniqueRegistry::instance().all()) {
+    for (const Technique* t : test::family_techniques("shadow")) {
         const std::string technique = t->name();
         CAPTURE(technique);
         const Image image = render(scene, meshes, *t);

@@ -34,12 +34,13 @@ TEST_CASE("every technique's defaults resolve and every parameter is documented"
             CAPTURE(p.name);
             CHECK_FALSE(p.doc.empty());
         }
-        // Its frame graph is well formed and draws the camera's colour target.
+        // Its frame graph is well formed and draws (or resolves into) the camera's colour target.
         const FrameGraph graph = t->graph(resolve(*t));
         CHECK(validate(graph) == "");
         const bool draws_color = std::any_of(graph.passes.begin(), graph.passes.end(), [](const PassDecl& p) {
             return std::any_of(p.uses.begin(), p.uses.end(), [](const ResourceUse& u) {
-                return u.resource == graph_names::kColor && u.use == Use::color_attachment;
+                return u.resource == graph_names::kColor &&
+                       (u.use == Use::color_attachment || u.use == Use::resolve_target);
             });
         });
         CHECK(draws_color);

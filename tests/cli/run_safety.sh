@@ -245,6 +245,8 @@ case $case in
         || fail "$technique does not say it needs an area light"
     done
     grep -A3 "^shadow.hard\$" "$work/list" | grep -q "requires: a shadow-casting light" || fail "shadow.hard says no requirement"
+    grep -A3 "^grass.geometry\$" "$work/list" | grep -q "requires: renders 'grass' populations" || fail "grass.geometry hides its population"
+    grep -A12 '^population kind "grass"' "$work/list" | grep -q "^    cells_x " || fail "list lacks the grass population kind's parameters"
     # Parameter rows: the type and the default start in the same column whatever the name's length.
     [ "$(grep -E '^    [a-z_]+ ' "$work/list" | awk '{ print index($0, " default ") }' | sort -u | wc -l)" -eq 1 ] \
       || fail "the default column drifts"

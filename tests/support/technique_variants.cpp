@@ -4,9 +4,19 @@
 
 namespace canopy::test {
 
-std::vector<TechniqueVariant> technique_variants() {
+std::string family_of(const std::string& technique) { return technique.substr(0, technique.find('.')); }
+
+std::vector<const Technique*> family_techniques(const std::string& family) {
+    std::vector<const Technique*> chosen;
+    for (const Technique* t : TechniqueRegistry::instance().all())
+        if (family_of(t->name()) == family) chosen.push_back(t);
+    return chosen;
+}
+
+std::vector<TechniqueVariant> technique_variants(const std::string& family) {
     std::vector<TechniqueVariant> all;
-    for (const Technique* t : TechniqueRegistry::instance().all()) all.push_back({t->name(), {}});
+    for (const Technique* t : TechniqueRegistry::instance().all())
+        if (family.empty() || family_of(t->name()) == family) all.push_back({t->name(), {}});
     const std::vector<TechniqueVariant> extra = {
         {"shadow.hard", {{"depth_format", std::string("d16")}}},
         {"shadow.pcf", {{"kernel", 5LL}, {"pattern", std::string("poisson")}}},
@@ -22,8 +32,11 @@ std::vector<TechniqueVariant> technique_variants() {
         {"shadow.evsm", {{"components", std::string("2")}, {"precision", std::string("fp16")}}},
         {"shadow.msm", {{"precision", std::string("fp16")}, {"moment_bias", 6e-5}}},
         {"shadow.msm", {{"precision", std::string("unorm16")}, {"moment_bias", 6e-5}}},
+        {"grass.geometry", {{"samples", 1LL}, {"coverage", std::string("alpha_test")}}},
+        {"grass.geometry", {{"coverage", std::string("alpha_test")}}},
     };
-    all.insert(all.end(), extra.begin(), extra.end());
+    for (const TechniqueVariant& v : extra)
+        if (family.empty() || family_of(v.technique) == family) all.push_back(v);
     return all;
 }
 

@@ -19,4 +19,27 @@ Scene tiny_scene_under_rect_light(float side, glm::vec3 position) {
     return scene;
 }
 
+Scene tiny_grass_scene() {
+    return parse_scene(R"([scene]
+name = "tiny-grass"
+[camera]
+position = [0, 1.2, 2.0]
+target = [0, 0, 0]
+[[light]]
+type = "directional"
+direction = [-0.3, -1, -0.2]
+casts_shadows = false
+[[object]]
+name = "ground"
+shape = "plane"
+size = [4, 4]
+[[population]]
+name = "grass"
+kind = "grass"
+albedo = [0.2, 0.6, 0.1]
+params = { cells_x = 2, cells_z = 2, blades = 60, density = 0.7 }
+)",
+                       "tiny-grass.toml");
+}
+
 }  // namespace canopy::test

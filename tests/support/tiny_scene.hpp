@@ -12,4 +12,8 @@ Scene tiny_scene();
 // (intensity 30), so that every technique applies, area-light ones included.
 Scene tiny_scene_under_rect_light(float side = 0.2f, glm::vec3 position = glm::vec3(0.0f, 4.0f, 0.0f));
 
+// A 2 x 2-cell grass field (kind "grass", 60 blades a patch, density 0.7) on a ground plane under
+// a directional sun that casts no shadows, seen from 1.2 up: the scene grass techniques render.
+Scene tiny_grass_scene();
+
 }  // namespace canopy::test

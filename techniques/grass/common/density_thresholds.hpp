@@ -4,6 +4,7 @@
 // ]0, 1] at L925 and [0, 1] at L930: canopy takes ]0, 1], so density 0 draws nothing).
 #pragma once
 
+#include "../shaders/grass_density.h"
 #include <glm/glm.hpp>
 
 #include <cstdint>
@@ -33,7 +34,7 @@ struct ThresholdParams {
 
 // Whether a blade with this threshold is drawn at this local density (Lemme eq 5.22:
 // kept when bdth <= ld; Boulanger L925: "strictly greater ... eliminated").
-inline bool drawn_at_density(float threshold, float density) { return threshold <= density; }
+inline bool drawn_at_density(float threshold, float density) { return shader::grass_blade_drawn(threshold, density); }
 
 // Periodic 2D gradient (Perlin) noise over the unit square, `periods` lattice cells across, so
 // noise(p) == noise(p + (1, 0)) == noise(p + (0, 1)). Roughly in [-1, 1], 0 at lattice points.

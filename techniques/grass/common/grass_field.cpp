@@ -1,6 +1,7 @@
 #include "grass_field.hpp"
 
 #include "../shaders/cell_mirroring.h"
+#include "../shaders/grass_density.h"
 #include "density_thresholds.hpp"
 
 #include <fmt/format.h>
@@ -36,24 +37,36 @@ float DensityMap::sample(glm::vec2 uv) const {
     return bottom + (top - bottom) * fy;
 }
 
+glm::vec2 mirror_signs(const GrassField& field, glm::ivec2 cell) {
+    return field.mirror ? shader::grass_mirror_signs(cell, field.mirror_seed) : glm::vec2(1.0f);
+}
+
 glm::vec3 field_point(const GrassField& field, glm::ivec2 cell, glm::vec3 patch_point) {
-    return cell_point(field, cell, shader::grass_mirror_signs(cell, field.mirror_seed), patch_point);
+    return cell_point(field, cell, mirror_signs(field, cell), patch_point);
+}
+
+glm::vec4 cell_corner_densities(const GrassField& field, glm::ivec2 cell) {
+    const glm::vec2 cells(field.cells);
+    const auto at = [&](int dx, int dz) {
+        return field.density.sample({float(cell.x + dx) / cells.x, float(cell.y + dz) / cells.y});
+    };
+    return {at(0, 0), at(1, 0), at(0, 1), at(1, 1)};
 }
 
 uint64_t for_each_drawn_blade(const GrassField& field, const BladePatch& patch,
                               const std::function<void(const FieldBlade&)>& visit) {
     uint64_t drawn = 0;
-    const glm::vec2 extent = field.cell_size * glm::vec2(field.cells);
     for (uint32_t z = 0; z < field.cells.y; ++z)
         for (uint32_t x = 0; x < field.cells.x; ++x) {
             const glm::ivec2 cell{int(x), int(z)};
-            const glm::vec2 signs = shader::grass_mirror_signs(cell, field.mirror_seed);
+            const glm::vec2 signs = mirror_signs(field, cell);
+            const glm::vec4 corners = shader::grass_patch_corner_densities(cell_corner_densities(field, cell), signs);
             for (uint32_t i = 0; i < patch.blades.size(); ++i) {
                 FieldBlade b;
                 b.cell = cell;
                 b.blade = i;
                 b.root = cell_point(field, cell, signs, patch.blades[i].root);
-                b.density = field.density.sample({(b.root.x - field.origin.x) / extent.x, (b.root.z - field.origin.z) / extent.y});
+                b.density = shader::grass_root_density(corners, {patch.blades[i].root.x, patch.blades[i].root.z});
                 if (!drawn_at_density(patch.blades[i].threshold, b.density)) continue;
                 ++drawn;
                 if (visit) visit(b);

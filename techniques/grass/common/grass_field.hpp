@@ -25,6 +25,7 @@ struct GrassField {
     glm::uvec2 cells{32, 32};  // Lemme's Table 7.1 field (L1022)
     float cell_size = 1.0f;    // world units a cell (and a patch) is wide
     glm::vec3 origin{0.0f};    // the corner of cell (0, 0)
+    bool mirror = true;        // false: every cell shows the patch as it is
     uint32_t mirror_seed = 1;
     DensityMap density;
 };
@@ -34,11 +35,19 @@ struct GrassField {
 // blades are two-sided.)
 glm::vec3 field_point(const GrassField& field, glm::ivec2 cell, glm::vec3 patch_point);
 
+// The cell's mirror signs (shaders/cell_mirroring.h), or (1, 1) when the field does not mirror.
+glm::vec2 mirror_signs(const GrassField& field, glm::ivec2 cell);
+
+// The density map's values at the four corners of `cell`, in world order: (x0, z0), (x1, z0),
+// (x0, z1), (x1, z1). Within the cell a blade's density is their bilinear blend at its root
+// (shaders/grass_density.h), so a map finer than the cells is seen only at cell corners.
+glm::vec4 cell_corner_densities(const GrassField& field, glm::ivec2 cell);
+
 struct FieldBlade {
     glm::ivec2 cell{0};
     uint32_t blade = 0;      // index in the patch
     glm::vec3 root{0.0f};    // world
-    float density = 1.0f;    // the map's value at the root
+    float density = 1.0f;    // at the root: the bilinear blend of the cell's corner densities
 };
 
 // Calls `visit` for every blade the field draws (threshold <= density at its world root), cell

@@ -3,6 +3,7 @@
 // maps, and the blades a field draws.
 #include "../common/grass_field.hpp"
 #include "../shaders/cell_mirroring.h"
+#include "../shaders/grass_density.h"
 
 #include <doctest/doctest.h>
 
@@ -120,4 +121,66 @@ TEST_CASE("grass field: it draws the blades whose threshold the density reaches"
     });
     CHECK(double(drawn) / double(all) == doctest::Approx(0.5).epsilon(0.05));
     CHECK(double(far_side) / double(near_side) == doctest::Approx(3.0).epsilon(0.1));  // mean 3/4 against 1/4
+}
+
+TEST_CASE("grass field: a blade's density is its cell's corner values blended at its world root, whatever the mirror") {
+    GrassField field;
+    field.cells = {6, 5};
+    field.cell_size = 0.7f;
+    field.origin = {1.0f, 0.0f, -2.0f};
+    field.mirror_seed = 9;
+    field.density = {5, 3, {}};
+    for (uint32_t i = 0; i < 15; ++i) field.density.values.push_back(float((i * 7) % 11) / 10.0f);
+    BladePatchParams p;
+    p.blades = 200;
+    p.subdivisions = 0;
+    const BladePatch patch = generate_blade_patch(p);
+    int mirrored_both = 0, checked = 0;
+    for_each_drawn_blade(field, patch, [&](const FieldBlade& b) {
+        // Independently of the patch-order permutation: world corners, world position in the cell.
+        const glm::vec4 world = cell_corner_densities(field, b.cell);
+        const float fx = (b.root.x - field.origin.x) / field.cell_size - float(b.cell.x);
+        const float fz = (b.root.z - field.origin.z) / field.cell_size - float(b.cell.y);
+        const float near_edge = world.x + (world.y - world.x) * fx, far_edge = world.z + (world.w - world.z) * fx;
+        CHECK(b.density == doctest::Approx(near_edge + (far_edge - near_edge) * fz).epsilon(1e-4));
+        const glm::vec2 s = mirror_signs(field, b.cell);
+        mirrored_both += s.x < 0.0f && s.y < 0.0f;
+        ++checked;
+    });
+    CHECK(checked > 1000);
+    CHECK(mirrored_both > 0);
+    // The corners are the map's values at the cell's corners (bilinear between texel centres).
+    const glm::vec4 c = cell_corner_densities(field, {2, 1});
+    CHECK(c.x == doctest::Approx(field.density.sample({2.0f / 6.0f, 1.0f / 5.0f})));
+    CHECK(c.w == doctest::Approx(field.density.sample({3.0f / 6.0f, 2.0f / 5.0f})));
+}
+
+TEST_CASE("grass density: the blend stays between its corners, clamps outside the patch, and 0 and 1 thin all or none") {
+    using shader::grass_blade_drawn;
+    using shader::grass_root_density;
+    const glm::vec4 corners{0.0f, 1.0f, 0.25f, 0.5f};
+    for (float x : {-1e30f, -1.0f, 0.0f, 0.3f, 1.0f, 7.0f, 1e30f})
+        for (float z : {-1e30f, 0.0f, 0.5f, 1.0f, 1e30f}) {
+            const float d = grass_root_density(corners, {x, z});
+            CHECK(std::isfinite(d));
+            CHECK(d >= 0.0f);
+            CHECK(d <= 1.0f);
+        }
+    CHECK(grass_root_density(corners, {0.0f, 0.0f}) == 0.0f);
+    CHECK(grass_root_density(corners, {1.0f, 0.0f}) == 1.0f);
+    CHECK(grass_root_density(corners, {0.0f, 1.0f}) == 0.25f);
+    CHECK(grass_root_density(corners, {1.0f, 1.0f}) == 0.5f);
+    CHECK(grass_root_density(corners, {-3.0f, 5.0f}) == 0.25f);  // clamped to the patch's corner
+    CHECK(grass_root_density(corners, {0.5f, 0.5f}) == doctest::Approx(0.4375f));
+    // Thresholds lie in ]0, 1]: density 0 draws none, 1 draws all, at the ends of the range too.
+    for (float t : {1.0f / 16777216.0f, 0.5f, 1.0f}) {
+        CHECK_FALSE(grass_blade_drawn(t, 0.0f));
+        CHECK(grass_blade_drawn(t, 1.0f));
+    }
+    // Each mirror permutes the corners so that patch point (0, 0) reads the world corner it lands on.
+    const glm::vec4 world{1.0f, 2.0f, 3.0f, 4.0f};
+    CHECK(shader::grass_patch_corner_densities(world, {1.0f, 1.0f}) == world);
+    CHECK(shader::grass_patch_corner_densities(world, {-1.0f, 1.0f}) == glm::vec4(2.0f, 1.0f, 4.0f, 3.0f));
+    CHECK(shader::grass_patch_corner_densities(world, {1.0f, -1.0f}) == glm::vec4(3.0f, 4.0f, 1.0f, 2.0f));
+    CHECK(shader::grass_patch_corner_densities(world, {-1.0f, -1.0f}) == glm::vec4(4.0f, 3.0f, 2.0f, 1.0f));
 }

@@ -5,6 +5,7 @@
 #include "blade_alpha.h"
 #include "blade_curve.h"
 #include "cell_mirroring.h"
+#include "grass_density.h"
 
 layout(local_size_x = 1) in;
 layout(std430, binding = 0) buffer Out { vec4 values[]; };
@@ -17,6 +18,8 @@ void main() {
     values[2] = vec4(grass_mirror_patch_point(vec3(0.2, 0.0, 0.7), s), float(grass_hash(5u)));
     values[3] = vec4(grass_mirror_slice_uv(vec2(3.25, -1.5), s), s);
     vec2 uv = vec2(0.3, 0.6);
+    values[5] = grass_patch_corner_densities(vec4(0.1, 0.2, 0.3, 0.4), s);
+    values[6] = vec4(grass_root_density(values[5], vec2(0.25, 0.75)), grass_blade_drawn(0.5, 0.4) ? 1.0 : 0.0, 0.0, 0.0);
     values[4] = vec4(blade_half_width(uv.y, 2.0), blade_opaque(uv, 2.0) ? 1.0 : 0.0, blade_alpha(uv, 2.0, 0.01),
                      blade_coverage(2.0));
 }

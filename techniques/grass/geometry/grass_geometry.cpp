@@ -1,0 +1,111 @@
+// grass.geometry: the field's blades drawn as geometry (Lemme ch. 4, Boulanger §4.2): every
+// cell's mirrored copy of the blade patch in one instanced draw, thinned in the vertex shader,
+// the outline cut by an alpha test or alpha-to-coverage with MSAA.
+#include "core/registry.hpp"
+#include "graph/pass_context.hpp"
+#include "render/frame_uniforms.hpp"
+
+#include "grass_geometry_params.h"
+#include "../common/grass_population.hpp"
+
+#include "shaders/grass/grass_blades_frag.h"
+#include "shaders/grass/grass_blades_vert.h"
+#include "shaders/grass/grass_ground_frag.h"
+#include "shaders/harness/scene_vert.h"
+
+#include <fmt/format.h>
+
+namespace canopy {
+namespace {
+
+constexpr VkFormat kColorFormat = VK_FORMAT_R32G32B32A32_SFLOAT;  // as the camera target
+
+ResourceUse use(const std::string& resource, Use how, int binding = -1) { return {resource, how, binding}; }
+ResourceUse cleared(const std::string& image, Use how, std::array<float, 4> clear, bool store = true) {
+    ResourceUse u{image, how};
+    u.clear = clear;
+    u.store = store;
+    return u;
+}
+
+class GrassGeometry final : public Technique {
+public:
+    std::string name() const override { return "grass.geometry"; }
+    std::string summary() const override {
+        return "grass as blades: instanced patches per cell, alpha test or alpha-to-coverage with MSAA";
+    }
+    std::string paper() const override { return "Lemme 2012 ch. 4 and 6; Boulanger 2008 §4.2"; }
+    std::vector<ParamSpec> params() const override { return shader::GrassGeometryParams::specs(); }
+    ErrorColumns error_columns() const override { return {}; }  // image errors only: no lit pass of canopy's
+
+    std::optional<ParamConflict> conflict(const ParamSet& params) const override {
+        const long long samples = params.integer("samples");
+        if (samples != 1 && samples != 4)
+            return ParamConflict{{"samples"}, fmt::format("{} MSAA samples: lavapipe offers 1 and 4 only", samples),
+                                 "samples = 1 or samples = 4"};
+        if (samples == 1 && params.choice("coverage") == "alpha_to_coverage")
+            return ParamConflict{{"coverage", "samples"},
+                                 "alpha-to-coverage with one sample per pixel is an alpha test with wider blades",
+                                 "coverage = \"alpha_test\" for samples = 1, or samples = 4"};
+        return std::nullopt;
+    }
+
+    FrameGraph graph(const ParamSet& params) const override {
+        const uint32_t samples = uint32_t(params.integer("samples"));
+        const auto block = shader::GrassGeometryParams::from(params);
+        const bool to_coverage = block.coverage == shader::GRASS_COVERAGE_ALPHA_TO_COVERAGE;
+        FrameGraph g;
+        g.needs.populations = {grass::kGrassPopulationKind};
+        g.shader_params.set_block(block);
+        g.report["coverage"] = to_coverage ? "alpha-to-coverage" : "alpha-test";
+        g.report["samples"] = std::to_string(samples);
+
+        const std::array<float, 4> far_depth{1.0f, 0.0f, 0.0f, 0.0f}, background{0.0f, 0.0f, 0.0f, 1.0f};
+        PassDecl blades{.name = "blades", .kind = PassKind::raster};
+        blades.push_constant_bytes = sizeof(DrawConstants);
+        blades.uses = {use(graph_names::kFrameUniforms, Use::uniform, 0)};
+        if (samples > 1) {
+            g.images.push_back({.name = "msaa_color", .format = kColorFormat, .extent = ImageExtent::screen(),
+                                .samples = samples});
+            g.images.push_back({.name = "msaa_depth", .format = VK_FORMAT_D32_SFLOAT, .extent = ImageExtent::screen(),
+                                .samples = samples});
+            blades.uses.push_back(cleared("msaa_color", Use::color_attachment, background));
+            blades.uses.push_back(cleared("msaa_depth", Use::depth_attachment, far_depth, false));
+            blades.uses.push_back(use(graph_names::kColor, Use::resolve_target));
+        } else {
+            blades.uses.push_back(cleared(graph_names::kColor, Use::color_attachment, background));
+            blades.uses.push_back(cleared(graph_names::kDepth, Use::depth_attachment, far_depth));
+        }
+        RasterState ground;
+        ground.vertex_spirv = scene_vert;
+        ground.fragment_spirv = grass_ground_frag;
+        RasterState field;
+        field.vertex_spirv = grass_blades_vert;
+        field.fragment_spirv = grass_blades_frag;
+        field.vertices = VertexLayout::population();
+        field.alpha_to_coverage = to_coverage && samples > 1;
+        blades.settings = fmt::format("samples={} coverage={}", samples, g.report["coverage"]);
+        blades.record = [ground, field](PassContext& pc) {
+            pc.bind(pc.raster_pipeline(ground));
+            pc.draw_scene(SceneFilter::all);
+            pc.bind(pc.raster_pipeline(field));
+            for (const GeneratedPopulation& population : pc.populations()) pc.draw_population(population.name);
+        };
+        g.passes.push_back(std::move(blades));
+        if (samples > 1) {
+            // The camera depth is not resolved from the multisampled pass; cleared (far) so that
+            // nothing reads undefined memory. Image errors do not use it.
+            PassDecl depth{.name = "clear_depth", .kind = PassKind::raster};
+            depth.uses = {cleared(graph_names::kDepth, Use::depth_attachment, far_depth)};
+            depth.settings = "clear";
+            depth.record = [](PassContext&) {};
+            g.passes.push_back(std::move(depth));
+        }
+        return g;
+    }
+};
+
+RegisterTechnique<GrassGeometry> registered;
+
+}  // namespace
+}  // namespace canopy

@@ -1,0 +1,23 @@
+// grass.geometry's parameters, written once for C++ and GLSL (harness/shaders/param_block.h).
+#ifndef CANOPY_GRASS_GEOMETRY_PARAMS_H
+#define CANOPY_GRASS_GEOMETRY_PARAMS_H
+
+#include "param_block.h"
+
+#define GRASS_GEOMETRY_PARAMS(SHADER, PLAN, DERIVED)                                                        \
+    PLAN(integer, samples, (4, 1, 4),                                                                       \
+         "MSAA samples of the blade pass: 1 or 4 (lavapipe's; Boulanger used >= 6 on a GPU, L1314)")         \
+    SHADER(choice, coverage, ("alpha_to_coverage", {"alpha_test", "alpha_to_coverage"}),                   \
+           "how the blade outline cuts: a hard alpha test, or a smooth alpha turned into sample coverage")
+
+CANOPY_BEGIN_NAMESPACE
+CANOPY_CONST int GRASS_COVERAGE_ALPHA_TEST = 0;
+CANOPY_CONST int GRASS_COVERAGE_ALPHA_TO_COVERAGE = 1;
+CANOPY_PARAM_BLOCK(GrassGeometryParams, GRASS_GEOMETRY_PARAMS)
+CANOPY_END_NAMESPACE
+
+#ifndef __cplusplus
+#define TECHNIQUE_PARAMS GrassGeometryParams
+#endif
+
+#endif

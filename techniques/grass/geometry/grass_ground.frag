@@ -1,0 +1,13 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// The scene's own objects (the ground) in a grass pass: the family's shading, fully opaque.
+#include "grass_geometry_params.h"
+#include "frame_uniforms.glsl"
+#include "draw_constants.glsl"
+#include "grass_shading.glsl"
+
+layout(location = 0) in vec3 world_position;
+layout(location = 1) in vec3 world_normal;
+layout(location = 0) out vec4 out_color;
+
+void main() { out_color = grass_lit_output(draw.albedo.rgb, world_position, world_normal, 1.0); }

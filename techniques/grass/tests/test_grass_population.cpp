@@ -1,0 +1,227 @@
+// The grass field as a scene population (common/grass_population.hpp): read from a scene's
+// [[population]] with kind = "grass", its copies are the field's cells (placed and mirrored as
+// field_point places them), and the reference's alpha test thins and cuts exactly the blades
+// for_each_drawn_blade enumerates and blade_alpha.h outlines. Each breakage of the placement,
+// the mirror's corner permutation or the thinning fails a check here.
+#include "../common/grass_population.hpp"
+#include "../shaders/blade_alpha.h"
+
+#include "config/scene_config.hpp"
+#include "scene/geometry.hpp"
+#include "support/config_error_of.hpp"
+
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <string>
+
+using namespace canopy;
+using namespace canopy::grass;
+
+namespace {
+
+const char* kScene = R"([scene]
+name = "lawn"
+[[light]]
+type = "directional"
+direction = [0, -1, 0]
+[[object]]
+name = "ground"
+shape = "plane"
+size = [8, 8]
+[[population]]
+name = "lawn"
+kind = "grass"
+albedo = [0.2, 0.6, 0.1]
+params = { cells_x = 3, cells_z = 2, blades = 50, cell_size = 1.5, centre_x = 0.5 }
+)";
+
+std::string with_params(const std::string& params) {
+    std::string text = kScene;
+    const size_t at = text.find("params = {");
+    return text.substr(0, at) + "params = { " + params + " }\n";
+}
+
+GrassPopulationSpec small_spec() {
+    GrassPopulationSpec spec;
+    spec.patch.blades = 80;
+    spec.patch.subdivisions = 2;
+    spec.field.cells = {5, 4};
+    spec.field.cell_size = 0.8f;
+    spec.field.origin = {-2.0f, 0.1f, -1.6f};
+    spec.field.mirror_seed = 3;
+    // A ramp across x and a step across z, so every mirror permutes the corners differently.
+    spec.field.density.width = 6;
+    spec.field.density.height = 2;
+    for (uint32_t z = 0; z < 2; ++z)
+        for (uint32_t x = 0; x < 6; ++x) spec.field.density.values.push_back(0.1f + 0.15f * float(x) + 0.05f * float(z));
+    return spec;
+}
+
+// A point well inside blade b's outline on its first segment's first triangle: barycentrics
+// for the strip point u = 1/2, just above the root.
+struct Inside {
+    uint32_t triangle;
+    float u, v;
+};
+Inside inside_blade(uint32_t blade, uint32_t triangles_per_blade) {
+    // Triangle 0 of a segment is (left0, right0, left1): u = 1/2 at a small v is 0.5 (right0) + a
+    // small share of left1.
+    return {blade * triangles_per_blade, 0.45f, 0.05f};
+}
+
+}  // namespace
+
+TEST_CASE("grass population: a scene's kind = \"grass\" generates one copy per cell from typed parameters") {
+    const Scene scene = parse_scene(kScene, "lawn.toml");
+    REQUIRE(scene.populations.size() == 1);
+    const Population& population = scene.populations[0];
+    CHECK(population.kind == "grass");
+    REQUIRE(population.family);
+    CHECK(population.family->instances.size() == 6);
+    CHECK(population.params.integer("blades") == 50);
+    CHECK(population.prototype.material.albedo == glm::vec3(0.2f, 0.6f, 0.1f));
+    // 50 blades of 10 triangles (4 subdivisions) and their per-vertex data.
+    CHECK(population.family->prototype.triangle_count() == 500);
+    CHECK(population.family->vertex_data.size() == population.family->prototype.vertices.size());
+    // The field is centred on (0.5, 0): 3 x 1.5 wide in x, 2 x 1.5 in z.
+    const std::vector<TriangleMesh> meshes = build_scene_meshes(scene);
+    const Bounds bounds = scene_bounds(scene, meshes);
+    CHECK(bounds.min.x == doctest::Approx(-4.0f));  // the ground plane
+    // Roots lie in the field's rectangle, [-1.75, 2.75] x [-1.5, 1.5]; blades lean out of it by less than
+    // their height (at most 0.35 patch units of 1.5).
+    Bounds roots, blades;
+    for (const PopulationInstance& copy : population.family->instances)
+        for (size_t i = 0; i < population.family->prototype.vertices.size(); ++i) {
+            const glm::vec3 p(copy.model * glm::vec4(population.family->prototype.vertices[i].position, 1.0f));
+            blades.extend(p);
+            const glm::vec4 root = population.family->vertex_data[i].data[1];
+            roots.extend(glm::vec3(copy.model * glm::vec4(root.x, 0.0f, root.y, 1.0f)));
+        }
+    CHECK(roots.min.x >= -1.75f);
+    CHECK(roots.max.x <= 2.75f);
+    CHECK(roots.min.z >= -1.5f);
+    CHECK(roots.max.z <= 1.5f);
+    CHECK(roots.max.x - roots.min.x > 4.4f);  // and fill it
+    CHECK(roots.max.z - roots.min.z > 2.9f);
+    CHECK(blades.min.x > -1.75f - 0.525f);
+    CHECK(blades.max.y <= 0.35f * 1.5f + 1e-5f);
+    CHECK(blades.min.y == doctest::Approx(0.0f));
+}
+
+TEST_CASE("grass population: bad parameters name the line and the fix") {
+    SUBCASE("an unknown parameter") {
+        const std::string text = with_params("cells_x = 2, bladez = 4");
+        const auto error = test::config_error_of([&] { parse_scene(text, "lawn.toml"); });
+        REQUIRE(error);
+        CHECK(error->line() == 1 + std::count(text.begin(), text.begin() + long(text.find("bladez")), '\n'));
+        CHECK(std::string(error->what()).find("bladez") != std::string::npos);
+    }
+    SUBCASE("out of range") {
+        const auto error = test::config_error_of([] { parse_scene(with_params("density = 1.5"), "lawn.toml"); });
+        REQUIRE(error);
+        CHECK(std::string(error->what()).find("density") != std::string::npos);
+    }
+    SUBCASE("each in range, together impossible") {
+        const auto error =
+            test::config_error_of([] { parse_scene(with_params("height_min = 0.5, height_max = 0.2"), "lawn.toml"); });
+        REQUIRE(error);
+        CHECK(std::string(error->what()).find("height") != std::string::npos);
+        CHECK(std::string(error->what()).find("cannot be generated") != std::string::npos);
+    }
+    SUBCASE("an unknown kind lists the kinds") {
+        std::string text = kScene;
+        text.replace(text.find("kind = \"grass\""), 14, "kind = \"gras\"");
+        const auto error = test::config_error_of([&] { parse_scene(text, "lawn.toml"); });
+        REQUIRE(error);
+        CHECK(error->hint().find("did you mean 'grass'") != std::string::npos);
+        CHECK(error->hint().find("scatter") != std::string::npos);
+    }
+}
+
+TEST_CASE("grass population: the copies place every blade where field_point does, mirrored per cell") {
+    const GrassPopulationSpec spec = small_spec();
+    const FamilyPopulation population = generate_grass_population(spec);
+    const BladePatch patch = generate_blade_patch(spec.patch);
+    REQUIRE(population.instances.size() == 20);
+    std::set<std::pair<float, float>> signs_seen;
+    for (uint32_t z = 0; z < spec.field.cells.y; ++z)
+        for (uint32_t x = 0; x < spec.field.cells.x; ++x) {
+            const glm::ivec2 cell{int(x), int(z)};
+            const PopulationInstance& copy = population.instances[z * spec.field.cells.x + x];
+            const glm::vec2 s = mirror_signs(spec.field, cell);
+            signs_seen.insert({s.x, s.y});
+            for (size_t i = 0; i < patch.vertices.size(); i += 7) {
+                const glm::vec3 expected = field_point(spec.field, cell, patch.vertices[i].position);
+                const glm::vec3 placed(copy.model * glm::vec4(patch.vertices[i].position, 1.0f));
+                CHECK(glm::length(placed - expected) < 1e-5f);
+            }
+            // The normal matrix is the model's inverse transpose.
+            const glm::mat3 normal(copy.normal_matrix[0], copy.normal_matrix[1], copy.normal_matrix[2]);
+            const glm::mat3 expected = glm::transpose(glm::inverse(glm::mat3(copy.model)));
+            for (int c = 0; c < 3; ++c) CHECK(glm::length(normal[c] - expected[c]) < 1e-5f);
+        }
+    CHECK(signs_seen.size() == 4);  // every mirror occurs, so each permutation below is exercised
+
+    GrassPopulationSpec plain = spec;
+    plain.field.mirror = false;
+    const FamilyPopulation unmirrored = generate_grass_population(plain);
+    for (const PopulationInstance& copy : unmirrored.instances) {
+        CHECK(copy.model[0][0] > 0.0f);
+        CHECK(copy.model[2][2] > 0.0f);
+    }
+}
+
+TEST_CASE("grass population: the reference thins exactly the blades the field draws and cuts their outline") {
+    const GrassPopulationSpec spec = small_spec();
+    const FamilyPopulation population = generate_grass_population(spec);
+    const BladePatch patch = generate_blade_patch(spec.patch);
+    const uint32_t per_blade = triangles_per_blade(spec.patch.subdivisions);
+    REQUIRE(population.opaque);
+    std::set<std::pair<uint32_t, uint32_t>> drawn;  // (copy, blade)
+    const uint64_t count = for_each_drawn_blade(spec.field, patch, [&](const FieldBlade& b) {
+        drawn.insert({uint32_t(b.cell.y) * spec.field.cells.x + uint32_t(b.cell.x), b.blade});
+    });
+    const uint64_t all = uint64_t(population.instances.size()) * patch.blades.size();
+    CAPTURE(count);
+    CHECK(count > all / 5);  // the map thins some and keeps some
+    CHECK(count < all * 4 / 5);
+    uint64_t agree = 0;
+    for (uint32_t copy = 0; copy < population.instances.size(); ++copy)
+        for (uint32_t blade = 0; blade < patch.blades.size(); ++blade) {
+            const Inside p = inside_blade(blade, per_blade);
+            const bool opaque = population.opaque(copy, p.triangle, p.u, p.v);
+            agree += opaque == (drawn.count({copy, blade}) == 1);
+        }
+    CHECK(agree == all);
+
+    // The outline: a drawn blade is cut outside |u - 1/2| <= (1 - v^k)/2. Triangle 0 of a blade
+    // spans (left0, right0, left1): barycentrics (0.5, 0.5) lie on its left1-right0 edge, and at
+    // the root the strip is full width, so (u weight 1, v 0) = right0 (u = 1) is on the outline;
+    // near the tip the strip narrows to a point.
+    const uint32_t copy = drawn.begin()->first, blade = drawn.begin()->second;
+    const uint32_t tip_triangle = blade * per_blade + per_blade - 2;  // the last segment's first triangle
+    CHECK(population.opaque(copy, blade * per_blade, 0.45f, 0.05f));
+    CHECK_FALSE(population.opaque(copy, tip_triangle, 0.02f, 0.9f));   // u ~ 0 near the tip: outside
+    // The albedo scale is the blade's colour, in [1 - v_b, 1] * [1 - v_v, 1].
+    REQUIRE(population.albedo_scale);
+    const float scale = population.albedo_scale(copy, blade * per_blade, 0.3f, 0.3f);
+    CHECK(scale <= 1.0f);
+    CHECK(scale >= (1.0f - spec.patch.blade_colour_variation) * (1.0f - spec.patch.vertex_colour_variation) - 1e-6f);
+}
+
+TEST_CASE("grass population: density 0 draws nothing, density 1 everything, at any mirror") {
+    for (float density : {0.0f, 1.0f}) {
+        GrassPopulationSpec spec = small_spec();
+        spec.field.density = DensityMap{1, 1, {density}};
+        const FamilyPopulation population = generate_grass_population(spec);
+        const uint32_t per_blade = triangles_per_blade(spec.patch.subdivisions);
+        uint32_t opaque = 0;
+        for (uint32_t copy = 0; copy < population.instances.size(); ++copy)
+            for (uint32_t blade = 0; blade < spec.patch.blades; ++blade)
+                opaque += population.opaque(copy, blade * per_blade, 0.45f, 0.05f);
+        CHECK(opaque == (density == 0.0f ? 0u : uint32_t(population.instances.size()) * spec.patch.blades));
+    }
+}
