@@ -46,6 +46,7 @@ RunRecord run_of_two() {
     run.environment.git_commit = "abc";
     run.cases.push_back(timed_case("a", {"shadow_map", "lit"}, {}));
     run.cases.push_back(timed_case("b", {"cull", "lit"}, {"lod_select"}));
+    run.cases.back().load = {{{"bake", 3.5}}, 3.5, 4.25, 1024};
     return run;
 }
 
@@ -110,6 +111,9 @@ TEST_CASE("results.csv: one cell under every header, pass families per name the 
     CHECK(b[size_t(column("record_cpu_ms_median"))] == "0.0625");
     CHECK(b[size_t(column("timing_check_gap_ms"))] == "1.5");  // 2.75 - 1.25: beyond 0.5 ms
     CHECK(b[size_t(column("timing_check_agrees"))] == "0");
+    CHECK(a[size_t(column("load_gpu_ms"))].empty());  // case a has no load phase
+    CHECK(b[size_t(column("load_gpu_ms"))] == "3.5");
+    CHECK(b[size_t(column("load_wall_ms"))] == "4.25");
     CHECK(header.back() == "commit");
     CHECK(a.back() == "\"abc\"");
 }

@@ -120,6 +120,7 @@ RunRecord awkward_record(const RunIdentity& id) {
     g.chunks = {chunk, chunk};
     run.groups.push_back(g);
     c.memory = {262144, 100, 7};
+    c.load = {{{"bake_front", 0.25}, {"bake_side", 1.0 / 3.0}}, 0.6, 0.75, 4096};
     c.triangles = 14;
     c.shadow_sampler = "compare";
     ImageMetrics m{};

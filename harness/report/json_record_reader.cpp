@@ -127,6 +127,14 @@ CaseResult read_case(const json& j) {
             for (const json& pass : f.at("passes")) frame.passes.push_back(read_series(pass));
             c.path_frames.push_back(std::move(frame));
         }
+    if (j.contains("load")) {  // absent in results.json written before the load phase was recorded
+        const json& load = j.at("load");
+        for (const json& pass : load.at("passes"))
+            c.load.pass_gpu_ms.emplace_back(pass.at("name").get<std::string>(), pass.at("gpu_ms").get<double>());
+        c.load.gpu_ms = load.at("gpu_ms").get<double>();
+        c.load.wall_ms = load.at("wall_ms").get<double>();
+        c.load.uploaded_bytes = load.at("uploaded_bytes").get<uint64_t>();
+    }
     const json& memory = j.at("memory_bytes");
     c.memory = {memory.at("technique").get<uint64_t>(), memory.at("targets").get<uint64_t>(),
                 memory.at("scene").get<uint64_t>()};

@@ -126,6 +126,13 @@ nlohmann::json camera_path_json(const std::optional<CameraPath>& path) {
     return {{"frames", path->frames}, {"poses", poses}};
 }
 
+// The load phase: each pass's GPU time, in order, and the phase's totals.
+nlohmann::json load_json(const CaseResult::LoadPhase& load) {
+    nlohmann::json passes = nlohmann::json::array();
+    for (const auto& [name, ms] : load.pass_gpu_ms) passes.push_back({{"name", name}, {"gpu_ms", ms}});
+    return {{"passes", passes}, {"gpu_ms", load.gpu_ms}, {"wall_ms", load.wall_ms}, {"uploaded_bytes", load.uploaded_bytes}};
+}
+
 nlohmann::json case_json(const CaseResult& c) {
     nlohmann::json params = nlohmann::json::object();
     for (const auto& [name, value] : c.params) params[name] = param_json(value);
@@ -152,6 +159,7 @@ nlohmann::json case_json(const CaseResult& c) {
               {"timing_check", timing_check_json(c.timing_check)},
               {"path_frames", path_frames_json(c.path_frames)},
               {"sample_start_s", c.sample_start_s}}},
+            {"load", load_json(c.load)},
             {"memory_bytes",
              {{"technique", c.memory.technique_bytes}, {"targets", c.memory.target_bytes}, {"scene", c.memory.scene_bytes}}},
             {"triangles", c.triangles},

@@ -205,6 +205,9 @@ std::vector<ResultColumn> make_columns() {
     }
     columns.push_back(pass_family("cpu passes", &CaseResult::cpu_passes, "_cpu"));
     columns.push_back(csv_only("record_cpu_ms_median", [](R, C c) { return full(c.record_cpu.stats.median); }));
+    // The load phase, run once before the frames (bakes, uploads): its GPU time, and its wall time.
+    columns.push_back(csv_only("load_gpu_ms", [](R, C c) { return c.load.pass_gpu_ms.empty() ? "" : full(c.load.gpu_ms); }));
+    columns.push_back(csv_only("load_wall_ms", [](R, C c) { return c.load.pass_gpu_ms.empty() ? "" : full(c.load.wall_ms); }));
     columns.push_back(csv_only("timing_check_gap_ms", [](R, C c) {
         return c.timing_check.checked ? full(c.timing_check.gap_ms) : "";
     }));

@@ -54,6 +54,15 @@ struct CaseResult {
         std::vector<TimingSeries> passes;
     };
     std::vector<PathFrame> path_frames;
+    // The load phase (run once, when the renderer is made, before any frame): its GPU passes'
+    // times (a bake, an upload), its GPU and wall time and the bytes it uploaded; empty passes
+    // for a technique without load passes.
+    struct LoadPhase {
+        std::vector<std::pair<std::string, double>> pass_gpu_ms;
+        double gpu_ms = 0, wall_ms = 0;
+        uint64_t uploaded_bytes = 0;
+    };
+    LoadPhase load;
     size_t group = 0;                  // index into RunRecord::groups
     size_t chunk = 0;                  // the group's chunk whose rounds measured it (the baseline's: the first)
     bool group_baseline = false;       // the group's first case, which the others' ratios divide by

@@ -221,6 +221,14 @@ void build(LiveCase& live, const GpuContext& gpu, const GroupInput& group, const
         live.path = settings.camera_path ? &*settings.camera_path : nullptr;
         live.path_gpu.assign(size_t(live.path_frames()), {});
         live.path_passes.assign(size_t(live.path_frames()), std::vector<std::vector<double>>(live.pass_names.size()));
+        const FrameTiming& load = live.renderer->load_timing();
+        const std::vector<std::string>& load_names = live.renderer->load_pass_names();
+        live.result.load = {};
+        for (size_t i = 0; i < load_names.size() && i < load.pass_gpu_ms.size(); ++i)
+            live.result.load.pass_gpu_ms.emplace_back(load_names[i], load.pass_gpu_ms[i]);
+        live.result.load.gpu_ms = load.gpu_ms;
+        live.result.load.wall_ms = load.wall_ms;
+        live.result.load.uploaded_bytes = load.uploaded_bytes;
         live.result.memory = live.renderer->memory();
         live.result.triangles = live.renderer->triangle_count();
         live.result.shadow_sampler = live.renderer->shadow_sampler();
