@@ -105,8 +105,14 @@ public:
         ex_.scene_.draw(commands_, binding().layout, filter == SceneFilter::shadow_casters);
     }
     std::span<const GeneratedPopulation> populations() const override { return ex_.scene_.populations(); }
-    void draw_population(const std::string& name) override {
-        ex_.scene_.draw_population(commands_, binding().layout, name);
+    void draw_population(const std::string& name, uint32_t max_copies) override {
+        ex_.scene_.draw_population(commands_, binding().layout, name, max_copies);
+    }
+    void draw_over_population(const std::string& name, std::span<const std::string> vertex_buffers,
+                              uint32_t vertex_count) override {
+        std::vector<VkBuffer> buffers;
+        for (const std::string& b : vertex_buffers) buffers.push_back(ex_.resources_->buffer(b).handle());
+        ex_.scene_.draw_over_population(commands_, binding().layout, name, buffers, vertex_count);
     }
     void draw(std::span<const std::string> vertex_buffers, uint32_t vertex_count, uint32_t instance_count) override {
         bind_vertex_buffers(vertex_buffers);

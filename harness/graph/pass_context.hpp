@@ -39,7 +39,14 @@ public:
     // Every copy of population `name` in one instanced draw, with VertexLayout::population()
     // (harness/shaders/population.vert); pushes DrawConstants (identity model, the prototype's
     // albedo), so the pass declares sizeof(DrawConstants) push-constant bytes like draw_scene.
-    virtual void draw_population(const std::string& name) = 0;
+    // `max_copies`: only the first copies (one, to bake the prototype, say).
+    virtual void draw_population(const std::string& name, uint32_t max_copies = UINT32_MAX) = 0;
+    // Geometry the technique owns drawn once per copy of population `name` (billboards, impostor
+    // boxes): its `vertex_buffers` at bindings 0..n-1, `vertex_count` vertices per copy, and the
+    // copies' PopulationInstance records per instance at binding n
+    // (VertexLayout::population_copies); pushes DrawConstants like draw_population.
+    virtual void draw_over_population(const std::string& name, std::span<const std::string> vertex_buffers,
+                                      uint32_t vertex_count) = 0;
     // Geometry the technique owns: vertex buffers bound in the pipeline's binding order.
     virtual void draw(std::span<const std::string> vertex_buffers, uint32_t vertex_count, uint32_t instance_count) = 0;
     virtual void draw_indexed(std::span<const std::string> vertex_buffers, const std::string& index_buffer,

@@ -20,14 +20,20 @@ VertexLayout VertexLayout::scene() {
     return layout;
 }
 
+VertexLayout& VertexLayout::population_copies() {
+    const uint32_t stride = uint32_t(sizeof(PopulationInstance));
+    const uint32_t binding = uint32_t(bindings.size());
+    instance_mat4(2, stride, uint32_t(offsetof(PopulationInstance, model)));
+    for (uint32_t c = 0; c < 3; ++c)
+        attributes.push_back({6 + c, binding, VK_FORMAT_R32G32B32A32_SFLOAT,
+                              uint32_t(offsetof(PopulationInstance, normal_matrix)) + 16 * c});
+    attributes.push_back({9, binding, VK_FORMAT_R32G32B32A32_SFLOAT, uint32_t(offsetof(PopulationInstance, data))});
+    return *this;
+}
+
 VertexLayout VertexLayout::population() {
     VertexLayout layout = scene();
-    const uint32_t stride = uint32_t(sizeof(PopulationInstance));
-    layout.instance_mat4(2, stride, uint32_t(offsetof(PopulationInstance, model)));
-    for (uint32_t c = 0; c < 3; ++c)
-        layout.attributes.push_back({6 + c, 1, VK_FORMAT_R32G32B32A32_SFLOAT,
-                                     uint32_t(offsetof(PopulationInstance, normal_matrix)) + 16 * c});
-    layout.attributes.push_back({9, 1, VK_FORMAT_R32G32B32A32_SFLOAT, uint32_t(offsetof(PopulationInstance, data))});
+    layout.population_copies();
     layout.bindings.push_back({uint32_t(sizeof(PopulationVertexData)), false});
     for (uint32_t v = 0; v < 2; ++v)
         layout.attributes.push_back({10 + v, 2, VK_FORMAT_R32G32B32A32_SFLOAT,

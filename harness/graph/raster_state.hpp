@@ -34,6 +34,10 @@ struct VertexLayout {
     // model matrix at locations 2-5, its normal matrix's columns at 6-8, its data at 9; and per
     // vertex (binding 2) the kind's PopulationVertexData (scene/population_kind.hpp) at 10-11.
     static VertexLayout population();
+    // Appends the per-instance binding of a population's copies (PassContext::draw_over_population):
+    // a PopulationInstance per instance, its model matrix at locations 2-5, its normal matrix's
+    // columns at 6-8, its data at 9, as in population().
+    VertexLayout& population_copies();
     // Appends a per-instance binding whose mat4 occupies four vec4 locations from `first_location`
     // at byte `offset` of a `stride`-byte record.
     VertexLayout& instance_mat4(uint32_t first_location, uint32_t stride, uint32_t offset = 0);

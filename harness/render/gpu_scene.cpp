@@ -92,20 +92,36 @@ void GpuScene::draw(VkCommandBuffer commands, VkPipelineLayout layout, bool cast
     }
 }
 
-void GpuScene::draw_population(VkCommandBuffer commands, VkPipelineLayout layout, const std::string& name) const {
-    for (size_t i = 0; i < populations_.size(); ++i) {
-        if (populations_[i].name != name) continue;
-        const PopulationDraw& d = population_draws_[i];
-        if (d.draw.index_count == 0 || d.instance_count == 0) return;
-        const std::array<VkBuffer, 3> buffers{vertices_.handle(), d.instances.handle(), vertex_data_.handle()};
-        const std::array<VkDeviceSize, 3> offsets{0, 0, 0};
-        vkCmdBindVertexBuffers(commands, 0, 3, buffers.data(), offsets.data());
-        vkCmdBindIndexBuffer(commands, indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
-        vkCmdPushConstants(commands, layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
-                           sizeof(DrawConstants), &d.draw.constants);
-        vkCmdDrawIndexed(commands, d.draw.index_count, d.instance_count, d.draw.first_index, d.draw.vertex_offset, 0);
-        return;
-    }
+void GpuScene::draw_population(VkCommandBuffer commands, VkPipelineLayout layout, const std::string& name,
+                               uint32_t max_copies) const {
+    const PopulationDraw& d = population_draw(name);
+    const uint32_t copies = std::min(d.instance_count, max_copies);
+    if (d.draw.index_count == 0 || copies == 0) return;
+    const std::array<VkBuffer, 3> buffers{vertices_.handle(), d.instances.handle(), vertex_data_.handle()};
+    const std::array<VkDeviceSize, 3> offsets{0, 0, 0};
+    vkCmdBindVertexBuffers(commands, 0, 3, buffers.data(), offsets.data());
+    vkCmdBindIndexBuffer(commands, indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
+    vkCmdPushConstants(commands, layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+                       sizeof(DrawConstants), &d.draw.constants);
+    vkCmdDrawIndexed(commands, d.draw.index_count, copies, d.draw.first_index, d.draw.vertex_offset, 0);
+}
+
+void GpuScene::draw_over_population(VkCommandBuffer commands, VkPipelineLayout layout, const std::string& name,
+                                    std::span<const VkBuffer> vertex_buffers, uint32_t vertex_count) const {
+    const PopulationDraw& d = population_draw(name);
+    if (d.instance_count == 0 || vertex_count == 0 || !d.instances.handle()) return;
+    std::vector<VkBuffer> buffers(vertex_buffers.begin(), vertex_buffers.end());
+    buffers.push_back(d.instances.handle());
+    const std::vector<VkDeviceSize> offsets(buffers.size(), 0);
+    vkCmdBindVertexBuffers(commands, 0, uint32_t(buffers.size()), buffers.data(), offsets.data());
+    vkCmdPushConstants(commands, layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+                       sizeof(DrawConstants), &d.draw.constants);
+    vkCmdDraw(commands, vertex_count, d.instance_count, 0, 0);
+}
+
+const GpuScene::PopulationDraw& GpuScene::population_draw(const std::string& name) const {
+    for (size_t i = 0; i < populations_.size(); ++i)
+        if (populations_[i].name == name) return population_draws_[i];
     std::string names;
     for (const GeneratedPopulation& p : populations_) names += (names.empty() ? "'" : ", '") + p.name + "'";
     throw std::logic_error(fmt::format("draw_population: the scene has no population '{}' of the kinds the technique "

@@ -9,6 +9,7 @@
 #include "scene/generated_population.hpp"
 #include "scene/geometry.hpp"
 
+#include <cstdint>
 #include <span>
 #include <string>
 
@@ -39,7 +40,13 @@ public:
     // One instanced draw of every copy of population `name` (VertexLayout::population), pushing
     // DrawConstants with an identity model and the prototype's albedo. Throws std::logic_error
     // naming the populations there are when `name` is not one of them.
-    void draw_population(VkCommandBuffer commands, VkPipelineLayout layout, const std::string& name) const;
+    // `max_copies`: only the first copies (e.g. one, to bake the prototype).
+    void draw_population(VkCommandBuffer commands, VkPipelineLayout layout, const std::string& name,
+                         uint32_t max_copies = UINT32_MAX) const;
+    // Geometry a technique owns (`vertex_buffers` at bindings 0..n-1, `vertex_count` vertices)
+    // drawn once per copy of population `name`, its PopulationInstance records at binding n.
+    void draw_over_population(VkCommandBuffer commands, VkPipelineLayout layout, const std::string& name,
+                              std::span<const VkBuffer> vertex_buffers, uint32_t vertex_count) const;
 
 private:
     struct PopulationDraw {
@@ -47,6 +54,8 @@ private:
         uint32_t instance_count = 0;
         Buffer instances;
     };
+
+    const PopulationDraw& population_draw(const std::string& name) const;  // throws naming the populations there are
 
     Buffer vertices_;
     Buffer indices_;
