@@ -6,12 +6,11 @@
 #include "render/frame_uniforms.hpp"
 
 #include "grass_geometry_params.h"
+#include "../common/grass_passes.hpp"
 #include "../common/grass_population.hpp"
 
 #include "shaders/grass/grass_blades_frag.h"
 #include "shaders/grass/grass_blades_vert.h"
-#include "shaders/grass/grass_ground_frag.h"
-#include "shaders/harness/scene_vert.h"
 
 #include <fmt/format.h>
 
@@ -20,13 +19,9 @@ namespace {
 
 constexpr VkFormat kColorFormat = VK_FORMAT_R32G32B32A32_SFLOAT;  // as the camera target
 
-ResourceUse use(const std::string& resource, Use how, int binding = -1) { return {resource, how, binding}; }
-ResourceUse cleared(const std::string& image, Use how, std::array<float, 4> clear, bool store = true) {
-    ResourceUse u{image, how};
-    u.clear = clear;
-    u.store = store;
-    return u;
-}
+using grass::cleared;
+using grass::kFarDepth;
+using grass::use;
 
 class GrassGeometry final : public Technique {
 public:
@@ -60,7 +55,7 @@ public:
         g.report["coverage"] = to_coverage ? "alpha-to-coverage" : "alpha-test";
         g.report["samples"] = std::to_string(samples);
 
-        const std::array<float, 4> far_depth{1.0f, 0.0f, 0.0f, 0.0f}, background{0.0f, 0.0f, 0.0f, 1.0f};
+        const std::array<float, 4> background{0.0f, 0.0f, 0.0f, 1.0f};
         PassDecl blades{.name = "blades", .kind = PassKind::raster};
         blades.push_constant_bytes = sizeof(DrawConstants);
         blades.uses = {use(graph_names::kFrameUniforms, Use::uniform, 0)};
@@ -70,15 +65,13 @@ public:
             g.images.push_back({.name = "msaa_depth", .format = VK_FORMAT_D32_SFLOAT, .extent = ImageExtent::screen(),
                                 .samples = samples});
             blades.uses.push_back(cleared("msaa_color", Use::color_attachment, background));
-            blades.uses.push_back(cleared("msaa_depth", Use::depth_attachment, far_depth, false));
+            blades.uses.push_back(cleared("msaa_depth", Use::depth_attachment, kFarDepth, false));
             blades.uses.push_back(use(graph_names::kColor, Use::resolve_target));
         } else {
             blades.uses.push_back(cleared(graph_names::kColor, Use::color_attachment, background));
-            blades.uses.push_back(cleared(graph_names::kDepth, Use::depth_attachment, far_depth));
+            blades.uses.push_back(cleared(graph_names::kDepth, Use::depth_attachment, kFarDepth));
         }
-        RasterState ground;
-        ground.vertex_spirv = scene_vert;
-        ground.fragment_spirv = grass_ground_frag;
+        const RasterState ground = grass::ground_state();
         RasterState field;
         field.vertex_spirv = grass_blades_vert;
         field.fragment_spirv = grass_blades_frag;
@@ -96,7 +89,7 @@ public:
             // The camera depth is not resolved from the multisampled pass; cleared (far) so that
             // nothing reads undefined memory. Image errors do not use it.
             PassDecl depth{.name = "clear_depth", .kind = PassKind::raster};
-            depth.uses = {cleared(graph_names::kDepth, Use::depth_attachment, far_depth)};
+            depth.uses = {cleared(graph_names::kDepth, Use::depth_attachment, kFarDepth)};
             depth.settings = "clear";
             depth.record = [](PassContext&) {};
             g.passes.push_back(std::move(depth));

@@ -1,7 +1,6 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// The scene's own objects (the ground) in a grass pass: the family's shading, fully opaque.
-#include "grass_geometry_params.h"
+// The scene's own objects (the ground) in any grass technique's pass: the family's shading, fully opaque.
 #include "frame_uniforms.glsl"
 #include "draw_constants.glsl"
 #include "grass_shading.glsl"

@@ -1,0 +1,28 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// grass.billboard, load phase: the blade's outline cut hard, its radiance under the scene's sun
+// by the family's model (the side the bake camera sees), and its density threshold in alpha.
+#include "grass_billboard_params.h"
+#include "frame_uniforms.glsl"
+#include "draw_constants.glsl"
+#include "blade_alpha.h"
+#include "billboard_bake.h"
+#include "scene_lighting.glsl"
+
+layout(set = 0, binding = 1, std140) uniform BakeBlock { BillboardBake bake; };
+
+layout(location = 0) in vec3 patch_position;
+layout(location = 1) in vec3 patch_normal;
+layout(location = 2) in vec2 strip_uv;
+layout(location = 3) in float colour;
+layout(location = 4) flat in float taper;
+layout(location = 5) flat in float threshold;
+layout(location = 0) out vec4 out_texel;
+
+void main() {
+    if (!blade_opaque(strip_uv, taper)) discard;
+    vec3 n = normalize(patch_normal);
+    if (dot(n, bake.toward_viewer.xyz) < 0.0) n = -n;
+    vec3 irradiance = scene_light_irradiance(patch_position, n);
+    out_texel = vec4(lambert_radiance(draw.albedo.rgb * colour, irradiance, 1.0, frame.ambient.rgb), threshold);
+}

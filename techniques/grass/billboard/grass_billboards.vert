@@ -1,0 +1,40 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// grass.billboard: the baked images on quads, once per cell (PassContext::draw_over_population).
+// Crossed: the two quads in the patch's xy and zy planes, placed (and mirrored) with the cell.
+// Camera-facing: the xy quad turned about the cell's vertical axis towards the camera.
+#include "grass_billboard_params.h"
+#include "frame_uniforms.glsl"
+#include "billboard_bake.h"
+
+layout(location = 0) in vec4 quad_position;  // patch space; w = image layer
+layout(location = 1) in vec4 quad_uv;
+layout(location = 2) in mat4 instance_model;             // locations 2-5
+layout(location = 9) in vec4 corner_densities;           // patch order (grass_density.h)
+
+layout(location = 0) out vec2 uv;
+layout(location = 1) flat out float layer;
+layout(location = 2) flat out vec4 densities;
+layout(location = 3) out vec2 ground_xz;  // the quad's foot in the patch, where density is read
+
+void main() {
+    uv = quad_uv.xy;
+    layer = quad_position.w;
+    densities = corner_densities;
+    vec3 p = quad_position.xyz;
+    ground_xz = p.xz;
+    vec4 world;
+    if (frame.technique.orientation == GRASS_BILLBOARD_CAMERA_FACING) {
+        vec3 centre = (instance_model * vec4(0.5, 0.0, 0.5, 1.0)).xyz;
+        float scale = length(instance_model[1].xyz);
+        vec3 to_camera = frame.camera_position.xyz - centre;
+        vec3 right = vec3(to_camera.z, 0.0, -to_camera.x);
+        float length_right = length(right);
+        right = length_right > 1e-6 ? right / length_right : vec3(1.0, 0.0, 0.0);
+        world = vec4(centre + right * ((p.x - 0.5) * scale) + vec3(0.0, p.y * scale, 0.0), 1.0);
+        ground_xz = vec2(p.x, 0.5);
+    } else {
+        world = instance_model * vec4(p, 1.0);
+    }
+    gl_Position = frame.view_proj * world;
+}
