@@ -47,6 +47,19 @@ TEST_CASE("every committed experiment makes its reference with the same settings
     }
 }
 
+TEST_CASE("grass/representations.toml: the meadow in the local and the shadowed reference mode") {
+    const Experiment experiment =
+        load_experiment(kExperiments / "grass" / "representations.toml", TechniqueRegistry::instance());
+    REQUIRE(experiment.scenes.size() == 2);
+    CHECK(experiment.scenes[0].name == "meadow");
+    CHECK(experiment.scenes[0].shadow_light() == nullptr);  // local: the sun casts no shadows
+    CHECK(experiment.scenes[1].name == "meadow-shadowed");
+    REQUIRE(experiment.scenes[1].shadow_light() != nullptr);
+    CHECK(experiment.scenes[1].lights.front().casts_shadows);
+    // The same field in both.
+    CHECK(experiment.scenes[1].populations.at(0).params.summary() == experiment.scenes[0].populations.at(0).params.summary());
+}
+
 TEST_CASE("a scene variant with casts_shadows = false: no object casts a shadow, the light still does") {
     const test::TempFolder folder;
     const fs::path file = folder.write(

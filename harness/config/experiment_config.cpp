@@ -35,8 +35,8 @@ const char* const kExperimentExample =
 
 // A scene variant's overrides: its name, the width of its shadow light (a rect's side, a
 // sphere's diameter: the width penumbra estimates use), e.g. to sweep the light size (Fig 6.9),
-// and whether its objects cast shadows (false: a shadow-free variant, where every technique's
-// visibility should be 1 wherever the light reaches).
+// whether its objects cast shadows (false: a shadow-free variant, where every technique's
+// visibility should be 1 wherever the light reaches), and whether its first light does.
 void apply_scene_variant(TomlReader& variant, Scene& scene) {
     scene.name = variant.get_string("name", scene.name);
     if (const auto problem = file_name_problem(scene.name))
@@ -64,6 +64,10 @@ void apply_scene_variant(TomlReader& variant, Scene& scene) {
         for (Object& object : scene.objects) object.casts_shadows = casts;
         for (Population& population : scene.populations) population.prototype.casts_shadows = casts;
     }
+    // Whether the scene's first light casts shadows: a grass scene's "local" (false: no
+    // blade-on-blade shadowing) and "shadowed" (true) reference modes from one scene file.
+    if (variant.has("light_casts_shadows"))
+        scene.lights.front().casts_shadows = variant.get_bool("light_casts_shadows", true);
     variant.finish();
 }
 

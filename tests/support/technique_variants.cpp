@@ -34,6 +34,7 @@ std::vector<TechniqueVariant> technique_variants(const std::string& family) {
         {"shadow.msm", {{"precision", std::string("unorm16")}, {"moment_bias", 6e-5}}},
         {"grass.geometry", {{"samples", 1LL}, {"coverage", std::string("alpha_test")}}},
         {"grass.geometry", {{"coverage", std::string("alpha_test")}}},
+        {"grass.billboard", {{"orientation", std::string("camera_facing")}, {"resolution", 64LL}}},
     };
     for (const TechniqueVariant& v : extra)
         if (family.empty() || family_of(v.technique) == family) all.push_back(v);

@@ -8,10 +8,10 @@
 #include "blade_alpha.h"
 #include "grass_shading.glsl"
 
-layout(location = 0) in vec3 world_position;
-layout(location = 1) in vec3 world_normal;
-layout(location = 2) in vec2 strip_uv;
-layout(location = 3) in float colour;
+layout(location = 0) centroid in vec3 world_position;
+layout(location = 1) centroid in vec3 world_normal;
+layout(location = 2) centroid in vec2 strip_uv;
+layout(location = 3) centroid in float colour;
 layout(location = 4) flat in float taper;
 layout(location = 0) out vec4 out_color;
 

@@ -3,6 +3,8 @@
 // grass.geometry: every cell's copy of the blade patch in one instanced draw
 // (PassContext::draw_population). A blade whose threshold its cell's density does not reach is
 // moved outside the clip volume, all its vertices alike, so it draws nothing (Lemme eq 5.22).
+// Outputs are interpolated at the centroid: with MSAA, a blade thinner than a pixel would
+// otherwise extrapolate them to the pixel centre, far outside the strip (negative colours).
 #include "grass_geometry_params.h"
 #include "frame_uniforms.glsl"
 #include "grass_density.h"
@@ -15,10 +17,10 @@ layout(location = 9) in vec4 corner_densities;           // patch order (grass_d
 layout(location = 10) in vec4 blade_strip;               // u, v, threshold, colour
 layout(location = 11) in vec4 blade_root;                // root x, root z, taper, 0
 
-layout(location = 0) out vec3 world_position;
-layout(location = 1) out vec3 world_normal;
-layout(location = 2) out vec2 strip_uv;
-layout(location = 3) out float colour;
+layout(location = 0) centroid out vec3 world_position;
+layout(location = 1) centroid out vec3 world_normal;
+layout(location = 2) centroid out vec2 strip_uv;
+layout(location = 3) centroid out float colour;
 layout(location = 4) flat out float taper;
 
 void main() {
