@@ -6,10 +6,10 @@
 #include "frame_uniforms.glsl"
 #include "draw_constants.glsl"
 #include "blade_alpha.h"
-#include "billboard_bake.h"
+#include "patch_bake.h"
 #include "scene_lighting.glsl"
 
-layout(set = 0, binding = 1, std140) uniform BakeBlock { BillboardBake bake; };
+layout(set = 0, binding = 1, std140) uniform BakeBlock { PatchBake bake; };
 
 layout(location = 0) in vec3 patch_position;
 layout(location = 1) in vec3 patch_normal;

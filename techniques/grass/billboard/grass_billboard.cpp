@@ -6,13 +6,13 @@
 #include "graph/pass_context.hpp"
 #include "render/frame_uniforms.hpp"
 
-#include "billboard_bake.h"
 #include "grass_billboard_params.h"
 #include "../common/grass_passes.hpp"
+#include "../common/patch_bake.hpp"
 #include "../common/grass_population.hpp"
 
 #include "shaders/grass/billboard_bake_frag.h"
-#include "shaders/grass/billboard_bake_vert.h"
+#include "shaders/grass/patch_bake_vert.h"
 #include "shaders/grass/grass_billboards_frag.h"
 #include "shaders/grass/grass_billboards_vert.h"
 
@@ -28,8 +28,8 @@ namespace names {
 constexpr const char* kImage = "billboard";      // RGBA32F x 2 layers: radiance, threshold
 constexpr const char* kBakeDepth = "bake_depth";
 constexpr const char* kQuads = "quads";          // 12 BillboardVertex: the xy quad, then the zy quad
-constexpr const char* kFront = "bake_front";     // BillboardBake of layer 0
-constexpr const char* kSide = "bake_side";       // BillboardBake of layer 1
+constexpr const char* kFront = "bake_front";     // PatchBake of layer 0
+constexpr const char* kSide = "bake_side";       // PatchBake of layer 1
 }  // namespace names
 
 constexpr uint32_t kQuadVertices = 12;
@@ -38,40 +38,28 @@ using grass::cleared;
 using grass::kFarDepth;
 using grass::use;
 
-// The bake cameras and the quads for a prototype with these bounds (patch space).
-struct BakeSetup {
-    std::array<shader::BillboardBake, 2> cameras;
-    std::array<shader::BillboardVertex, kQuadVertices> quads;
+// One vertex of the billboard quads, patch space: xyz, w = the image layer; uv in the image
+// (v = 0 at the top row, the quad's top). grass_billboards.vert reads it at locations 0-1.
+struct BillboardVertex {
+    glm::vec4 position;
+    glm::vec4 uv;
 };
 
-BakeSetup bake_setup(const Bounds& b) {
-    BakeSetup s;
+// The quads for a prototype with these bounds (patch space): two triangles each, the xy quad at
+// the patch's z centre (layer 0), the zy quad at its x centre (layer 1), framed as the bakes are.
+std::array<BillboardVertex, kQuadVertices> billboard_quads(const Bounds& b) {
     const float height = std::max(b.max.y, 1e-4f);
     const glm::vec2 x(b.min.x, std::max(b.max.x, b.min.x + 1e-4f)), z(b.min.z, std::max(b.max.z, b.min.z + 1e-4f));
-    // Layer 0 looks along -z: u = x across, v = 1 - y / height down; depth grows away from +z.
-    glm::mat4 front(0.0f);
-    front[0] = glm::vec4(2.0f / (x.y - x.x), 0.0f, 0.0f, 0.0f);
-    front[1] = glm::vec4(0.0f, -2.0f / height, 0.0f, 0.0f);
-    front[2] = glm::vec4(0.0f, 0.0f, -1.0f / (z.y - z.x), 0.0f);
-    front[3] = glm::vec4(-1.0f - 2.0f * x.x / (x.y - x.x), 1.0f, z.y / (z.y - z.x), 1.0f);
-    // Layer 1 looks along -x: u = z across.
-    glm::mat4 side(0.0f);
-    side[0] = glm::vec4(0.0f, 0.0f, -1.0f / (x.y - x.x), 0.0f);
-    side[1] = glm::vec4(0.0f, -2.0f / height, 0.0f, 0.0f);
-    side[2] = glm::vec4(2.0f / (z.y - z.x), 0.0f, 0.0f, 0.0f);
-    side[3] = glm::vec4(-1.0f - 2.0f * z.x / (z.y - z.x), 1.0f, x.y / (x.y - x.x), 1.0f);
-    s.cameras[0] = {front, glm::vec4(0.0f, 0.0f, 1.0f, 0.0f)};
-    s.cameras[1] = {side, glm::vec4(1.0f, 0.0f, 0.0f, 0.0f)};
-    // Two triangles per quad; the xy quad at the patch's z centre, the zy quad at its x centre.
+    std::array<BillboardVertex, kQuadVertices> quads;
     const std::array<glm::vec2, 6> corners{glm::vec2(0, 0), glm::vec2(1, 0), glm::vec2(1, 1),
                                            glm::vec2(0, 0), glm::vec2(1, 1), glm::vec2(0, 1)};
     for (size_t i = 0; i < 6; ++i) {
         const glm::vec2 c = corners[i];
         const glm::vec4 uv(c.x, 1.0f - c.y, 0.0f, 0.0f);
-        s.quads[i] = {glm::vec4(x.x + c.x * (x.y - x.x), c.y * height, 0.5f, 0.0f), uv};
-        s.quads[6 + i] = {glm::vec4(0.5f, c.y * height, z.x + c.x * (z.y - z.x), 1.0f), uv};
+        quads[i] = {glm::vec4(x.x + c.x * (x.y - x.x), c.y * height, 0.5f, 0.0f), uv};
+        quads[6 + i] = {glm::vec4(0.5f, c.y * height, z.x + c.x * (z.y - z.x), 1.0f), uv};
     }
-    return s;
+    return quads;
 }
 
 // `layout` without the attributes at locations [first, last] (their bindings stay, so the
@@ -80,12 +68,6 @@ VertexLayout without_locations(VertexLayout layout, uint32_t first, uint32_t las
     std::erase_if(layout.attributes,
                   [&](const VertexLayout::Attribute& a) { return a.location >= first && a.location <= last; });
     return layout;
-}
-
-const GeneratedPopulation* first_grass(std::span<const GeneratedPopulation> populations) {
-    for (const GeneratedPopulation& p : populations)
-        if (p.kind == grass::kGrassPopulationKind) return &p;
-    return nullptr;
 }
 
 class GrassBillboard final : public Technique {
@@ -110,30 +92,28 @@ public:
                             .extent = ImageExtent::square(resolution), .layers = 2, .persistent = true});
         g.images.push_back({.name = names::kBakeDepth, .format = VK_FORMAT_D32_SFLOAT,
                             .extent = ImageExtent::square(resolution)});
-        g.buffers.push_back({.name = names::kQuads, .bytes = sizeof(shader::BillboardVertex) * kQuadVertices,
+        g.buffers.push_back({.name = names::kQuads, .bytes = sizeof(BillboardVertex) * kQuadVertices,
                              .usage = kVertexBuffer, .persistent = true});
         for (const char* camera : {names::kFront, names::kSide})
-            g.buffers.push_back({.name = camera, .bytes = sizeof(shader::BillboardBake), .usage = kUniformBuffer});
+            g.buffers.push_back({.name = camera, .bytes = sizeof(shader::PatchBake), .usage = kUniformBuffer});
 
         PassDecl setup{.name = "bake_setup", .kind = PassKind::copy, .phase = Phase::load};
         setup.uses = {use(names::kQuads, Use::transfer_write), use(names::kFront, Use::transfer_write),
                       use(names::kSide, Use::transfer_write)};
         setup.settings = "bounds of the first grass population's prototype";
         setup.record = [](PassContext& pc) {
-            const GeneratedPopulation* grass = first_grass(pc.populations());
-            Bounds bounds;
-            if (grass)
-                for (const Vertex& v : grass->prototype.vertices) bounds.extend(v.position);
-            if (bounds.empty()) bounds.extend(glm::vec3(0.0f)), bounds.extend(glm::vec3(1.0f));
-            const BakeSetup s = bake_setup(bounds);
-            pc.upload(names::kQuads, s.quads.data(), sizeof(s.quads));
-            pc.upload(names::kFront, &s.cameras[0], sizeof(s.cameras[0]));
-            pc.upload(names::kSide, &s.cameras[1], sizeof(s.cameras[1]));
+            const Bounds bounds = grass::prototype_bounds(grass::first_grass(pc.populations()));
+            const auto quads = billboard_quads(bounds);
+            const shader::PatchBake front = grass::ortho_bake(bounds, grass::BakeView::along_z);
+            const shader::PatchBake side = grass::ortho_bake(bounds, grass::BakeView::along_x);
+            pc.upload(names::kQuads, quads.data(), sizeof(quads));
+            pc.upload(names::kFront, &front, sizeof(front));
+            pc.upload(names::kSide, &side, sizeof(side));
         };
         g.passes.push_back(std::move(setup));
 
         RasterState bake;
-        bake.vertex_spirv = billboard_bake_vert;
+        bake.vertex_spirv = patch_bake_vert;
         bake.fragment_spirv = billboard_bake_frag;
         // The population's layout without the copies' attributes (locations 2-9), which the bake
         // does not read: it draws the prototype in patch space.
@@ -143,12 +123,12 @@ public:
             PassDecl p{.name = layer == 0 ? "bake_front" : "bake_side", .kind = PassKind::raster, .phase = Phase::load};
             p.push_constant_bytes = sizeof(DrawConstants);
             p.uses = {use(graph_names::kFrameUniforms, Use::uniform, 0), use(cameras[layer], Use::uniform, 1),
-                      cleared(names::kImage, Use::color_attachment, {0.0f, 0.0f, 0.0f, shader::BILLBOARD_EMPTY}, true,
+                      cleared(names::kImage, Use::color_attachment, {0.0f, 0.0f, 0.0f, shader::PATCH_BAKE_EMPTY}, true,
                               layer),
                       cleared(names::kBakeDepth, Use::depth_attachment, kFarDepth, false)};
             p.settings = fmt::format("layer={}", layer);
             p.record = [bake](PassContext& pc) {
-                const GeneratedPopulation* grass = first_grass(pc.populations());
+                const GeneratedPopulation* grass = grass::first_grass(pc.populations());
                 if (!grass) return;
                 pc.bind(pc.raster_pipeline(bake));
                 pc.draw_population(grass->name, 1);
@@ -166,10 +146,10 @@ public:
         RasterState quads;
         quads.vertex_spirv = grass_billboards_vert;
         quads.fragment_spirv = grass_billboards_frag;
-        quads.vertices.bindings = {{uint32_t(sizeof(shader::BillboardVertex)), false}};
+        quads.vertices.bindings = {{uint32_t(sizeof(BillboardVertex)), false}};
         quads.vertices.attributes = {
-            {0, 0, VK_FORMAT_R32G32B32A32_SFLOAT, uint32_t(offsetof(shader::BillboardVertex, position))},
-            {1, 0, VK_FORMAT_R32G32B32A32_SFLOAT, uint32_t(offsetof(shader::BillboardVertex, uv))}};
+            {0, 0, VK_FORMAT_R32G32B32A32_SFLOAT, uint32_t(offsetof(BillboardVertex, position))},
+            {1, 0, VK_FORMAT_R32G32B32A32_SFLOAT, uint32_t(offsetof(BillboardVertex, uv))}};
         quads.vertices.population_copies();
         quads.vertices = without_locations(quads.vertices, 6, 8);  // the normal matrix: billboards have no normals
         const uint32_t vertices = crossed ? kQuadVertices : kQuadVertices / 2;

@@ -1,10 +1,10 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // grass.billboard: the baked radiance where the baked blade's threshold is within the cell's
-// density there (a texel with no blade holds BILLBOARD_EMPTY, which no density reaches).
+// density there (a texel with no blade holds PATCH_BAKE_EMPTY, which no density reaches).
 #include "grass_billboard_params.h"
 #include "frame_uniforms.glsl"
-#include "billboard_bake.h"
+#include "patch_bake.h"
 #include "grass_density.h"
 
 layout(set = 0, binding = 1) uniform sampler2DArray billboard;  // NEAREST: thresholds are not blended

@@ -5,7 +5,6 @@
 // Camera-facing: the xy quad turned about the cell's vertical axis towards the camera.
 #include "grass_billboard_params.h"
 #include "frame_uniforms.glsl"
-#include "billboard_bake.h"
 
 layout(location = 0) in vec4 quad_position;  // patch space; w = image layer
 layout(location = 1) in vec4 quad_uv;

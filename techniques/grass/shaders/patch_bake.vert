@@ -1,12 +1,11 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// grass.billboard, load phase: the patch's blades (the population's prototype, one copy drawn
-// without its cell's placement) seen by the layer's orthographic bake camera.
-#include "grass_billboard_params.h"
+// Any grass technique's load-phase bake: the patch's blades (the population's prototype, one
+// copy drawn without its cell's placement) seen by an orthographic bake camera (patch_bake.h).
 #include "frame_uniforms.glsl"
-#include "billboard_bake.h"
+#include "patch_bake.h"
 
-layout(set = 0, binding = 1, std140) uniform BakeBlock { BillboardBake bake; };
+layout(set = 0, binding = 1, std140) uniform BakeBlock { PatchBake bake; };
 
 layout(location = 0) in vec3 in_position;
 layout(location = 1) in vec3 in_normal;

@@ -1,0 +1,66 @@
+#include "patch_bake.hpp"
+
+#include "grass_population.hpp"
+
+#include <algorithm>
+
+namespace canopy::grass {
+
+namespace {
+
+// The range [lo, hi] with a width of at least 1e-4 (a flat prototype still frames).
+glm::vec2 range(float lo, float hi) { return {lo, std::max(hi, lo + 1e-4f)}; }
+
+// ndc = 2 (p - lo) / (hi - lo) - 1 along one axis: scale and offset.
+glm::vec2 to_ndc(glm::vec2 r) { return {2.0f / (r.y - r.x), -1.0f - 2.0f * r.x / (r.y - r.x)}; }
+
+}  // namespace
+
+shader::PatchBake ortho_bake(const Bounds& b, BakeView view) {
+    const glm::vec2 x = range(b.min.x, b.max.x), y = range(0.0f, b.max.y), z = range(b.min.z, b.max.z);
+    glm::mat4 m(0.0f);  // column-major: m[column][row]
+    m[3][3] = 1.0f;
+    shader::PatchBake bake;
+    const auto set_row = [&](int row, int axis, float scale, float offset) {
+        m[axis][row] = scale;
+        m[3][row] = offset;
+    };
+    // Depth 0 at the side nearest the camera, 1 at the farthest.
+    if (view == BakeView::along_z) {
+        set_row(0, 0, to_ndc(x).x, to_ndc(x).y);
+        set_row(1, 1, -2.0f / (y.y - y.x), 1.0f);
+        set_row(2, 2, -1.0f / (z.y - z.x), z.y / (z.y - z.x));
+        bake.toward_viewer = glm::vec4(0.0f, 0.0f, 1.0f, 0.0f);
+    } else if (view == BakeView::along_x) {
+        set_row(0, 2, to_ndc(z).x, to_ndc(z).y);
+        set_row(1, 1, -2.0f / (y.y - y.x), 1.0f);
+        set_row(2, 0, -1.0f / (x.y - x.x), x.y / (x.y - x.x));
+        bake.toward_viewer = glm::vec4(1.0f, 0.0f, 0.0f, 0.0f);
+    } else {
+        set_row(0, 0, to_ndc(x).x, to_ndc(x).y);
+        set_row(1, 2, to_ndc(z).x, to_ndc(z).y);
+        set_row(2, 1, -1.0f / (y.y - y.x), y.y / (y.y - y.x));
+        bake.toward_viewer = glm::vec4(0.0f, 1.0f, 0.0f, 0.0f);
+    }
+    bake.view_proj = m;
+    return bake;
+}
+
+const GeneratedPopulation* first_grass(std::span<const GeneratedPopulation> populations) {
+    for (const GeneratedPopulation& p : populations)
+        if (p.kind == kGrassPopulationKind) return &p;
+    return nullptr;
+}
+
+Bounds prototype_bounds(const GeneratedPopulation* population) {
+    Bounds bounds;
+    if (population)
+        for (const Vertex& v : population->prototype.vertices) bounds.extend(v.position);
+    if (bounds.empty()) {
+        bounds.extend(glm::vec3(0.0f));
+        bounds.extend(glm::vec3(1.0f));
+    }
+    return bounds;
+}
+
+}  // namespace canopy::grass

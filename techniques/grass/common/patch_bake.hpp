@@ -1,0 +1,31 @@
+// The orthographic cameras grass techniques bake their patch with at load (shaders/patch_bake.h,
+// shaders/patch_bake.vert), framing the prototype's bounds, and the prototype they bake.
+#pragma once
+
+#include "scene/generated_population.hpp"
+#include "scene/geometry.hpp"
+
+#include "../shaders/patch_bake.h"
+
+#include <span>
+
+namespace canopy::grass {
+
+// Which way the bake camera looks, and how the image's (u, v) map to patch space (v = 0 is the
+// image's first row):
+//   along_z: looking along -z; u = x, v = 1 - y / top (the first row at the blades' top)
+//   along_x: looking along -x; u = z, v = 1 - y / top
+//   down:    looking along -y from above; u = x, v = z
+enum class BakeView { along_z, along_x, down };
+
+// The camera framing `bounds` (patch space; y from 0, the ground, to bounds.max.y).
+shader::PatchBake ortho_bake(const Bounds& bounds, BakeView view);
+
+// The first population of kind "grass" (what the bakes draw), or nullptr.
+const GeneratedPopulation* first_grass(std::span<const GeneratedPopulation> populations);
+
+// Its prototype's bounds; the unit cube when there is none, so a scene without grass still bakes
+// (an empty image).
+Bounds prototype_bounds(const GeneratedPopulation* population);
+
+}  // namespace canopy::grass

@@ -1,0 +1,147 @@
+// grass.image: Lemme's far representation (§4.2, §5.3): the patch seen from above, baked at load
+// into its colour, density threshold and normal, shown on one horizontal quad per cell a little
+// above the ground, cut by the cell's density and lit per pixel.
+#include "core/registry.hpp"
+#include "graph/pass_context.hpp"
+#include "render/frame_uniforms.hpp"
+
+#include "grass_image_params.h"
+#include "../common/grass_passes.hpp"
+#include "../common/grass_population.hpp"
+#include "../common/patch_bake.hpp"
+
+#include "shaders/grass/grass_image_frag.h"
+#include "shaders/grass/grass_image_vert.h"
+#include "shaders/grass/image_bake_frag.h"
+#include "shaders/grass/patch_bake_vert.h"
+
+#include <fmt/format.h>
+
+#include <array>
+#include <cstddef>
+
+namespace canopy {
+namespace {
+
+using grass::cleared;
+using grass::kFarDepth;
+using grass::use;
+
+namespace names {
+constexpr const char* kAlbedo = "slice_albedo";  // RGBA32F: albedo, threshold
+constexpr const char* kNormal = "slice_normal";  // RGBA16F: patch-space normal
+constexpr const char* kBakeDepth = "bake_depth";
+constexpr const char* kQuad = "quad";            // 6 SliceVertex
+constexpr const char* kCamera = "bake_camera";   // PatchBake, looking down
+}  // namespace names
+
+// One vertex of the slice quad, patch space; uv in the top view (u = x, v = z).
+struct SliceVertex {
+    glm::vec4 position;
+    glm::vec4 uv;
+};
+
+// The quad over the prototype's bounds in x and z at `height` above the ground, framed as the
+// top-view bake is (grass::BakeView::down).
+std::array<SliceVertex, 6> slice_quad(const Bounds& b, float height) {
+    const std::array<glm::vec2, 6> corners{glm::vec2(0, 0), glm::vec2(1, 0), glm::vec2(1, 1),
+                                           glm::vec2(0, 0), glm::vec2(1, 1), glm::vec2(0, 1)};
+    std::array<SliceVertex, 6> quad;
+    for (size_t i = 0; i < 6; ++i) {
+        const glm::vec2 c = corners[i];
+        quad[i] = {glm::vec4(b.min.x + c.x * (b.max.x - b.min.x), height, b.min.z + c.y * (b.max.z - b.min.z), 1.0f),
+                   glm::vec4(c.x, c.y, 0.0f, 0.0f)};
+    }
+    return quad;
+}
+
+class GrassImage final : public Technique {
+public:
+    std::string name() const override { return "grass.image"; }
+    std::string summary() const override {
+        return "grass as one horizontal slice per cell: the patch's top view baked at load, lit per pixel";
+    }
+    std::string paper() const override { return "Lemme 2012 §4.2 and §5.3; Boulanger 2008 §4.2 (the far slice)"; }
+    std::vector<ParamSpec> params() const override { return shader::GrassImageParams::specs(); }
+    ErrorColumns error_columns() const override { return {}; }
+
+    FrameGraph graph(const ParamSet& params) const override {
+        const uint32_t resolution = uint32_t(params.integer("resolution"));
+        const float slice_height = float(params.real("slice_height"));
+        FrameGraph g;
+        g.needs.populations = {grass::kGrassPopulationKind};
+        g.shader_params.set_block(shader::GrassImageParams::from(params));
+        g.images.push_back({.name = names::kAlbedo, .format = VK_FORMAT_R32G32B32A32_SFLOAT,
+                            .extent = ImageExtent::square(resolution), .persistent = true});
+        g.images.push_back({.name = names::kNormal, .format = VK_FORMAT_R16G16B16A16_SFLOAT,
+                            .extent = ImageExtent::square(resolution), .persistent = true});
+        g.images.push_back({.name = names::kBakeDepth, .format = VK_FORMAT_D32_SFLOAT,
+                            .extent = ImageExtent::square(resolution)});
+        g.buffers.push_back({.name = names::kQuad, .bytes = sizeof(SliceVertex) * 6, .usage = kVertexBuffer,
+                             .persistent = true});
+        g.buffers.push_back({.name = names::kCamera, .bytes = sizeof(shader::PatchBake), .usage = kUniformBuffer});
+
+        PassDecl setup{.name = "bake_setup", .kind = PassKind::copy, .phase = Phase::load};
+        setup.uses = {use(names::kQuad, Use::transfer_write), use(names::kCamera, Use::transfer_write)};
+        setup.settings = fmt::format("slice_height={}", slice_height);
+        setup.record = [slice_height](PassContext& pc) {
+            const Bounds bounds = grass::prototype_bounds(grass::first_grass(pc.populations()));
+            const auto quad = slice_quad(bounds, slice_height * bounds.max.y);
+            const shader::PatchBake camera = grass::ortho_bake(bounds, grass::BakeView::down);
+            pc.upload(names::kQuad, quad.data(), sizeof(quad));
+            pc.upload(names::kCamera, &camera, sizeof(camera));
+        };
+        g.passes.push_back(std::move(setup));
+
+        RasterState bake;
+        bake.vertex_spirv = patch_bake_vert;
+        bake.fragment_spirv = image_bake_frag;
+        bake.vertices = VertexLayout::population();
+        std::erase_if(bake.vertices.attributes, [](const VertexLayout::Attribute& a) { return a.location >= 2 && a.location <= 9; });
+        PassDecl top{.name = "bake_top", .kind = PassKind::raster, .phase = Phase::load};
+        top.push_constant_bytes = sizeof(DrawConstants);
+        top.uses = {use(graph_names::kFrameUniforms, Use::uniform, 0), use(names::kCamera, Use::uniform, 1),
+                    cleared(names::kAlbedo, Use::color_attachment, {0.0f, 0.0f, 0.0f, shader::PATCH_BAKE_EMPTY}),
+                    cleared(names::kNormal, Use::color_attachment, {0.0f, 1.0f, 0.0f, 0.0f}),
+                    cleared(names::kBakeDepth, Use::depth_attachment, kFarDepth, false)};
+        top.settings = "down";
+        top.record = [bake](PassContext& pc) {
+            const GeneratedPopulation* grass = grass::first_grass(pc.populations());
+            if (!grass) return;
+            pc.bind(pc.raster_pipeline(bake));
+            pc.draw_population(grass->name, 1);
+        };
+        g.passes.push_back(std::move(top));
+
+        PassDecl frame{.name = "slices", .kind = PassKind::raster};
+        frame.push_constant_bytes = sizeof(DrawConstants);
+        frame.uses = {use(graph_names::kFrameUniforms, Use::uniform, 0), use(names::kAlbedo, Use::sampled, 1),
+                      use(names::kNormal, Use::sampled, 2), use(names::kQuad, Use::vertex),
+                      cleared(graph_names::kColor, Use::color_attachment, {0.0f, 0.0f, 0.0f, 1.0f}),
+                      cleared(graph_names::kDepth, Use::depth_attachment, kFarDepth)};
+        const RasterState ground = grass::ground_state();
+        RasterState slice;
+        slice.vertex_spirv = grass_image_vert;
+        slice.fragment_spirv = grass_image_frag;
+        slice.vertices.bindings = {{uint32_t(sizeof(SliceVertex)), false}};
+        slice.vertices.attributes = {{0, 0, VK_FORMAT_R32G32B32A32_SFLOAT, uint32_t(offsetof(SliceVertex, position))},
+                                     {1, 0, VK_FORMAT_R32G32B32A32_SFLOAT, uint32_t(offsetof(SliceVertex, uv))}};
+        slice.vertices.population_copies();
+        frame.settings = "one quad per cell";
+        frame.record = [ground, slice](PassContext& pc) {
+            pc.bind(pc.raster_pipeline(ground));
+            pc.draw_scene(SceneFilter::all);
+            pc.bind(pc.raster_pipeline(slice));
+            const std::array<std::string, 1> buffers{names::kQuad};
+            for (const GeneratedPopulation& population : pc.populations())
+                pc.draw_over_population(population.name, buffers, 6);
+        };
+        g.passes.push_back(std::move(frame));
+        return g;
+    }
+};
+
+RegisterTechnique<GrassImage> registered;
+
+}  // namespace
+}  // namespace canopy

@@ -1,0 +1,20 @@
+// grass.image's parameters, written once for C++ and GLSL (harness/shaders/param_block.h).
+#ifndef CANOPY_GRASS_IMAGE_PARAMS_H
+#define CANOPY_GRASS_IMAGE_PARAMS_H
+
+#include "param_block.h"
+
+#define GRASS_IMAGE_PARAMS(SHADER, PLAN, DERIVED)                                                          \
+    PLAN(integer, resolution, (256, 16, 4096), "texels across the baked top view of the patch (width and height)") \
+    SHADER(real, slice_height, (0.1, 0.0, 1.0),                                                             \
+         "the slice's height above the ground, a fraction of the patch's tallest blade (Lemme: 'a low offset')")
+
+CANOPY_BEGIN_NAMESPACE
+CANOPY_PARAM_BLOCK(GrassImageParams, GRASS_IMAGE_PARAMS)
+CANOPY_END_NAMESPACE
+
+#ifndef __cplusplus
+#define TECHNIQUE_PARAMS GrassImageParams
+#endif
+
+#endif

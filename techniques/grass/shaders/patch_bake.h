@@ -1,0 +1,23 @@
+// How grass techniques bake their patch at load (GLSL and C++): an orthographic camera framing
+// the prototype's bounds along one axis (common/patch_bake.hpp makes them), and what a baked
+// texel holds where it shows no blade. One struct for the bake passes' uniform block and the
+// C++ that fills it.
+#ifndef CANOPY_GRASS_PATCH_BAKE_H
+#define CANOPY_GRASS_PATCH_BAKE_H
+
+#include "shared_math.h"
+
+CANOPY_BEGIN_NAMESPACE
+
+// A baked texel's alpha channel holds the density threshold of the blade it shows; texels that
+// show no blade hold this, which no density reaches, so the representation cuts them away.
+CANOPY_CONST float PATCH_BAKE_EMPTY = 2.0f;
+
+struct PatchBake {
+    mat4 view_proj;      // patch space -> the bake's clip space
+    vec4 toward_viewer;  // unit: the side of a two-sided blade the bake sees
+};
+
+CANOPY_END_NAMESPACE
+
+#endif

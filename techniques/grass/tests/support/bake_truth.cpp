@@ -1,0 +1,109 @@
+#include "support/bake_truth.hpp"
+
+#include "config/scene_config.hpp"
+#include "reference/embree_scene.hpp"
+#include "reference/primary_hit.hpp"
+#include "scene/geometry.hpp"
+#include "scene/population_kind.hpp"
+#include "support/reference_hits.hpp"
+
+#include <optional>
+
+namespace canopy::grass::test {
+
+Scene one_cell_scene(const std::string& camera, const std::string& extra_params) {
+    return parse_scene(std::string("[scene]\nname = \"one-cell\"\nambient = 0.2\n") + camera +
+                           "\n[[light]]\ntype = \"directional\"\ndirection = [-0.3, -1, -0.2]\ncasts_shadows = false\n"
+                           "[[population]]\nname = \"patch\"\nkind = \"grass\"\nalbedo = [0.1, 0.8, 0.1]\n"
+                           "params = { cells_x = 1, cells_z = 1, centre_x = 0.5, centre_z = 0.5, mirror = false, "
+                           "blades = 60, subdivisions = 3, width_min = 0.06, width_max = 0.1, " +
+                           extra_params + " }\n",
+                       "one-cell.toml");
+}
+
+std::vector<TexelTruth> traced_bake(const Scene& scene, View view, uint32_t size) {
+    const EmbreeScene embree(scene, build_scene_meshes(scene));
+    const FamilyPopulation& family = *scene.populations.at(0).family;
+    const uint32_t per_blade = 2 * (uint32_t(scene.populations[0].params.integer("subdivisions")) + 1);
+    Bounds b;
+    for (const Vertex& v : family.prototype.vertices) b.extend(v.position);
+    std::vector<TexelTruth> truth(size_t(size) * size);
+    for (uint32_t j = 0; j < size; ++j)
+        for (uint32_t i = 0; i < size; ++i) {
+            const float u = (float(i) + 0.5f) / float(size), v = (float(j) + 0.5f) / float(size);
+            const float y = b.max.y * (1.0f - v);
+            Ray ray{};
+            if (view == View::along_z) {
+                ray.origin = {b.min.x + u * (b.max.x - b.min.x), y, b.max.z + 1.0f};
+                ray.direction = {0.0f, 0.0f, -1.0f};
+            } else if (view == View::along_x) {
+                ray.origin = {b.max.x + 1.0f, y, b.min.z + u * (b.max.z - b.min.z)};
+                ray.direction = {-1.0f, 0.0f, 0.0f};
+            } else {
+                ray.origin = {b.min.x + u * (b.max.x - b.min.x), b.max.y + 1.0f, b.min.z + v * (b.max.z - b.min.z)};
+                ray.direction = {0.0f, -1.0f, 0.0f};
+            }
+            const std::optional<PrimaryHit> hit = trace_primary(embree, scene.camera, ray.direction, ray);
+            if (!hit) continue;
+            const uint32_t blade = (hit->primitive % family.prototype.triangle_count()) / per_blade;
+            const uint32_t first_vertex = family.prototype.indices[size_t(blade) * per_blade * 3];
+            truth[size_t(j) * size + i] = {family.vertex_data[first_vertex].data[0].z, int64_t(blade)};
+        }
+    return truth;
+}
+
+BakeAgreement compare_bake(const Image& baked, const std::vector<TexelTruth>& truth, bool flip_u) {
+    BakeAgreement a;
+    const int size = baked.width;
+    const auto at = [&](int i, int j) -> const TexelTruth& { return truth[size_t(j) * size_t(size) + size_t(i)]; };
+    for (int j = 1; j + 1 < size; ++j)
+        for (int i = 1; i + 1 < size; ++i) {
+            bool edge = false;
+            for (int dj = -1; dj <= 1; ++dj)
+                for (int di = -1; di <= 1; ++di) edge = edge || at(i + di, j + dj).blade != at(i, j).blade;
+            if (edge) continue;
+            ++a.compared;
+            const float texel = baked.at(flip_u ? size - 1 - i : i, j)[3];
+            const bool covered = at(i, j).blade >= 0;
+            a.covered += covered;
+            a.coverage += (texel <= 1.0f) != covered;
+            a.threshold += covered && texel <= 1.0f && texel != at(i, j).threshold;
+        }
+    return a;
+}
+
+bool shows_grass(const float* rgb) { return rgb[1] > 2.0f * rgb[0]; }
+
+int grass_pixels(const Image& image) {
+    int n = 0;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) n += shows_grass(image.at(x, y));
+    return n;
+}
+
+CoverageAgreement compare_with_reference_hits(const Scene& scene, const Image& image) {
+    const EmbreeScene embree(scene, build_scene_meshes(scene));
+    const uint32_t width = uint32_t(image.width), height = uint32_t(image.height);
+    const auto hits = canopy::test::reference_hits(scene, embree, width, height);
+    const uint32_t per_blade = 2 * (uint32_t(scene.populations.at(0).params.integer("subdivisions")) + 1);
+    const auto label = [&](int x, int y) -> int64_t {
+        const auto& h = hits[size_t(y) * width + size_t(x)];
+        if (!h) return -1;
+        return h->what.population >= 0 ? int64_t(h->hit.primitive / per_blade) : -2 - int64_t(h->hit.geometry);
+    };
+    CoverageAgreement a;
+    for (int y = 1; y + 1 < int(height); ++y)
+        for (int x = 1; x + 1 < int(width); ++x) {
+            bool edge = false;
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) edge = edge || label(x + dx, y + dy) != label(x, y);
+            if (edge) continue;
+            ++a.compared;
+            const bool blade = label(x, y) >= 0;
+            a.covered += blade;
+            a.differ += shows_grass(image.at(x, y)) != blade;
+        }
+    return a;
+}
+
+}  // namespace canopy::grass::test

@@ -1,0 +1,55 @@
+// What the grass family's image-based tests compare a load-phase bake with: one unmirrored cell
+// whose copy sits at the origin (patch space is world space), Embree's orthographic rays through
+// each texel of a bake (which blade they hit, its density threshold), and the texel-by-texel
+// agreement away from the edges between blades. The mapping from texels to rays is written here
+// again, apart from the techniques' bake cameras, so a wrong camera shows.
+#pragma once
+
+#include "core/image.hpp"
+#include "scene/scene.hpp"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace canopy::grass::test {
+
+// A scene of one 1 x 1 cell at [0, 1]^2, `camera` a [camera] table, `extra_params` more
+// population parameters (e.g. "density = 0.5"); 60 wide blades, no ground.
+Scene one_cell_scene(const std::string& camera, const std::string& extra_params);
+
+// The view a bake looks along, and its texel (i, j) -> patch mapping (v = j / size from the first row):
+//   along_z: u = x, v = 1 - y / top, rays along -z;  along_x: u = z, v = 1 - y / top, rays along -x;
+//   down: u = x, v = z, rays along -y.  Over the prototype's bounds (y from 0).
+enum class View { along_z, along_x, down };
+
+struct TexelTruth {
+    float threshold = 2.0f;  // the hit blade's, or the bakes' "empty" (2)
+    int64_t blade = -1;      // -1: no blade
+};
+
+std::vector<TexelTruth> traced_bake(const Scene& scene, View view, uint32_t size);
+
+struct BakeAgreement {
+    int compared = 0;   // texels off the edges between blades
+    int covered = 0;    // of those, where a ray hits a blade
+    int coverage = 0;   // where the bake and the rays disagree on whether a blade is there
+    int threshold = 0;  // where both show one but the bake's threshold is not the blade's
+};
+
+// `baked`'s alpha channel against the rays; `flip_u` reads the bake mirrored (to show the check can fail).
+BakeAgreement compare_bake(const Image& baked, const std::vector<TexelTruth>& truth, bool flip_u = false);
+
+// Pixels showing grass (green above twice the red: the grounds and backgrounds of the grass
+// tests are brown or black).
+int grass_pixels(const Image& image);
+bool shows_grass(const float* rgb);
+
+// A technique's image against the reference's primary rays from the scene's camera, at every
+// pixel centre off the edges where the blade the rays hit changes.
+struct CoverageAgreement {
+    int compared = 0, covered = 0, differ = 0;
+};
+CoverageAgreement compare_with_reference_hits(const Scene& scene, const Image& image);
+
+}  // namespace canopy::grass::test
