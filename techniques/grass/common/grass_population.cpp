@@ -4,6 +4,8 @@
 #include "../shaders/cell_mirroring.h"
 #include "../shaders/grass_density.h"
 
+#include "scene/scene_limits.hpp"
+
 #include <fmt/format.h>
 
 #include <memory>
@@ -55,7 +57,8 @@ std::vector<ParamSpec> grass_population_params() {
                                    "cuts along a blade: subdivisions + 1 segments of 2 triangles (Lemme: 4)"));
     s.push_back(ParamSpec::choice("roots", "uniform", {"uniform", "stratified"},
                                   "root placement: independent uniform (Lemme) or one per grid cell (Boulanger)"));
-    s.push_back(ParamSpec::integer("seed", int64_t(d.seed), 0, 0x7fffffffffffffffll, "seed of the patch's blades"));
+    // 2^53: ParamSpec's range is a double, exact up to there.
+    s.push_back(ParamSpec::integer("seed", int64_t(d.seed), 0, 1ll << 53, "seed of the patch's blades"));
     add_range(s, "height", d.height_min, d.height_max, 1e-4, 10.0, "tip height above the root, patch units");
     add_range(s, "tilt", d.tilt_min_degrees, d.tilt_max_degrees, 0.0, 80.0, "launch angle from the vertical, degrees");
     add_range(s, "bend", d.bend_min, d.bend_max, 0.0, 1.0, "gravity's pull, a fraction of the most that keeps the tip on top");
@@ -113,6 +116,18 @@ GrassPopulationSpec grass_population_spec(const ParamSet& params) {
 }
 
 FamilyPopulation generate_grass_population(const GrassPopulationSpec& spec) {
+    // The reference flattens every copy: refuse what it cannot hold before generating anything.
+    const double cell_count = double(spec.field.cells.x) * double(spec.field.cells.y);
+    const double triangles = cell_count * double(spec.patch.blades) * double(triangles_per_blade(spec.patch.subdivisions));
+    if (cell_count > double(limits::kMaxPopulationCount))
+        throw std::invalid_argument(fmt::format("cells_x x cells_z = {:.0f} cells, more than the {} copies a population "
+                                                "may have (configs/README.md, \"Limits\")",
+                                                cell_count, limits::kMaxPopulationCount));
+    if (triangles > limits::kMaxPopulationTriangles)
+        throw std::invalid_argument(fmt::format("{:.0f} cells of {} blades of {} triangles make {:.3g} triangles, more than "
+                                                "the {:.3g} the reference can flatten: fewer cells, blades or subdivisions",
+                                                cell_count, spec.patch.blades, triangles_per_blade(spec.patch.subdivisions),
+                                                triangles, limits::kMaxPopulationTriangles));
     const BladePatch patch = generate_blade_patch(spec.patch);
     const GrassField& field = spec.field;
     FamilyPopulation out;

@@ -131,6 +131,16 @@ TEST_CASE("grass population: bad parameters name the line and the fix") {
         CHECK(std::string(error->what()).find("height") != std::string::npos);
         CHECK(std::string(error->what()).find("cannot be generated") != std::string::npos);
     }
+    SUBCASE("a field the reference cannot flatten is refused before it is generated") {
+        const auto error = test::config_error_of(
+            [] { parse_scene(with_params("cells_x = 4096, cells_z = 4096, blades = 1048576, subdivisions = 64"), "lawn.toml"); });
+        REQUIRE(error);
+        CHECK(std::string(error->what()).find("copies a population may have") != std::string::npos);
+        const auto triangles = test::config_error_of(
+            [] { parse_scene(with_params("cells_x = 100, cells_z = 100, blades = 2400"), "lawn.toml"); });
+        REQUIRE(triangles);
+        CHECK(std::string(triangles->what()).find("the reference can flatten") != std::string::npos);
+    }
     SUBCASE("an unknown kind lists the kinds") {
         std::string text = kScene;
         text.replace(text.find("kind = \"grass\""), 14, "kind = \"gras\"");
