@@ -71,14 +71,24 @@ void build_primitives(const Scene& scene) {
         return vertices == SIZE_MAX || vertices * object.instances.size() > kMaxBuiltVertices;
     });
     const std::vector<TriangleMesh> meshes = build_scene_meshes(primitives);
-    for (size_t i = 0; i < meshes.size(); ++i)
+    const auto check = [](const glm::mat4& matrix, const Vertex& vertex) {
+        const glm::vec3 world(matrix * glm::vec4(vertex.position, 1.0f));
+        if (!finite(world) || !within(world, limits::kMaxCoordinate * 1.0001))
+            property_violated("a world-space vertex outside the coordinate range was accepted");
+        if (!finite(vertex.normal)) property_violated("a non-finite normal");
+    };
+    // meshes: the objects', then the populations' prototypes (build_scene_meshes).
+    for (size_t i = 0; i < primitives.objects.size(); ++i)
         for (const Transform& instance : primitives.objects[i].instances)
-            for (const Vertex& vertex : meshes[i].vertices) {
-                const glm::vec3 world(instance.matrix() * glm::vec4(vertex.position, 1.0f));
-                if (!finite(world) || !within(world, limits::kMaxCoordinate * 1.0001))
-                    property_violated("a world-space vertex outside the coordinate range was accepted");
-                if (!finite(vertex.normal)) property_violated("a non-finite normal");
-            }
+            for (const Vertex& vertex : meshes[i].vertices) check(instance.matrix(), vertex);
+    for (size_t p = 0; p < primitives.populations.size(); ++p) {
+        const TriangleMesh& prototype = meshes[primitives.objects.size() + p];
+        size_t checked = 0;  // every copy's placement, a bounded number of vertices in all
+        const size_t stride = 1 + prototype.vertices.size() / 64;
+        for (const PopulationInstance& copy : generate_instances(primitives.populations[p]))
+            for (size_t v = 0; v < prototype.vertices.size() && checked < kMaxBuiltVertices; v += stride, ++checked)
+                check(copy.model, prototype.vertices[v]);
+    }
 }
 
 void check_case_ids(const std::vector<Case>& cases) {
