@@ -6,6 +6,7 @@
 #include "blade_curve.h"
 #include "cell_mirroring.h"
 #include "grass_density.h"
+#include "lod_selection.h"
 
 layout(local_size_x = 1) in;
 layout(std430, binding = 0) buffer Out { vec4 values[]; };
@@ -20,6 +21,10 @@ void main() {
     vec2 uv = vec2(0.3, 0.6);
     values[5] = grass_patch_corner_densities(vec4(0.1, 0.2, 0.3, 0.4), s);
     values[6] = vec4(grass_root_density(values[5], vec2(0.25, 0.75)), grass_blade_drawn(0.5, 0.4) ? 1.0 : 0.0, 0.0, 0.0);
+    values[7] = vec4(lod_far_opacity(0.3, 0.8, 0.5), lod_near_opacity(0.3, 0.8, 0.5), lod_window(0.25),
+                     lod_weight_vertical_slices(30.0, 10.0, 20.0, 40.0, 80.0) + lod_weight_horizontal_slice(15.0, 10.0, 20.0));
+    values[8] = vec4(lod_in_first(0.2, 0.5, 0.5) ? 1.0 : 0.0, lod_in_second(0.3, 0.5, 0.5) ? 1.0 : 0.0,
+                     lod_first_opacity_smooth(0.2, 0.5, 0.5, 0.02), lod_second_opacity_smooth(0.2, 0.0, 0.5, 0.02));
     values[4] = vec4(blade_half_width(uv.y, 2.0), blade_opaque(uv, 2.0) ? 1.0 : 0.0, blade_alpha(uv, 2.0, 0.01),
                      blade_coverage(2.0));
 }

@@ -1,0 +1,89 @@
+// Which representation draws a blade where two meet (Boulanger 2008 §4.2.5, eq 4.3-4.6 and
+// Algorithm 1; Lemme 2012 §5.4, eq 5.22-5.26): the blades of a cell are split by their density
+// thresholds, the low thresholds going to the farther representation as the camera recedes, so
+// that a transition moves blades one by one instead of swapping the whole cell. GLSL and C++
+// (shared_math.h): grass.lod's shaders and the tests run these very functions.
+//
+// Choices where the theses are silent or wrong (techniques/grass/README.md, "Transitions"):
+// - ω_max (Algorithm 1) is not given: canopy takes 0.05, so at most a tenth of the local density
+//   is semi-transparent, in the middle of a band; ω_0 = 0.05 as Boulanger's.
+// - Boulanger's window [(w - ω) ld, (w + ω) ld] still straddles 0 at w = 0 (and ld at w = 1), so
+//   blades would stay half transparent in a representation drawn alone. canopy centres the
+//   window at (w (1 + 2ω) - ω) ld: at w = 0 the near representation draws every blade opaque,
+//   at w = 1 the far one does, and the two opacities of a blade always sum to 1.
+// - Lemme's eq 5.25 gives both representations "bdth <= w ld" with w_2 = 1 - w_1, which draws
+//   some blades twice and drops others; canopy uses the complementary test: the first
+//   representation keeps bdth <= w_1 ld, the second w_1 ld < bdth <= ld.
+// - Eq 5.26 divides by the local density: where it is 0 no blade is drawn (thresholds are > 0).
+#ifndef CANOPY_GRASS_LOD_SELECTION_H
+#define CANOPY_GRASS_LOD_SELECTION_H
+
+#include "shared_math.h"
+
+CANOPY_BEGIN_NAMESPACE
+
+CANOPY_CONST float LOD_OMEGA_MAX = 0.05f;  // canopy's choice (see above)
+CANOPY_CONST float LOD_OMEGA_0 = 0.05f;    // Boulanger's (Fig 4.13)
+CANOPY_CONST float LOD_MIN_DENSITY = 0.01f;  // Algorithm 1: below it, nothing is drawn
+
+// Eq 4.3: the geometry's weight, 1 up to minGeom, 0 from maxGeom on.
+CANOPY_FN float lod_weight_geometry(float d, float min_geom, float max_geom) {
+    return clamp((d - max_geom) / (min_geom - max_geom), 0.0f, 1.0f);
+}
+
+// Eq 4.4: the vertical slices' weight, rising over [minGeom, maxGeom], falling over [minBTF, maxBTF].
+CANOPY_FN float lod_weight_vertical_slices(float d, float min_geom, float max_geom, float min_btf, float max_btf) {
+    return clamp((d - min_geom) / (max_geom - min_geom), 0.0f, 1.0f) *
+           clamp((d - max_btf) / (min_btf - max_btf), 0.0f, 1.0f);
+}
+
+// Eq 4.5: the horizontal slice's weight, 1 - w_g (not w_g, as the text after Algorithm 1 says).
+CANOPY_FN float lod_weight_horizontal_slice(float d, float min_geom, float max_geom) {
+    return 1.0f - lod_weight_geometry(d, min_geom, max_geom);
+}
+
+// Fig 4.13 / Algorithm 1: the half-width of the transition window, smallest at w = 0 and 1.
+CANOPY_FN float lod_window(float w) {
+    return LOD_OMEGA_MAX * (LOD_OMEGA_0 + (1.0f - LOD_OMEGA_0) * (1.0f - abs(2.0f * clamp(w, 0.0f, 1.0f) - 1.0f)));
+}
+
+// The share of a blade (threshold dth, local density ld) the far representation draws at the
+// far weight w (w_vs of eq 4.4, or w_2): Algorithm 1's opacity with canopy's centred window;
+// 0 where the blade is thinned away (dth > ld) or there is no grass (ld < 0.01).
+CANOPY_FN float lod_far_opacity(float dth, float ld, float w) {
+    if (ld < LOD_MIN_DENSITY || dth > ld) return 0.0f;
+    // The ends exactly, whatever the rounding of the window's edge at dth = ld.
+    if (w <= 0.0f) return 0.0f;
+    if (w >= 1.0f) return 1.0f;
+    float omega = lod_window(w);
+    float centre = clamp(w, 0.0f, 1.0f) * (1.0f + 2.0f * omega) - omega;
+    return clamp(((centre + omega) * ld - dth) / (2.0f * omega * ld), 0.0f, 1.0f);
+}
+
+// The near representation's share (eq 4.6): the complement, 0 where the blade is not drawn.
+CANOPY_FN float lod_near_opacity(float dth, float ld, float w) {
+    if (ld < LOD_MIN_DENSITY || dth > ld) return 0.0f;
+    return 1.0f - lod_far_opacity(dth, ld, w);
+}
+
+// Lemme eq 5.25 made complementary: the first representation (weight w1) keeps the blades with
+// bdth <= w1 ld, the second the rest of those the density keeps.
+CANOPY_FN bool lod_in_first(float bdth, float ld, float w1) { return bdth <= clamp(w1, 0.0f, 1.0f) * ld; }
+CANOPY_FN bool lod_in_second(float bdth, float ld, float w1) {
+    return bdth <= ld && !lod_in_first(bdth, ld, w1);
+}
+
+// Lemme eq 5.26 (a smoothstep window of half-width eps around w1 in bdth / ld) and its complement,
+// 0 where no grass is (ld = 0) instead of a division by zero.
+CANOPY_FN float lod_first_opacity_smooth(float bdth, float ld, float w1, float eps) {
+    if (!(ld > 0.0f) || bdth > ld) return 0.0f;
+    return 1.0f - smoothstep(w1 - eps, w1 + eps, bdth / ld);
+}
+CANOPY_FN float lod_second_opacity_smooth(float bdth, float ld, float w1, float eps) {
+    if (!(ld > 0.0f) || bdth > ld) return 0.0f;
+    return smoothstep(w1 - eps, w1 + eps, bdth / ld);
+}
+
+CANOPY_END_NAMESPACE
+
+#endif
