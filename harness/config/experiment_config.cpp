@@ -43,6 +43,9 @@ void apply_scene_variant(TomlReader& variant, Scene& scene) {
         throw variant.error("name", fmt::format("the scene variant's name {} cannot be used: {}", printable_name(scene.name),
                                                 *problem),
                             fmt::format("scene names become file names and case ids: use {}", kFileNameRule));
+    // Before light_size, which resizes the shadow-casting light this may make.
+    if (variant.has("light_casts_shadows"))
+        scene.lights.front().casts_shadows = variant.get_bool("light_casts_shadows", true);
     if (variant.has("light_size")) {
         const double size = variant.get_float("light_size", 0.0);
         // A rect's side or a sphere's diameter, within the limits of a light's size (scene_limits.hpp).
@@ -66,8 +69,6 @@ void apply_scene_variant(TomlReader& variant, Scene& scene) {
     }
     // Whether the scene's first light casts shadows: a grass scene's "local" (false: no
     // blade-on-blade shadowing) and "shadowed" (true) reference modes from one scene file.
-    if (variant.has("light_casts_shadows"))
-        scene.lights.front().casts_shadows = variant.get_bool("light_casts_shadows", true);
     variant.finish();
 }
 

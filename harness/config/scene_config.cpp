@@ -589,8 +589,17 @@ Scene parse_scene(const std::string& text, const std::filesystem::path& file) {
     const std::filesystem::path config_folder = std::filesystem::absolute(file).parent_path();
     for (size_t i = 0; i < object_sections.size(); ++i)
         scene.objects.push_back(read_object(object_sections[i], i, config_folder));
-    for (size_t i = 0; i < population_sections.size(); ++i)
-        scene.populations.push_back(read_population(population_sections[i], i, config_folder));
+    for (size_t i = 0; i < population_sections.size(); ++i) {
+        Population population = read_population(population_sections[i], i, config_folder);
+        // Techniques draw a population by its name: two of one name would draw the first twice.
+        for (const Population& earlier : scene.populations)
+            if (earlier.name == population.name)
+                throw population_sections[i].error(
+                    "name", fmt::format("a second population is named '{}' (the first is at line {})", population.name,
+                                        earlier.where.line),
+                    "give every [[population]] a name of its own");
+        scene.populations.push_back(std::move(population));
+    }
     return scene;
 }
 

@@ -47,6 +47,7 @@ GpuScene::GpuScene(const GpuContext& gpu, MemoryLedger& ledger, const Scene& sce
         for (int c = 0; c < 3; ++c) draw.draw.constants.normal_matrix[c] = glm::vec4(glm::mat3(1.0f)[c], 0.0f);
         draw.draw.constants.albedo = glm::vec4(population.material.albedo, 1.0f);
         draw.instance_count = uint32_t(population.instances.size());
+        triangles_ += population.prototype.triangle_count() * population.instances.size();
         // Per-vertex family data parallel to the shared vertex buffer: zeros for the objects'
         // vertices and for populations that have none.
         all_vertex_data.resize(all_vertices.size());

@@ -33,7 +33,8 @@ public:
 
     // Binds the buffers and draws every instance (only shadow casters when `casters_only`).
     void draw(VkCommandBuffer commands, VkPipelineLayout layout, bool casters_only) const;
-    size_t triangle_count() const { return triangles_; }  // summed over instances, populations excluded
+    // Summed over instances and the uploaded populations' copies (those of the technique's kinds).
+    size_t triangle_count() const { return triangles_; }
 
     // The uploaded populations, in scene order.
     std::span<const GeneratedPopulation> populations() const { return populations_; }

@@ -35,7 +35,7 @@ std::vector<TechniqueVariant> technique_variants(const std::string& family) {
         {"grass.geometry", {{"samples", 1LL}, {"coverage", std::string("alpha_test")}}},
         {"grass.geometry", {{"coverage", std::string("alpha_test")}}},
         {"grass.billboard", {{"orientation", std::string("camera_facing")}, {"resolution", 64LL}}},
-        {"grass.image", {{"resolution", 64LL}, {"slice_height", 0.0}}},
+        {"grass.image", {{"resolution", 64LL}, {"slice_height", 0.01}}},
     };
     for (const TechniqueVariant& v : extra)
         if (family.empty() || family_of(v.technique) == family) all.push_back(v);

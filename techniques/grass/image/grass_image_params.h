@@ -6,8 +6,8 @@
 
 #define GRASS_IMAGE_PARAMS(SHADER, PLAN, DERIVED)                                                          \
     PLAN(integer, resolution, (256, 16, 4096), "texels across the baked top view of the patch (width and height)") \
-    SHADER(real, slice_height, (0.1, 0.0, 1.0),                                                             \
-         "the slice's height above the ground, a fraction of the patch's tallest blade (Lemme: 'a low offset')")
+    SHADER(real, slice_height, (0.1, 0.01, 1.0),                                                            \
+         "the slice's height above the ground, a fraction of the patch's tallest blade (Lemme: 'a low offset'; above 0, or the ground hides it)")
 
 CANOPY_BEGIN_NAMESPACE
 CANOPY_PARAM_BLOCK(GrassImageParams, GRASS_IMAGE_PARAMS)

@@ -141,6 +141,13 @@ TEST_CASE("grass population: bad parameters name the line and the fix") {
         REQUIRE(triangles);
         CHECK(std::string(triangles->what()).find("the reference can flatten") != std::string::npos);
     }
+    SUBCASE("two populations of one name") {
+        const std::string text = std::string(kScene) + "[[population]]\nname = \"lawn\"\nkind = \"grass\"\n";
+        const auto error = test::config_error_of([&] { parse_scene(text, "lawn.toml"); });
+        REQUIRE(error);
+        CHECK(std::string(error->what()).find("a second population is named 'lawn'") != std::string::npos);
+        CHECK(error->line() == 1 + std::count(text.begin(), text.begin() + long(text.rfind("name = \"lawn\"")), '\n'));
+    }
     SUBCASE("an unknown kind lists the kinds") {
         std::string text = kScene;
         text.replace(text.find("kind = \"grass\""), 14, "kind = \"gras\"");
