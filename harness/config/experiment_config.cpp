@@ -43,6 +43,8 @@ void apply_scene_variant(TomlReader& variant, Scene& scene) {
         throw variant.error("name", fmt::format("the scene variant's name {} cannot be used: {}", printable_name(scene.name),
                                                 *problem),
                             fmt::format("scene names become file names and case ids: use {}", kFileNameRule));
+    // Whether the scene's first light casts shadows: a grass scene's "local" (false: no
+    // blade-on-blade shadowing) and "shadowed" (true) reference modes from one scene file.
     // Before light_size, which resizes the shadow-casting light this may make.
     if (variant.has("light_casts_shadows"))
         scene.lights.front().casts_shadows = variant.get_bool("light_casts_shadows", true);
@@ -67,8 +69,6 @@ void apply_scene_variant(TomlReader& variant, Scene& scene) {
         for (Object& object : scene.objects) object.casts_shadows = casts;
         for (Population& population : scene.populations) population.prototype.casts_shadows = casts;
     }
-    // Whether the scene's first light casts shadows: a grass scene's "local" (false: no
-    // blade-on-blade shadowing) and "shadowed" (true) reference modes from one scene file.
     variant.finish();
 }
 

@@ -12,14 +12,12 @@
 #include "../common/grass_population.hpp"
 
 #include "shaders/grass/billboard_bake_frag.h"
-#include "shaders/grass/patch_bake_vert.h"
 #include "shaders/grass/grass_billboards_frag.h"
 #include "shaders/grass/grass_billboards_vert.h"
 
 #include <fmt/format.h>
 
 #include <array>
-#include <cstddef>
 
 namespace canopy {
 namespace {
@@ -27,7 +25,7 @@ namespace {
 namespace names {
 constexpr const char* kImage = "billboard";      // RGBA32F x 2 layers: radiance, threshold
 constexpr const char* kBakeDepth = "bake_depth";
-constexpr const char* kQuads = "quads";          // 12 BillboardVertex: the xy quad, then the zy quad
+constexpr const char* kQuads = "quads";          // 12 QuadVertex: the xy quad, then the zy quad
 constexpr const char* kFront = "bake_front";     // PatchBake of layer 0
 constexpr const char* kSide = "bake_side";       // PatchBake of layer 1
 }  // namespace names
@@ -38,36 +36,18 @@ using grass::cleared;
 using grass::kFarDepth;
 using grass::use;
 
-// One vertex of the billboard quads, patch space: xyz, w = the image layer; uv in the image
-// (v = 0 at the top row, the quad's top). grass_billboards.vert reads it at locations 0-1.
-struct BillboardVertex {
-    glm::vec4 position;
-    glm::vec4 uv;
-};
-
-// The quads for a prototype with these bounds (patch space): two triangles each, the xy quad at
-// the patch's z centre (layer 0), the zy quad at its x centre (layer 1), framed as the bakes are.
-std::array<BillboardVertex, kQuadVertices> billboard_quads(const Bounds& b) {
-    const float height = std::max(b.max.y, 1e-4f);
-    const glm::vec2 x(b.min.x, std::max(b.max.x, b.min.x + 1e-4f)), z(b.min.z, std::max(b.max.z, b.min.z + 1e-4f));
-    std::array<BillboardVertex, kQuadVertices> quads;
-    const std::array<glm::vec2, 6> corners{glm::vec2(0, 0), glm::vec2(1, 0), glm::vec2(1, 1),
-                                           glm::vec2(0, 0), glm::vec2(1, 1), glm::vec2(0, 1)};
+// The quads for a prototype with these bounds (patch space) over its bake_frame: the xy quad at
+// the patch's z centre (layer 0, in position.w), the zy quad at its x centre (layer 1).
+std::array<grass::QuadVertex, kQuadVertices> billboard_quads(const Bounds& bounds) {
+    const Bounds f = grass::bake_frame(bounds);
+    std::array<grass::QuadVertex, kQuadVertices> quads;
     for (size_t i = 0; i < 6; ++i) {
-        const glm::vec2 c = corners[i];
+        const glm::vec2 c = grass::kQuadCorners[i];
         const glm::vec4 uv(c.x, 1.0f - c.y, 0.0f, 0.0f);
-        quads[i] = {glm::vec4(x.x + c.x * (x.y - x.x), c.y * height, 0.5f, 0.0f), uv};
-        quads[6 + i] = {glm::vec4(0.5f, c.y * height, z.x + c.x * (z.y - z.x), 1.0f), uv};
+        quads[i] = {glm::vec4(f.min.x + c.x * (f.max.x - f.min.x), c.y * f.max.y, 0.5f, 0.0f), uv};
+        quads[6 + i] = {glm::vec4(0.5f, c.y * f.max.y, f.min.z + c.x * (f.max.z - f.min.z), 1.0f), uv};
     }
     return quads;
-}
-
-// `layout` without the attributes at locations [first, last] (their bindings stay, so the
-// buffers a draw binds keep their slots).
-VertexLayout without_locations(VertexLayout layout, uint32_t first, uint32_t last) {
-    std::erase_if(layout.attributes,
-                  [&](const VertexLayout::Attribute& a) { return a.location >= first && a.location <= last; });
-    return layout;
 }
 
 class GrassBillboard final : public Technique {
@@ -92,7 +72,7 @@ public:
                             .extent = ImageExtent::square(resolution), .layers = 2, .persistent = true});
         g.images.push_back({.name = names::kBakeDepth, .format = VK_FORMAT_D32_SFLOAT,
                             .extent = ImageExtent::square(resolution)});
-        g.buffers.push_back({.name = names::kQuads, .bytes = sizeof(BillboardVertex) * kQuadVertices,
+        g.buffers.push_back({.name = names::kQuads, .bytes = sizeof(grass::QuadVertex) * kQuadVertices,
                              .usage = kVertexBuffer, .persistent = true});
         for (const char* camera : {names::kFront, names::kSide})
             g.buffers.push_back({.name = camera, .bytes = sizeof(shader::PatchBake), .usage = kUniformBuffer});
@@ -112,12 +92,7 @@ public:
         };
         g.passes.push_back(std::move(setup));
 
-        RasterState bake;
-        bake.vertex_spirv = patch_bake_vert;
-        bake.fragment_spirv = billboard_bake_frag;
-        // The population's layout without the copies' attributes (locations 2-9), which the bake
-        // does not read: it draws the prototype in patch space.
-        bake.vertices = without_locations(VertexLayout::population(), 2, 9);
+        const RasterState bake = grass::bake_state(billboard_bake_frag);
         const std::array<const char*, 2> cameras{names::kFront, names::kSide};
         for (uint32_t layer = 0; layer < 2; ++layer) {
             PassDecl p{.name = layer == 0 ? "bake_front" : "bake_side", .kind = PassKind::raster, .phase = Phase::load};
@@ -127,12 +102,7 @@ public:
                               layer),
                       cleared(names::kBakeDepth, Use::depth_attachment, kFarDepth, false)};
             p.settings = fmt::format("layer={}", layer);
-            p.record = [bake](PassContext& pc) {
-                const GeneratedPopulation* grass = grass::first_grass(pc.populations());
-                if (!grass) return;
-                pc.bind(pc.raster_pipeline(bake));
-                pc.draw_population(grass->name, 1);
-            };
+            p.record = [bake](PassContext& pc) { grass::record_prototype_bake(pc, bake); };
             g.passes.push_back(std::move(p));
         }
 
@@ -146,12 +116,8 @@ public:
         RasterState quads;
         quads.vertex_spirv = grass_billboards_vert;
         quads.fragment_spirv = grass_billboards_frag;
-        quads.vertices.bindings = {{uint32_t(sizeof(BillboardVertex)), false}};
-        quads.vertices.attributes = {
-            {0, 0, VK_FORMAT_R32G32B32A32_SFLOAT, uint32_t(offsetof(BillboardVertex, position))},
-            {1, 0, VK_FORMAT_R32G32B32A32_SFLOAT, uint32_t(offsetof(BillboardVertex, uv))}};
-        quads.vertices.population_copies();
-        quads.vertices = without_locations(quads.vertices, 6, 8);  // the normal matrix: billboards have no normals
+        // Without the copies' normal matrix (locations 6-8): billboards have no normals.
+        quads.vertices = grass::without_locations(grass::quad_layout(), 6, 8);
         const uint32_t vertices = crossed ? kQuadVertices : kQuadVertices / 2;
         frame.settings = fmt::format("orientation={}", g.report["orientation"]);
         frame.record = [ground, quads, vertices](PassContext& pc) {

@@ -1,11 +1,18 @@
-// What every grass technique's frame graph declares alike: resource uses written briefly, and
-// the pipeline that draws the scene's own objects (the ground) with the family's shading.
+// What every grass technique's frame graph declares alike: resource uses written briefly, the
+// pipeline that draws the scene's own objects (the ground) with the family's shading, and what
+// the image-based techniques share: the load-phase bake of the prototype and the quads that show
+// it once per cell.
 #pragma once
 
 #include "graph/frame_graph.hpp"
+#include "graph/pass_context.hpp"
 #include "graph/raster_state.hpp"
 
+#include <glm/glm.hpp>
+
 #include <array>
+#include <cstdint>
+#include <span>
 #include <string>
 
 namespace canopy::grass {
@@ -26,5 +33,28 @@ inline constexpr std::array<float, 4> kFarDepth{1.0f, 0.0f, 0.0f, 0.0f};
 
 // scene.vert and grass_ground.frag: the scene's objects shaded as the blades are.
 RasterState ground_state();
+
+// `layout` without the attributes at locations [first, last]; their bindings stay, so the
+// buffers a draw binds keep their slots.
+VertexLayout without_locations(VertexLayout layout, uint32_t first, uint32_t last);
+
+// A bake of the prototype: shaders/patch_bake.vert (its camera at binding 1) and `fragment_spirv`,
+// with the population's layout less the copies' attributes (locations 2-9): the prototype is
+// drawn in patch space.
+RasterState bake_state(std::span<const uint32_t> fragment_spirv);
+// Records that bake: the first grass population's prototype, drawn once; nothing without one.
+void record_prototype_bake(PassContext& pc, const RasterState& bake);
+
+// One vertex of the quads that show a bake, patch space (w: whatever the technique's shader
+// reads there, e.g. the image layer), and its coordinates in the baked image.
+struct QuadVertex {
+    glm::vec4 position;
+    glm::vec4 uv;
+};
+// The corners of a quad's two triangles, (0, 0) to (1, 1).
+inline constexpr std::array<glm::vec2, 6> kQuadCorners{glm::vec2(0, 0), glm::vec2(1, 0), glm::vec2(1, 1),
+                                                       glm::vec2(0, 0), glm::vec2(1, 1), glm::vec2(0, 1)};
+// QuadVertex at locations 0-1 (binding 0), then the copies (VertexLayout::population_copies).
+VertexLayout quad_layout();
 
 }  // namespace canopy::grass

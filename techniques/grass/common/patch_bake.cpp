@@ -8,16 +8,21 @@ namespace canopy::grass {
 
 namespace {
 
-// The range [lo, hi] with a width of at least 1e-4 (a flat prototype still frames).
-glm::vec2 range(float lo, float hi) { return {lo, std::max(hi, lo + 1e-4f)}; }
-
 // ndc = 2 (p - lo) / (hi - lo) - 1 along one axis: scale and offset.
 glm::vec2 to_ndc(glm::vec2 r) { return {2.0f / (r.y - r.x), -1.0f - 2.0f * r.x / (r.y - r.x)}; }
 
 }  // namespace
 
-shader::PatchBake ortho_bake(const Bounds& b, BakeView view) {
-    const glm::vec2 x = range(b.min.x, b.max.x), y = range(0.0f, b.max.y), z = range(b.min.z, b.max.z);
+Bounds bake_frame(const Bounds& b) {
+    Bounds f;
+    f.min = glm::vec3(b.min.x, 0.0f, b.min.z);
+    f.max = glm::max(glm::vec3(b.max.x, b.max.y, b.max.z), f.min + glm::vec3(1e-4f));
+    return f;
+}
+
+shader::PatchBake ortho_bake(const Bounds& bounds, BakeView view) {
+    const Bounds f = bake_frame(bounds);
+    const glm::vec2 x(f.min.x, f.max.x), y(f.min.y, f.max.y), z(f.min.z, f.max.z);
     glm::mat4 m(0.0f);  // column-major: m[column][row]
     m[3][3] = 1.0f;
     shader::PatchBake bake;

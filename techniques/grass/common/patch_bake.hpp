@@ -18,7 +18,11 @@ namespace canopy::grass {
 //   down:    looking along -y from above; u = x, v = z
 enum class BakeView { along_z, along_x, down };
 
-// The camera framing `bounds` (patch space; y from 0, the ground, to bounds.max.y).
+// What a bake frames of the prototype's `bounds`: y from 0 (the ground) to the top, and every
+// side at least 1e-4 long, so a flat prototype still frames. The quads that show a bake span it.
+Bounds bake_frame(const Bounds& bounds);
+
+// The camera framing bake_frame(bounds) (patch space).
 shader::PatchBake ortho_bake(const Bounds& bounds, BakeView view);
 
 // The first population of kind "grass" (what the bakes draw), or nullptr.

@@ -13,12 +13,10 @@
 #include "shaders/grass/grass_image_frag.h"
 #include "shaders/grass/grass_image_vert.h"
 #include "shaders/grass/image_bake_frag.h"
-#include "shaders/grass/patch_bake_vert.h"
 
 #include <fmt/format.h>
 
 #include <array>
-#include <cstddef>
 
 namespace canopy {
 namespace {
@@ -31,25 +29,18 @@ namespace names {
 constexpr const char* kAlbedo = "slice_albedo";  // RGBA32F: albedo, threshold
 constexpr const char* kNormal = "slice_normal";  // RGBA16F: patch-space normal
 constexpr const char* kBakeDepth = "bake_depth";
-constexpr const char* kQuad = "quad";            // 6 SliceVertex
+constexpr const char* kQuad = "quad";            // 6 QuadVertex
 constexpr const char* kCamera = "bake_camera";   // PatchBake, looking down
 }  // namespace names
 
-// One vertex of the slice quad, patch space; uv in the top view (u = x, v = z).
-struct SliceVertex {
-    glm::vec4 position;
-    glm::vec4 uv;
-};
-
-// The quad over the prototype's bounds in x and z at `height` above the ground, framed as the
-// top-view bake is (grass::BakeView::down).
-std::array<SliceVertex, 6> slice_quad(const Bounds& b, float height) {
-    const std::array<glm::vec2, 6> corners{glm::vec2(0, 0), glm::vec2(1, 0), glm::vec2(1, 1),
-                                           glm::vec2(0, 0), glm::vec2(1, 1), glm::vec2(0, 1)};
-    std::array<SliceVertex, 6> quad;
+// The quad over the prototype's bake_frame in x and z at `height` above the ground, its
+// coordinates those of the top-view bake (grass::BakeView::down: u = x, v = z).
+std::array<grass::QuadVertex, 6> slice_quad(const Bounds& bounds, float height) {
+    const Bounds f = grass::bake_frame(bounds);
+    std::array<grass::QuadVertex, 6> quad;
     for (size_t i = 0; i < 6; ++i) {
-        const glm::vec2 c = corners[i];
-        quad[i] = {glm::vec4(b.min.x + c.x * (b.max.x - b.min.x), height, b.min.z + c.y * (b.max.z - b.min.z), 1.0f),
+        const glm::vec2 c = grass::kQuadCorners[i];
+        quad[i] = {glm::vec4(f.min.x + c.x * (f.max.x - f.min.x), height, f.min.z + c.y * (f.max.z - f.min.z), 1.0f),
                    glm::vec4(c.x, c.y, 0.0f, 0.0f)};
     }
     return quad;
@@ -77,7 +68,7 @@ public:
                             .extent = ImageExtent::square(resolution), .persistent = true});
         g.images.push_back({.name = names::kBakeDepth, .format = VK_FORMAT_D32_SFLOAT,
                             .extent = ImageExtent::square(resolution)});
-        g.buffers.push_back({.name = names::kQuad, .bytes = sizeof(SliceVertex) * 6, .usage = kVertexBuffer,
+        g.buffers.push_back({.name = names::kQuad, .bytes = sizeof(grass::QuadVertex) * 6, .usage = kVertexBuffer,
                              .persistent = true});
         g.buffers.push_back({.name = names::kCamera, .bytes = sizeof(shader::PatchBake), .usage = kUniformBuffer});
 
@@ -93,11 +84,7 @@ public:
         };
         g.passes.push_back(std::move(setup));
 
-        RasterState bake;
-        bake.vertex_spirv = patch_bake_vert;
-        bake.fragment_spirv = image_bake_frag;
-        bake.vertices = VertexLayout::population();
-        std::erase_if(bake.vertices.attributes, [](const VertexLayout::Attribute& a) { return a.location >= 2 && a.location <= 9; });
+        const RasterState bake = grass::bake_state(image_bake_frag);
         PassDecl top{.name = "bake_top", .kind = PassKind::raster, .phase = Phase::load};
         top.push_constant_bytes = sizeof(DrawConstants);
         top.uses = {use(graph_names::kFrameUniforms, Use::uniform, 0), use(names::kCamera, Use::uniform, 1),
@@ -105,12 +92,7 @@ public:
                     cleared(names::kNormal, Use::color_attachment, {0.0f, 1.0f, 0.0f, 0.0f}),
                     cleared(names::kBakeDepth, Use::depth_attachment, kFarDepth, false)};
         top.settings = "down";
-        top.record = [bake](PassContext& pc) {
-            const GeneratedPopulation* grass = grass::first_grass(pc.populations());
-            if (!grass) return;
-            pc.bind(pc.raster_pipeline(bake));
-            pc.draw_population(grass->name, 1);
-        };
+        top.record = [bake](PassContext& pc) { grass::record_prototype_bake(pc, bake); };
         g.passes.push_back(std::move(top));
 
         PassDecl frame{.name = "slices", .kind = PassKind::raster};
@@ -123,10 +105,7 @@ public:
         RasterState slice;
         slice.vertex_spirv = grass_image_vert;
         slice.fragment_spirv = grass_image_frag;
-        slice.vertices.bindings = {{uint32_t(sizeof(SliceVertex)), false}};
-        slice.vertices.attributes = {{0, 0, VK_FORMAT_R32G32B32A32_SFLOAT, uint32_t(offsetof(SliceVertex, position))},
-                                     {1, 0, VK_FORMAT_R32G32B32A32_SFLOAT, uint32_t(offsetof(SliceVertex, uv))}};
-        slice.vertices.population_copies();
+        slice.vertices = grass::quad_layout();
         frame.settings = "one quad per cell";
         frame.record = [ground, slice](PassContext& pc) {
             pc.bind(pc.raster_pipeline(ground));
