@@ -87,7 +87,10 @@ prototype = { shape = "box", size = [0.3, 0.2, 0.18], translate = [0, 0.1, 0], a
 
 Scene field() { return parse_scene(kScene, "scatter-field.toml"); }
 
-// Fewer, larger copies with slots cut across their x axis: each slab about 5 pixels wide.
+// Fewer, larger copies with slots cut across their x axis: each slab about 5 pixels wide. The
+// boxes stand 1 cm off the ground: a bottom face on the ground would show through the slots in a
+// depth tie with it, which the rasteriser and Embree break differently from one CPU to another
+// (14 pixels on an AVX-512 AMD EPYC).
 const char* kMaskedPopulation = R"(
 [[population]]
 name = "slatted"
@@ -97,7 +100,7 @@ region_min = [-2.2, -1.6]
 region_max = [2.2, 1.8]
 seed = 5
 scale = [0.9, 1.2]
-prototype = { shape = "box", size = [0.9, 0.5, 0.6], translate = [0, 0.25, 0], albedo = [0.9, 0.2, 0.1] }
+prototype = { shape = "box", size = [0.9, 0.5, 0.6], translate = [0, 0.26, 0], albedo = [0.9, 0.2, 0.1] }
 alpha_mask = { kind = "stripes", axis = "x", period = 0.4, opaque = 0.5 }
 )";
 
@@ -323,7 +326,7 @@ TEST_CASE("population draw: an alpha-masked population is cut where the referenc
     SUBCASE("the raster ignores the mask") {
         const Disagreement d = compare_with_reference(render(scene, population_flat_frag), reference_pixels(scene));
         CAPTURE(d.coverage);
-        CHECK(d.coverage > 150);
+        CHECK(d.coverage > 100);  // 160 here
     }
     SUBCASE("the reference ignores the mask") {
         const Disagreement d = compare_with_reference(raster, reference_pixels(solid));
@@ -337,10 +340,10 @@ TEST_CASE("population draw: an alpha-masked population is cut where the referenc
         return compare_with_reference(raster, reference_pixels(changed)).coverage;
     };
     SUBCASE("the reference cuts wider slots") {
-        CHECK(coverage_with_mask([](AlphaMask& m) { m.opaque = 0.3f; }) > 50);  // 359 here
+        CHECK(coverage_with_mask([](AlphaMask& m) { m.opaque = 0.3f; }) > 50);  // 96 here
     }
     SUBCASE("the reference cuts across another axis") {
-        CHECK(coverage_with_mask([](AlphaMask& m) { m.axis = 2; }) > 20);  // 63 here
+        CHECK(coverage_with_mask([](AlphaMask& m) { m.axis = 2; }) > 20);  // 319 here
     }
     // The fragment shader's mask discards: a masked shader on an unmasked population cuts nothing.
     const ImageDifference unmasked = differences(render(solid, population_masked_frag), render(solid, population_flat_frag));
