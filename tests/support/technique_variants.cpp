@@ -36,6 +36,7 @@ std::vector<TechniqueVariant> technique_variants(const std::string& family) {
         {"grass.geometry", {{"coverage", std::string("alpha_test")}}},
         {"grass.billboard", {{"orientation", std::string("camera_facing")}, {"resolution", 64LL}}},
         {"grass.image", {{"resolution", 64LL}, {"slice_height", 0.01}}},
+        {"grass.volume", {{"slices", 1LL}, {"resolution", 32LL}, {"height_resolution", 8LL}}},
     };
     for (const TechniqueVariant& v : extra)
         if (family.empty() || family_of(v.technique) == family) all.push_back(v);

@@ -48,6 +48,7 @@ shader::PatchBake ortho_bake(const Bounds& bounds, BakeView view) {
         bake.toward_viewer = glm::vec4(0.0f, 1.0f, 0.0f, 0.0f);
     }
     bake.view_proj = m;
+    bake.section = glm::vec4(-1e30f, 1e30f, 0.0f, 0.0f);
     return bake;
 }
 

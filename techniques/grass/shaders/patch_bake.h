@@ -15,8 +15,15 @@ CANOPY_CONST float PATCH_BAKE_EMPTY = 2.0f;
 
 struct PatchBake {
     mat4 view_proj;      // patch space -> the bake's clip space
-    vec4 toward_viewer;  // unit: the side of a two-sided blade the bake sees
+    vec4 toward_viewer;  // unit: the side of a two-sided blade the bake sees (the axis it looks along)
+    vec4 section;        // x, y: a slice's bake keeps what lies in [x, y) along toward_viewer
 };
+
+// Whether patch point `p` lies in the bake's section (between Lemme's two clipping planes, §4.2.1).
+CANOPY_FN bool patch_bake_keeps(PatchBake bake, vec3 p) {
+    float along = dot(p, vec3(bake.toward_viewer));
+    return along >= bake.section.x && along < bake.section.y;
+}
 
 CANOPY_END_NAMESPACE
 

@@ -7,6 +7,8 @@
 #include "cell_mirroring.h"
 #include "grass_density.h"
 #include "lod_selection.h"
+#include "patch_bake.h"
+#include "volume_walk.h"
 
 layout(local_size_x = 1) in;
 layout(std430, binding = 0) buffer Out { vec4 values[]; };
@@ -25,6 +27,14 @@ void main() {
                      lod_weight_vertical_slices(30.0, 10.0, 20.0, 40.0, 80.0) + lod_weight_horizontal_slice(15.0, 10.0, 20.0));
     values[8] = vec4(lod_in_first(0.2, 0.5, 0.5) ? 1.0 : 0.0, lod_in_second(0.3, 0.5, 0.5) ? 1.0 : 0.0,
                      lod_first_opacity_smooth(0.2, 0.5, 0.5, 0.02), lod_second_opacity_smooth(0.2, 0.0, 0.5, 0.02));
+    VolumeWalk walk = volume_walk(vec3(0.1, 1.0, 0.3), vec3(0.5, -0.8, 0.0), 4.0);
+    VolumeHit hit = volume_next_hit(walk, vec3(0.1, 1.0, 0.3), ivec2(1, 0), 4.0);
+    values[9] = vec4(hit.lambda, float(hit.axis + hit.slice), volume_entry(vec3(-0.5, 0.5, 0.5), vec3(1.0, 0.0, 0.0)),
+                     walk.first.x);
+    PatchBake bake;
+    bake.toward_viewer = vec4(1.0, 0.0, 0.0, 0.0);
+    bake.section = vec4(0.0, 0.5, 0.0, 0.0);
+    values[10] = vec4(patch_bake_keeps(bake, vec3(0.25, 0.0, 0.0)) ? 1.0 : 0.0, 0.0, 0.0, 0.0);
     values[4] = vec4(blade_half_width(uv.y, 2.0), blade_opaque(uv, 2.0) ? 1.0 : 0.0, blade_alpha(uv, 2.0, 0.01),
                      blade_coverage(2.0));
 }

@@ -7,6 +7,7 @@
 #include "scene/population_kind.hpp"
 #include "support/reference_hits.hpp"
 
+#include <algorithm>
 #include <optional>
 
 namespace canopy::grass::test {
@@ -21,23 +22,26 @@ Scene one_cell_scene(const std::string& camera, const std::string& extra_params)
                        "one-cell.toml");
 }
 
-std::vector<TexelTruth> traced_bake(const Scene& scene, View view, uint32_t size) {
+std::vector<TexelTruth> traced_bake(const Scene& scene, View view, uint32_t width, uint32_t height, Section section) {
     const EmbreeScene embree(scene, build_scene_meshes(scene));
     const FamilyPopulation& family = *scene.populations.at(0).family;
     const uint32_t per_blade = 2 * (uint32_t(scene.populations[0].params.integer("subdivisions")) + 1);
     Bounds b;
     for (const Vertex& v : family.prototype.vertices) b.extend(v.position);
-    std::vector<TexelTruth> truth(size_t(size) * size);
-    for (uint32_t j = 0; j < size; ++j)
-        for (uint32_t i = 0; i < size; ++i) {
-            const float u = (float(i) + 0.5f) / float(size), v = (float(j) + 0.5f) / float(size);
+    // The rays start at the section's far side from the bake's camera, past the camera's near
+    // plane (trace_primary clips there).
+    const float near = scene.camera.near_plane;
+    std::vector<TexelTruth> truth(size_t(width) * height);
+    for (uint32_t j = 0; j < height; ++j)
+        for (uint32_t i = 0; i < width; ++i) {
+            const float u = (float(i) + 0.5f) / float(width), v = (float(j) + 0.5f) / float(height);
             const float y = b.max.y * (1.0f - v);
             Ray ray{};
             if (view == View::along_z) {
-                ray.origin = {b.min.x + u * (b.max.x - b.min.x), y, b.max.z + 1.0f};
+                ray.origin = {b.min.x + u * (b.max.x - b.min.x), y, std::min(section.hi, b.max.z + 1.0f) + near};
                 ray.direction = {0.0f, 0.0f, -1.0f};
             } else if (view == View::along_x) {
-                ray.origin = {b.max.x + 1.0f, y, b.min.z + u * (b.max.z - b.min.z)};
+                ray.origin = {std::min(section.hi, b.max.x + 1.0f) + near, y, b.min.z + u * (b.max.z - b.min.z)};
                 ray.direction = {-1.0f, 0.0f, 0.0f};
             } else {
                 ray.origin = {b.min.x + u * (b.max.x - b.min.x), b.max.y + 1.0f, b.min.z + v * (b.max.z - b.min.z)};
@@ -45,25 +49,27 @@ std::vector<TexelTruth> traced_bake(const Scene& scene, View view, uint32_t size
             }
             const std::optional<PrimaryHit> hit = trace_primary(embree, scene.camera, ray.direction, ray);
             if (!hit) continue;
+            const float along = view == View::along_x ? hit->surface.position.x : hit->surface.position.z;
+            if (view != View::down && along < section.lo) continue;
             const uint32_t blade = (hit->primitive % family.prototype.triangle_count()) / per_blade;
             const uint32_t first_vertex = family.prototype.indices[size_t(blade) * per_blade * 3];
-            truth[size_t(j) * size + i] = {family.vertex_data[first_vertex].data[0].z, int64_t(blade)};
+            truth[size_t(j) * width + i] = {family.vertex_data[first_vertex].data[0].z, int64_t(blade)};
         }
     return truth;
 }
 
 BakeAgreement compare_bake(const Image& baked, const std::vector<TexelTruth>& truth, bool flip_u) {
     BakeAgreement a;
-    const int size = baked.width;
-    const auto at = [&](int i, int j) -> const TexelTruth& { return truth[size_t(j) * size_t(size) + size_t(i)]; };
-    for (int j = 1; j + 1 < size; ++j)
-        for (int i = 1; i + 1 < size; ++i) {
+    const int width = baked.width, height = baked.height;
+    const auto at = [&](int i, int j) -> const TexelTruth& { return truth[size_t(j) * size_t(width) + size_t(i)]; };
+    for (int j = 1; j + 1 < height; ++j)
+        for (int i = 1; i + 1 < width; ++i) {
             bool edge = false;
             for (int dj = -1; dj <= 1; ++dj)
                 for (int di = -1; di <= 1; ++di) edge = edge || at(i + di, j + dj).blade != at(i, j).blade;
             if (edge) continue;
             ++a.compared;
-            const float texel = baked.at(flip_u ? size - 1 - i : i, j)[3];
+            const float texel = baked.at(flip_u ? width - 1 - i : i, j)[3];
             const bool covered = at(i, j).blade >= 0;
             a.covered += covered;
             a.coverage += (texel <= 1.0f) != covered;

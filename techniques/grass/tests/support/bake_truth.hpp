@@ -28,7 +28,18 @@ struct TexelTruth {
     int64_t blade = -1;      // -1: no blade
 };
 
-std::vector<TexelTruth> traced_bake(const Scene& scene, View view, uint32_t size);
+// A section of the patch along the axis a bake looks along (x for along_x, z for along_z): what a
+// slice of grass.volume holds, the blades in [lo, hi).
+struct Section {
+    float lo = -1e30f, hi = 1e30f;
+};
+
+// Row-major, width x height texels; a ray that first meets a blade outside `section` sees none.
+std::vector<TexelTruth> traced_bake(const Scene& scene, View view, uint32_t width, uint32_t height,
+                                    Section section = {});
+inline std::vector<TexelTruth> traced_bake(const Scene& scene, View view, uint32_t size) {
+    return traced_bake(scene, view, size, size);
+}
 
 struct BakeAgreement {
     int compared = 0;   // texels off the edges between blades

@@ -1,0 +1,20 @@
+// grass.volume's parameters, written once for C++ and GLSL (harness/shaders/param_block.h).
+#ifndef CANOPY_GRASS_VOLUME_PARAMS_H
+#define CANOPY_GRASS_VOLUME_PARAMS_H
+
+#include "param_block.h"
+
+#define GRASS_VOLUME_PARAMS(SHADER, PLAN, DERIVED)                                                         \
+    SHADER(integer, slices, (8, 1, 64), "vertical slices per direction, x and z (Lemme's Table 7.1: 16)")  \
+    PLAN(integer, resolution, (256, 16, 4096), "texels of a slice across the patch (Lemme's Table 7.1: 1024)") \
+    PLAN(integer, height_resolution, (64, 4, 4096), "texels of a slice up the patch's height (Lemme's Table 7.1: 128)")
+
+CANOPY_BEGIN_NAMESPACE
+CANOPY_PARAM_BLOCK(GrassVolumeParams, GRASS_VOLUME_PARAMS)
+CANOPY_END_NAMESPACE
+
+#ifndef __cplusplus
+#define TECHNIQUE_PARAMS GrassVolumeParams
+#endif
+
+#endif
