@@ -121,12 +121,7 @@ public:
         const uint32_t vertices = crossed ? kQuadVertices : kQuadVertices / 2;
         frame.settings = fmt::format("orientation={}", g.report["orientation"]);
         frame.record = [ground, quads, vertices](PassContext& pc) {
-            pc.bind(pc.raster_pipeline(ground));
-            pc.draw_scene(SceneFilter::all);
-            pc.bind(pc.raster_pipeline(quads));
-            const std::array<std::string, 1> buffers{names::kQuads};
-            for (const GeneratedPopulation& population : pc.populations())
-                pc.draw_over_population(population.name, buffers, vertices);
+            grass::record_ground_and_copies(pc, ground, quads, names::kQuads, vertices);
         };
         g.passes.push_back(std::move(frame));
         return g;

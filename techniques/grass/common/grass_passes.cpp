@@ -6,6 +6,7 @@
 #include "shaders/grass/patch_bake_vert.h"
 #include "shaders/harness/scene_vert.h"
 
+#include <array>
 #include <cstddef>
 
 namespace canopy::grass {
@@ -36,6 +37,16 @@ void record_prototype_bake(PassContext& pc, const RasterState& bake) {
     if (!grass) return;
     pc.bind(pc.raster_pipeline(bake));
     pc.draw_population(grass->name, 1);
+}
+
+void record_ground_and_copies(PassContext& pc, const RasterState& ground, const RasterState& over,
+                              const std::string& vertex_buffer, uint32_t vertex_count) {
+    pc.bind(pc.raster_pipeline(ground));
+    pc.draw_scene(SceneFilter::all);
+    pc.bind(pc.raster_pipeline(over));
+    const std::array<std::string, 1> buffers{vertex_buffer};
+    for (const GeneratedPopulation& population : pc.populations())
+        pc.draw_over_population(population.name, buffers, vertex_count);
 }
 
 VertexLayout quad_layout() {

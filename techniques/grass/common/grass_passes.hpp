@@ -57,4 +57,9 @@ inline constexpr std::array<glm::vec2, 6> kQuadCorners{glm::vec2(0, 0), glm::vec
 // QuadVertex at locations 0-1 (binding 0), then the copies (VertexLayout::population_copies).
 VertexLayout quad_layout();
 
+// What the image-based techniques' frame pass records: the scene's objects with `ground`, then
+// `vertex_count` vertices of `vertex_buffer` drawn with `over` once per copy of every population.
+void record_ground_and_copies(PassContext& pc, const RasterState& ground, const RasterState& over,
+                              const std::string& vertex_buffer, uint32_t vertex_count);
+
 }  // namespace canopy::grass

@@ -108,12 +108,7 @@ public:
         slice.vertices = grass::quad_layout();
         frame.settings = "one quad per cell";
         frame.record = [ground, slice](PassContext& pc) {
-            pc.bind(pc.raster_pipeline(ground));
-            pc.draw_scene(SceneFilter::all);
-            pc.bind(pc.raster_pipeline(slice));
-            const std::array<std::string, 1> buffers{names::kQuad};
-            for (const GeneratedPopulation& population : pc.populations())
-                pc.draw_over_population(population.name, buffers, 6);
+            grass::record_ground_and_copies(pc, ground, slice, names::kQuad, 6);
         };
         g.passes.push_back(std::move(frame));
         return g;

@@ -172,12 +172,7 @@ public:
         volume.vertices = grass::quad_layout();
         frame.settings = "one cuboid per cell, its exit faces drawn";
         frame.record = [ground, volume](PassContext& pc) {
-            pc.bind(pc.raster_pipeline(ground));
-            pc.draw_scene(SceneFilter::all);
-            pc.bind(pc.raster_pipeline(volume));
-            const std::array<std::string, 1> buffers{names::kCuboid};
-            for (const GeneratedPopulation& population : pc.populations())
-                pc.draw_over_population(population.name, buffers, kCuboidVertices);
+            grass::record_ground_and_copies(pc, ground, volume, names::kCuboid, kCuboidVertices);
         };
         g.passes.push_back(std::move(frame));
         return g;

@@ -8,6 +8,7 @@
 #include "support/reference_hits.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 
 namespace canopy::grass::test {
@@ -87,7 +88,8 @@ int grass_pixels(const Image& image) {
     return n;
 }
 
-CoverageAgreement compare_with_reference_hits(const Scene& scene, const Image& image) {
+CoverageAgreement compare_with_reference_hits(const Scene& scene, const Image& image, const Image* visibility,
+                                              float depth_tolerance) {
     const EmbreeScene embree(scene, build_scene_meshes(scene));
     const uint32_t width = uint32_t(image.width), height = uint32_t(image.height);
     const auto hits = canopy::test::reference_hits(scene, embree, width, height);
@@ -108,6 +110,11 @@ CoverageAgreement compare_with_reference_hits(const Scene& scene, const Image& i
             const bool blade = label(x, y) >= 0;
             a.covered += blade;
             a.differ += shows_grass(image.at(x, y)) != blade;
+            if (visibility && blade && shows_grass(image.at(x, y))) {
+                ++a.depth_compared;
+                const float reference_depth = hits[size_t(y) * width + size_t(x)]->hit.view_depth;
+                a.depth_off += std::abs(visibility->at(x, y)[1] - reference_depth) > depth_tolerance;
+            }
         }
     return a;
 }

@@ -57,10 +57,14 @@ int grass_pixels(const Image& image);
 bool shows_grass(const float* rgb);
 
 // A technique's image against the reference's primary rays from the scene's camera, at every
-// pixel centre off the edges where the blade the rays hit changes.
+// pixel centre off the edges where the blade the rays hit changes. With `visibility` (the
+// renderer's pixel-centre visibility, G = view depth), also where both show a blade: how many
+// drawn depths lie more than `depth_tolerance` from the reference's hit.
 struct CoverageAgreement {
     int compared = 0, covered = 0, differ = 0;
+    int depth_compared = 0, depth_off = 0;
 };
-CoverageAgreement compare_with_reference_hits(const Scene& scene, const Image& image);
+CoverageAgreement compare_with_reference_hits(const Scene& scene, const Image& image, const Image* visibility = nullptr,
+                                              float depth_tolerance = 0.0f);
 
 }  // namespace canopy::grass::test
