@@ -1,5 +1,5 @@
 // Scene populations (scene/population.hpp, issue 9): the deterministic generator, [[population]]
-// tables and their file:line errors, the reference's flattened geometry (camera and shadow rays),
+// tables and their file:line errors, the reference's instanced copies (camera and shadow rays),
 // the reference cache key, and the refusal of techniques that render no populations.
 #include "config/scene_config.hpp"
 #include "core/registry.hpp"
@@ -179,7 +179,7 @@ TEST_CASE("population: every mistake in a [[population]] is reported at its line
     };
     const std::vector<Case> cases{
         {replace_line(kPopulation, "kind", "kind = \"scater\""), 15, "unknown population kind 'scater'", "did you mean 'scatter'?"},
-        {replace_line(kPopulation, "count", "count = 0"), 16, "'count' in [[population]] #1 must lie in [1, 1000000], got 0", "flattens"},
+        {replace_line(kPopulation, "count", "count = 0"), 16, "'count' in [[population]] #1 must lie in [1, 1000000], got 0", "one Embree instance per copy"},
         {replace_line(kPopulation, "count", "count = 1000001"), 16, "must lie in [1, 1000000]", ""},
         {replace_line(kPopulation, "count", "count = 2.5"), 16, "count", ""},
         {replace_line(kPopulation, "count", "cuont = 5"), 16, "cuont", "count"},
@@ -243,15 +243,11 @@ TEST_CASE("population: prototype meshes follow the objects', and copies stay wit
     for (const PopulationInstance& copy : generate_instances(scene.populations[0]))
         CHECK(glm::vec3(copy.model[3]).y >= bounds.min.y);
 
-    // 1e6 copies of a 32-segment sphere are too many triangles for the reference.
-    const auto too_many = config_error_of([] {
-        build_scene_meshes(meadow(replace_line(replace_line(kPopulation, "count", "count = 1000000"), "prototype",
-                                               "prototype = { shape = \"sphere\", radius = 0.1 }")));
-    });
-    REQUIRE(too_many);
-    CHECK(too_many->line() == 13);
-    CHECK(contains(too_many->what(), "population 'pebbles'"));
-    CHECK(contains(too_many->hint(), "lower 'count'"));
+    // 1e6 copies of a 960-triangle sphere (1e9 triangles) are fine: the reference stores the
+    // prototype once and instances it per copy.
+    const Scene many = meadow(replace_line(replace_line(kPopulation, "count", "count = 1000000"), "prototype",
+                                           "prototype = { shape = \"sphere\", radius = 0.1 }"));
+    CHECK(build_scene_meshes(many).back().triangle_count() == 960);
 
     // A region at the edge of the coordinate range with a large prototype reaches outside it.
     const auto outside = config_error_of([] {
@@ -268,13 +264,14 @@ TEST_CASE("population: the reference traces every copy, for camera and shadow ra
     const std::vector<TriangleMesh> meshes = build_scene_meshes(scene);
     const EmbreeScene embree(scene, meshes);
     CHECK(embree.triangle_count() == 2 + 50 * 12);
+    CHECK(embree.stored_triangle_count() == 2 + 12);  // the prototype once, instanced per copy
     REQUIRE(embree.geometry_count() == 2);
     CHECK(embree.geometry(1).population == 0);
     CHECK(embree.geometry(1).prototype_triangles == 12);
     CHECK(embree.material(1).albedo == glm::vec3(0.9f, 0.2f, 0.1f));
 
     const std::vector<PopulationInstance> copies = generate_instances(scene.populations[0]);
-    int hits = 0, occluded = 0, right_copy = 0;
+    int hits = 0, occluded = 0, right_copy = 0, upright = 0;
     for (size_t k = 0; k < copies.size(); ++k) {
         // The centre of the copy's top face: the box's local top (y = 0.1), lifted by its own translate.
         const glm::vec3 top = glm::vec3(copies[k].model * glm::vec4(0.0f, 0.1f, 0.0f, 1.0f));
@@ -290,10 +287,16 @@ TEST_CASE("population: the reference traces every copy, for camera and shadow ra
         RTCIntersectContext context{};
         rtcInitIntersectContext(&context);
         rtcIntersect1(embree.visible_scene(), &context, &ray);
-        if (ray.hit.geomID == 1) {
+        if (ray.hit.geomID == RTC_INVALID_GEOMETRY_ID) continue;
+        const EmbreeHit hit = embree.resolve(ray.hit);
+        if (hit.geometry == 1) {
             ++hits;
             // The hit lies on some copy's top; copies may overlap, so it is this one or a taller one.
-            if (ray.hit.primID / 12 == k || 5.0f - ray.ray.tfar > top.y + 1e-4f) ++right_copy;
+            if (hit.primitive / 12 == k || 5.0f - ray.ray.tfar > top.y + 1e-4f) ++right_copy;
+            // The top face's normals in world space, whatever the copy's yaw and scale.
+            const glm::vec3 normal = glm::normalize(hit.geometric_normal);
+            upright += std::abs(normal.y) > 0.9999f &&
+                       embree.shading_normal(hit.geometry, hit.primitive, ray.hit.u, ray.hit.v).y > 0.9999f;
         }
         RTCRay shadow{};
         shadow.org_x = top.x;
@@ -308,6 +311,7 @@ TEST_CASE("population: the reference traces every copy, for camera and shadow ra
     }
     CHECK(hits == 50);
     CHECK(right_copy == 50);
+    CHECK(upright == 50);
     CHECK(occluded == 50);
 
     // A population that casts no shadows is in the camera's scene only.

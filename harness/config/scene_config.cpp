@@ -500,7 +500,7 @@ Population read_population(TomlReader& reader, size_t index, const std::filesyst
     if (count < 1 || count > limits::kMaxPopulationCount)
         throw reader.error("count", fmt::format("{} must lie in [1, {}], got {}", reader.describe_key("count"),
                                                 limits::kMaxPopulationCount, count),
-                           "the reference flattens every copy into its own triangles (configs/README.md, \"Limits\")");
+                           "the reference holds one Embree instance per copy (configs/README.md, \"Limits\")");
     population.count = uint32_t(count);
 
     for (const char* key : {"region_min", "region_max"})

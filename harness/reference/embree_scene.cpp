@@ -68,6 +68,19 @@ void alpha_test_filter(const RTCFilterFunctionNArguments* args) {
     }
 }
 
+// The same for a population's prototype: the copy is the instance Embree is traversing.
+void copy_alpha_test_filter(const RTCFilterFunctionNArguments* args) {
+    const auto& filter = *static_cast<const EmbreeScene::CopyFilter*>(args->geometryUserPtr);
+    const uint32_t copy = args->context->instID[0] - filter.first_instance;
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] != -1) continue;
+        const unsigned triangle = RTCHitN_primID(args->hit, args->N, i);
+        const float u = RTCHitN_u(args->hit, args->N, i);
+        const float v = RTCHitN_v(args->hit, args->N, i);
+        if (!(*filter.test)(copy, triangle, u, v)) args->valid[i] = 0;
+    }
+}
+
 }  // namespace
 
 EmbreeScene::EmbreeScene(const Scene& scene, const std::vector<TriangleMesh>& meshes,
@@ -75,9 +88,11 @@ EmbreeScene::EmbreeScene(const Scene& scene, const std::vector<TriangleMesh>& me
     if (meshes.size() != scene.objects.size() + scene.populations.size())
         throw std::invalid_argument(fmt::format("EmbreeScene: {} meshes for {} scene objects and {} populations",
                                                 meshes.size(), scene.objects.size(), scene.populations.size()));
-    alpha_tests_.reserve(scene.objects.size() + scene.populations.size());
+    alpha_tests_.reserve(scene.objects.size());
+    copy_alpha_tests_.reserve(scene.populations.size());
+    copy_filters_.reserve(scene.populations.size());
 
-    // Flatten every instance into world space.
+    // Flatten every object instance into world space.
     for (size_t object_index = 0; object_index < scene.objects.size(); ++object_index) {
         const Object& object = scene.objects[object_index];
         const TriangleMesh& mesh = meshes[object_index];
@@ -119,6 +134,7 @@ EmbreeScene::EmbreeScene(const Scene& scene, const std::vector<TriangleMesh>& me
                 throw reject(instance_index, "a vertex position is not finite");
             record.positions.push_back(0.0f);  // Embree loads vertices with 16-byte reads
             triangle_count_ += mesh.triangle_count();
+            stored_triangle_count_ += mesh.triangle_count();
             records_.push_back(std::move(record));
         }
     }
@@ -134,8 +150,8 @@ EmbreeScene::EmbreeScene(const Scene& scene, const std::vector<TriangleMesh>& me
     }
 }
 
-// One geometry for all of a population's copies (generate_instances, as the raster side draws
-// them), each copy's prototype triangles transformed into world space.
+// One prototype geometry in its own space for all of a population's copies (generate_instances,
+// as the raster side draws them), instanced once per copy.
 void EmbreeScene::add_population(const Scene& scene, const std::vector<TriangleMesh>& meshes, size_t index,
                                  const EmbreeSceneOptions& options) {
     const Population& population = scene.populations[index];
@@ -156,24 +172,21 @@ void EmbreeScene::add_population(const Scene& scene, const std::vector<TriangleM
     record.instance.prototype_triangles = uint32_t(triangles);
     record.material = population.prototype.material;
     record.casts_shadows = population.prototype.casts_shadows;
-    // The filter sees the flattened primitive ID: the prototype's triangle is primitive % triangles.
-    // A copy's ray passes where the scene's alpha mask (alpha_mask.h, as population.vert and
-    // population_alpha.glsl cut it) or the caller's test says so.
+    // A copy's ray passes where the family's kind cuts that copy, or the scene's alpha mask
+    // (alpha_mask.h, as population.vert and population_alpha.glsl cut it), or the caller's test says so.
     AlphaTest caller;
     if (index < options.population_alpha_tests.size()) caller = options.population_alpha_tests[index];
     const glm::vec4 mask = population.alpha_mask.packed();
     const bool masked = population.alpha_mask.kind != AlphaMask::Kind::none;
     if (population.family) {
-        // A family's kind cuts its copies itself, per copy (copy k's triangles start at k * T).
         record.albedo_scale = population.family->albedo_scale;
         if (population.family->opaque || caller) {
-            alpha_tests_.push_back([caller, opaque = population.family->opaque, triangles](uint32_t primitive, float u,
-                                                                                            float v) {
-                const uint32_t triangle = uint32_t(primitive % triangles), copy = uint32_t(primitive / triangles);
+            copy_alpha_tests_.push_back([caller, opaque = population.family->opaque](uint32_t copy, uint32_t triangle,
+                                                                                    float u, float v) {
                 if (opaque && !opaque(copy, triangle, u, v)) return false;
                 return !caller || caller(triangle, u, v);
             });
-            record.alpha_test = int(alpha_tests_.size() - 1);
+            record.copy_alpha_test = int(copy_alpha_tests_.size() - 1);
         }
     } else if (masked || caller) {
         std::vector<glm::vec3> corners;  // the prototype's triangles in its mesh space
@@ -181,9 +194,8 @@ void EmbreeScene::add_population(const Scene& scene, const std::vector<TriangleM
             corners.reserve(mesh.indices.size());
             for (uint32_t vertex : mesh.indices) corners.push_back(mesh.vertices[vertex].position);
         }
-        alpha_tests_.push_back([caller, masked, mask, corners = std::move(corners), triangles](uint32_t primitive,
-                                                                                              float u, float v) {
-            const uint32_t triangle = uint32_t(primitive % triangles);
+        copy_alpha_tests_.push_back([caller, masked, mask, corners = std::move(corners)](uint32_t, uint32_t triangle,
+                                                                                        float u, float v) {
             if (masked) {
                 const glm::vec3 p = (1.0f - u - v) * corners[3 * triangle] + u * corners[3 * triangle + 1] +
                                     v * corners[3 * triangle + 2];
@@ -191,28 +203,43 @@ void EmbreeScene::add_population(const Scene& scene, const std::vector<TriangleM
             }
             return !caller || caller(triangle, u, v);
         });
-        record.alpha_test = int(alpha_tests_.size() - 1);
+        record.copy_alpha_test = int(copy_alpha_tests_.size() - 1);
     }
+
+    // The prototype as it is, and its box, whose corners bound every copy.
+    Bounds prototype_bounds;
+    record.indices = std::make_shared<const std::vector<uint32_t>>(mesh.indices.begin(),
+                                                                    mesh.indices.begin() + triangles * 3);
+    record.positions.reserve(mesh.vertices.size() * 3 + 1);
+    record.normals.reserve(mesh.vertices.size());
+    if (!append_world_vertices(mesh, glm::mat4(1.0f), glm::mat3(1.0f), record.positions, record.normals,
+                               prototype_bounds))
+        throw reject(0, "a vertex position of its prototype is not finite");
+    record.positions.push_back(0.0f);  // Embree loads vertices with 16-byte reads
+
     const std::vector<PopulationInstance> copies = generate_instances(population);
-    auto indices = std::make_shared<std::vector<uint32_t>>();
-    indices->reserve(copies.size() * triangles * 3);
-    record.positions.reserve(copies.size() * mesh.vertices.size() * 3 + 1);
-    record.normals.reserve(copies.size() * mesh.vertices.size());
+    record.copy_models.reserve(copies.size());
+    record.copy_normal_matrices.reserve(copies.size());
     for (size_t copy = 0; copy < copies.size(); ++copy) {
         const glm::mat4& model = copies[copy].model;
         const float determinant = glm::determinant(glm::mat3(model));
         if (!is_finite(model) || !std::isfinite(determinant)) throw reject(copy, "its transform is not finite");
         if (std::abs(determinant) < 1e-12f) throw reject(copy, "its transform is degenerate (a zero scale flattens it)");
-        const glm::mat3 normal_matrix(copies[copy].normal_matrix[0], copies[copy].normal_matrix[1],
-                                      copies[copy].normal_matrix[2]);
-        const uint32_t first_vertex = uint32_t(record.normals.size());
-        for (size_t i = 0; i < triangles * 3; ++i) indices->push_back(first_vertex + mesh.indices[i]);
-        if (!append_world_vertices(mesh, model, normal_matrix, record.positions, record.normals, bounds_))
-            throw reject(copy, "a vertex position is not finite");
+        for (int corner = 0; corner < 8; ++corner) {
+            const glm::vec3 local((corner & 1) ? prototype_bounds.max.x : prototype_bounds.min.x,
+                                  (corner & 2) ? prototype_bounds.max.y : prototype_bounds.min.y,
+                                  (corner & 4) ? prototype_bounds.max.z : prototype_bounds.min.z);
+            const glm::vec3 world = glm::vec3(model * glm::vec4(local, 1.0f));
+            if (!std::isfinite(world.x) || !std::isfinite(world.y) || !std::isfinite(world.z))
+                throw reject(copy, "a vertex position is not finite");
+            bounds_.extend(world);
+        }
+        record.copy_models.push_back(model);
+        record.copy_normal_matrices.emplace_back(copies[copy].normal_matrix[0], copies[copy].normal_matrix[1],
+                                                 copies[copy].normal_matrix[2]);
     }
-    record.positions.push_back(0.0f);  // Embree loads vertices with 16-byte reads
-    record.indices = std::move(indices);
     triangle_count_ += copies.size() * triangles;
+    stored_triangle_count_ += triangles;
     records_.push_back(std::move(record));
 }
 
@@ -232,14 +259,40 @@ void EmbreeScene::build_embree_scenes(const std::string& device_config) {
         rtcSetSceneBuildQuality(target, RTC_BUILD_QUALITY_HIGH);
         rtcSetSceneFlags(target, RTC_SCENE_FLAG_NONE);
     }
+    // Instance IDs follow the records' IDs, each population's copies in a row.
+    first_instance_id_ = unsigned(records_.size());
+    unsigned next_instance = first_instance_id_;
+    for (Record& record : records_) {
+        if (!record.instanced()) continue;
+        record.first_instance = next_instance;
+        next_instance += unsigned(record.copy_models.size());
+    }
+    instance_owner_.reserve(next_instance - first_instance_id_);
     for (size_t geom_id = 0; geom_id < records_.size(); ++geom_id) {
         const Record& record = records_[geom_id];
+        if (record.instanced()) {
+            const CopyFilter* filter = nullptr;
+            if (record.copy_alpha_test >= 0) {
+                copy_filters_.push_back({&copy_alpha_tests_[size_t(record.copy_alpha_test)], record.first_instance});
+                filter = &copy_filters_.back();
+            }
+            RTCScene prototype = rtcNewScene(device_);
+            prototype_scenes_.push_back(prototype);
+            rtcSetSceneBuildQuality(prototype, RTC_BUILD_QUALITY_HIGH);
+            RTCGeometry geometry = create_geometry(record, nullptr, filter);
+            rtcAttachGeometryByID(prototype, geometry, 0);
+            rtcReleaseGeometry(geometry);
+            rtcCommitScene(prototype);
+            attach_copies(record, prototype);
+            instance_owner_.insert(instance_owner_.end(), record.copy_models.size(), unsigned(geom_id));
+            continue;
+        }
         const AlphaTest* alpha_test = record.alpha_test >= 0 ? &alpha_tests_[size_t(record.alpha_test)] : nullptr;
-        RTCGeometry visible = create_geometry(record, alpha_test);
+        RTCGeometry visible = create_geometry(record, alpha_test, nullptr);
         rtcAttachGeometryByID(visible_scene_, visible, unsigned(geom_id));
         rtcReleaseGeometry(visible);
         if (!every_geometry_casts && record.casts_shadows) {
-            RTCGeometry shadow = create_geometry(record, alpha_test);
+            RTCGeometry shadow = create_geometry(record, alpha_test, nullptr);
             rtcAttachGeometryByID(shadow_scene_, shadow, unsigned(geom_id));
             rtcReleaseGeometry(shadow);
         }
@@ -250,7 +303,26 @@ void EmbreeScene::build_embree_scenes(const std::string& device_config) {
     throw_if_embree_failed(device_, "building the BVH");
 }
 
-RTCGeometry EmbreeScene::create_geometry(const Record& record, const AlphaTest* alpha_test) const {
+// One instance of `prototype` per copy, in the visible scene and, when the population casts
+// shadows, in a separate shadow scene under the same ID.
+void EmbreeScene::attach_copies(const Record& record, RTCScene prototype) {
+    std::vector<RTCScene> targets{visible_scene_};
+    if (shadow_scene_ != visible_scene_ && record.casts_shadows) targets.push_back(shadow_scene_);
+    for (size_t copy = 0; copy < record.copy_models.size(); ++copy) {
+        for (RTCScene target : targets) {
+            RTCGeometry instance = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_INSTANCE);
+            rtcSetGeometryInstancedScene(instance, prototype);
+            rtcSetGeometryTimeStepCount(instance, 1);
+            rtcSetGeometryTransform(instance, 0, RTC_FORMAT_FLOAT4X4_COLUMN_MAJOR, &record.copy_models[copy][0][0]);
+            rtcCommitGeometry(instance);
+            rtcAttachGeometryByID(target, instance, record.first_instance + unsigned(copy));
+            rtcReleaseGeometry(instance);
+        }
+    }
+}
+
+RTCGeometry EmbreeScene::create_geometry(const Record& record, const AlphaTest* alpha_test,
+                                         const CopyFilter* copy_filter) const {
     RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
     const size_t vertex_count = record.normals.size();
     rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, record.positions.data(), 0,
@@ -262,6 +334,10 @@ RTCGeometry EmbreeScene::create_geometry(const Record& record, const AlphaTest* 
         rtcSetGeometryUserData(geometry, const_cast<AlphaTest*>(alpha_test));
         rtcSetGeometryIntersectFilterFunction(geometry, alpha_test_filter);
         rtcSetGeometryOccludedFilterFunction(geometry, alpha_test_filter);
+    } else if (copy_filter) {
+        rtcSetGeometryUserData(geometry, const_cast<CopyFilter*>(copy_filter));
+        rtcSetGeometryIntersectFilterFunction(geometry, copy_alpha_test_filter);
+        rtcSetGeometryOccludedFilterFunction(geometry, copy_alpha_test_filter);
     }
     rtcCommitGeometry(geometry);
     return geometry;
@@ -272,23 +348,51 @@ EmbreeScene::~EmbreeScene() { release(); }
 void EmbreeScene::release() {
     if (shadow_scene_) rtcReleaseScene(shadow_scene_);
     if (visible_scene_) rtcReleaseScene(visible_scene_);
+    for (RTCScene prototype : prototype_scenes_) rtcReleaseScene(prototype);
+    prototype_scenes_.clear();
     if (device_) rtcReleaseDevice(device_);
     shadow_scene_ = visible_scene_ = nullptr;
     device_ = nullptr;
 }
 
-glm::vec3 EmbreeScene::albedo(unsigned geom_id, unsigned prim_id, float u, float v) const {
+EmbreeHit EmbreeScene::resolve(const RTCHit& hit) const {
+    EmbreeHit resolved;
+    resolved.geometric_normal = glm::vec3(hit.Ng_x, hit.Ng_y, hit.Ng_z);
+    if (hit.instID[0] == RTC_INVALID_GEOMETRY_ID) {
+        resolved.geometry = hit.geomID;
+        resolved.primitive = hit.primID;
+        return resolved;
+    }
+    // Embree reports an instanced hit's Ng in the prototype's space.
+    const unsigned owner = instance_owner_[hit.instID[0] - first_instance_id_];
+    const Record& record = records_[owner];
+    const uint32_t copy = hit.instID[0] - record.first_instance;
+    resolved.geometry = owner;
+    resolved.primitive = uint64_t(copy) * record.instance.prototype_triangles + hit.primID;
+    resolved.geometric_normal = record.copy_normal_matrices[copy] * resolved.geometric_normal;
+    return resolved;
+}
+
+glm::vec3 EmbreeScene::albedo(unsigned geom_id, uint64_t prim_id, float u, float v) const {
     const Record& record = records_[geom_id];
     if (!record.albedo_scale) return record.material.albedo;
     const uint32_t triangles = record.instance.prototype_triangles;
-    return record.material.albedo * record.albedo_scale(prim_id / triangles, prim_id % triangles, u, v);
+    return record.material.albedo * record.albedo_scale(uint32_t(prim_id / triangles), uint32_t(prim_id % triangles), u, v);
 }
 
-glm::vec3 EmbreeScene::shading_normal(unsigned geom_id, unsigned prim_id, float u, float v) const {
+glm::vec3 EmbreeScene::shading_normal(unsigned geom_id, uint64_t prim_id, float u, float v) const {
     const Record& record = records_[geom_id];
-    const uint32_t* triangle = record.indices->data() + size_t(prim_id) * 3;
-    const glm::vec3 normal = (1.0f - u - v) * record.normals[triangle[0]] + u * record.normals[triangle[1]] +
-                             v * record.normals[triangle[2]];
+    uint64_t triangle_index = prim_id;
+    const glm::mat3* to_world = nullptr;
+    if (record.instanced()) {
+        const uint32_t triangles = record.instance.prototype_triangles;
+        triangle_index = prim_id % triangles;
+        to_world = &record.copy_normal_matrices[size_t(prim_id / triangles)];
+    }
+    const uint32_t* triangle = record.indices->data() + size_t(triangle_index) * 3;
+    glm::vec3 normal = (1.0f - u - v) * record.normals[triangle[0]] + u * record.normals[triangle[1]] +
+                       v * record.normals[triangle[2]];
+    if (to_world) normal = *to_world * normal;
     const float length = glm::length(normal);
     return length > 0.0f ? normal / length : glm::vec3(0.0f);
 }

@@ -20,8 +20,8 @@ void check_camera_representable(const Scene& scene);
 struct PrimaryHit {
     SurfacePoint surface;
     float view_depth = 0.0f;  // distance along the camera's view axis
-    unsigned geometry = RTC_INVALID_GEOMETRY_ID;  // Embree geomID, for the material
-    unsigned primitive = 0;                        // Embree primID: the triangle within the geometry
+    unsigned geometry = RTC_INVALID_GEOMETRY_ID;  // EmbreeScene::geometry()'s ID, for the material
+    uint64_t primitive = 0;  // the triangle within the geometry (a population's: copy * T + triangle)
     float u = 0.0f, v = 0.0f;                      // the hit's barycentrics (weights of vertices 1, 2)
 };
 
@@ -49,20 +49,21 @@ inline std::optional<PrimaryHit> trace_primary(const EmbreeScene& embree, const 
     rtcIntersect1(embree.visible_scene(), &context, &hit);
     if (hit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
 
+    const EmbreeHit resolved = embree.resolve(hit.hit);
     PrimaryHit result;
-    result.geometry = hit.hit.geomID;
-    result.primitive = hit.hit.primID;
+    result.geometry = resolved.geometry;
+    result.primitive = resolved.primitive;
     result.u = hit.hit.u;
     result.v = hit.hit.v;
     const float distance = hit.ray.tfar;
     result.view_depth = distance * along_axis;
     SurfacePoint& surface = result.surface;
     surface.position = ray.origin + distance * ray.direction;
-    glm::vec3 geometric_normal(hit.hit.Ng_x, hit.hit.Ng_y, hit.hit.Ng_z);
+    glm::vec3 geometric_normal = resolved.geometric_normal;
     const float geometric_length = glm::length(geometric_normal);
     geometric_normal = geometric_length > 0.0f ? geometric_normal / geometric_length : -ray.direction;
     if (glm::dot(geometric_normal, ray.direction) > 0.0f) geometric_normal = -geometric_normal;
-    glm::vec3 normal = embree.shading_normal(hit.hit.geomID, hit.hit.primID, hit.hit.u, hit.hit.v);
+    glm::vec3 normal = embree.shading_normal(resolved.geometry, resolved.primitive, hit.hit.u, hit.hit.v);
     if (normal == glm::vec3(0.0f)) normal = geometric_normal;
     // Two-sided surfaces: shade the side the camera sees, exactly as forward_lighting.glsl.
     if (glm::dot(normal, camera.position - surface.position) < 0.0f) normal = -normal;

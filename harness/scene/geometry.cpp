@@ -178,21 +178,17 @@ void require_in_scene(const Object& object, const TriangleMesh& mesh) {
 
 // A population's copies: within the coordinate range (bounded conservatively, by the region's
 // corners and the largest copy's reach, so that a million copies cost no more than one), and
-// within the triangle budget of the reference's flattened geometry.
+// a prototype within the triangle budget of what the reference and the GPU store once.
 void require_in_scene(const Population& population, const TriangleMesh& mesh) {
     const auto error = [&](const std::string& message, const std::string& hint) {
         return ConfigError(population.where.file, population.where.line,
                            fmt::format("population '{}': {}", population.name, message), hint);
     };
-    const double copies = population.family ? double(population.family->instances.size()) : double(population.count);
-    const double triangles = copies * double(mesh.triangle_count());
-    if (triangles > limits::kMaxPopulationTriangles)
-        throw error(fmt::format("{} copies of a {}-triangle prototype make {:.3g} triangles, more than the {:.3g} the "
-                                "reference can flatten",
-                                copies, mesh.triangle_count(), triangles, limits::kMaxPopulationTriangles),
-                    population.family ? "make the field smaller or its patch sparser (see the kind's parameters in "
-                                        "`canopy list`)"
-                                      : "lower 'count', or use a prototype with fewer triangles (fewer 'segments')");
+    if (double(mesh.triangle_count()) > limits::kMaxPrototypeTriangles)
+        throw error(fmt::format("its prototype has {} triangles, more than the {:.3g} a prototype may have",
+                                mesh.triangle_count(), limits::kMaxPrototypeTriangles),
+                    population.family ? "make the patch sparser (see the kind's parameters in `canopy list`)"
+                                      : "use a prototype with fewer triangles (fewer 'segments')");
     if (population.family) {
         Bounds local;
         for (const Vertex& vertex : mesh.vertices) local.extend(vertex.position);

@@ -32,9 +32,10 @@ inline constexpr double kMaxLightSize = 1e4;
 // Each component of the scene's `ambient` and `background` radiance.
 inline constexpr double kMaxRadiance = 1e6;
 
-// A [[population]]'s `count`, and the triangles of all its copies together: the reference
-// flattens every copy into world-space triangles (about 100 bytes each, with the BVH).
+// A [[population]]'s `count` (the reference holds one Embree instance per copy, in each of its two
+// scenes), and its prototype's triangles, which the reference and the GPU store once (about 100
+// bytes each, with the BVH); the copies' triangles together are not limited.
 inline constexpr long long kMaxPopulationCount = 1000000;
-inline constexpr double kMaxPopulationTriangles = 2e7;
+inline constexpr double kMaxPrototypeTriangles = 2e7;
 
 }  // namespace canopy::limits

@@ -116,18 +116,19 @@ GrassPopulationSpec grass_population_spec(const ParamSet& params) {
 }
 
 FamilyPopulation generate_grass_population(const GrassPopulationSpec& spec) {
-    // The reference flattens every copy: refuse what it cannot hold before generating anything.
+    // Refuse what the reference cannot hold before generating anything: one Embree instance per
+    // cell, the patch stored once.
     const double cell_count = double(spec.field.cells.x) * double(spec.field.cells.y);
-    const double triangles = cell_count * double(spec.patch.blades) * double(triangles_per_blade(spec.patch.subdivisions));
+    const double triangles = double(spec.patch.blades) * double(triangles_per_blade(spec.patch.subdivisions));
     if (cell_count > double(limits::kMaxPopulationCount))
         throw std::invalid_argument(fmt::format("cells_x x cells_z = {:.0f} cells, more than the {} copies a population "
                                                 "may have (configs/README.md, \"Limits\")",
                                                 cell_count, limits::kMaxPopulationCount));
-    if (triangles > limits::kMaxPopulationTriangles)
-        throw std::invalid_argument(fmt::format("{:.0f} cells of {} blades of {} triangles make {:.3g} triangles, more than "
-                                                "the {:.3g} the reference can flatten: fewer cells, blades or subdivisions",
-                                                cell_count, spec.patch.blades, triangles_per_blade(spec.patch.subdivisions),
-                                                triangles, limits::kMaxPopulationTriangles));
+    if (triangles > limits::kMaxPrototypeTriangles)
+        throw std::invalid_argument(fmt::format("a patch of {} blades of {} triangles has {:.3g} triangles, more than the "
+                                                "{:.3g} a prototype may have: fewer blades or subdivisions",
+                                                spec.patch.blades, triangles_per_blade(spec.patch.subdivisions),
+                                                triangles, limits::kMaxPrototypeTriangles));
     const BladePatch patch = generate_blade_patch(spec.patch);
     const GrassField& field = spec.field;
     FamilyPopulation out;
