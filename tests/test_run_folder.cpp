@@ -122,6 +122,7 @@ RunRecord awkward_record(const RunIdentity& id) {
     c.memory = {262144, 100, 7};
     c.load = {{{"bake_front", 0.25}, {"bake_side", 1.0 / 3.0}}, 0.6, 0.75, 4096};
     c.triangles = 14;
+    c.primitives = PrimitiveCounts{24576000000ull, 6144};
     c.shadow_sampler = "compare";
     ImageMetrics m{};
     m.mae = 0.01;
@@ -157,6 +158,7 @@ RunRecord awkward_record(const RunIdentity& id) {
     failed.id = "tiny_96x64_shadow.pcf_kernel-5";
     failed.ok = false;
     failed.error = "12 pixels are NaN or Inf";
+    failed.primitives.reset();
     failed.image_error.reset();
     failed.ratio = {};
     run.cases.push_back(failed);
@@ -205,6 +207,10 @@ TEST_CASE("results.json reads back exactly: every field, NaN, infinity, every di
     CHECK(back.cases[0].timing_check.gap_ms == run.cases[0].timing_check.gap_ms);
     REQUIRE(back.cases[0].path_frames.size() == 2);
     CHECK(back.cases[0].path_frames[1].gpu_frame.name == "wall");
+    REQUIRE(back.cases[0].primitives.has_value());
+    CHECK(back.cases[0].primitives->submitted == 24576000000ull);
+    CHECK(back.cases[0].primitives->rasterised == 6144);
+    CHECK_FALSE(back.cases[1].primitives.has_value());  // the failed case was not counted
     REQUIRE(back.camera_path.has_value());
     CHECK(back.camera_path->poses[1].position.x == 1.0f / 3.0f);
     CHECK(std::isinf(back.cases[0].image_error->psnr));

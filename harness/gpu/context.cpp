@@ -242,6 +242,9 @@ GpuContext::GpuContext(const std::string& selector, Validation validation) {
     enable.features.geometryShader = supported.features.geometryShader;
     enable.features.tessellationShader = supported.features.tessellationShader;
     enable.features.fillModeNonSolid = supported.features.fillModeNonSolid;
+    // The triangles a frame submits and rasterises, counted in one untimed frame per case.
+    enable.features.pipelineStatisticsQuery = supported.features.pipelineStatisticsQuery;
+    pipeline_statistics_ = supported.features.pipelineStatisticsQuery;
     // Prefilter passes write any moment format through one unformatted image2D.
     enable.features.shaderStorageImageWriteWithoutFormat = supported.features.shaderStorageImageWriteWithoutFormat;
     storage_write_without_format_ = supported.features.shaderStorageImageWriteWithoutFormat;

@@ -65,6 +65,7 @@ public:
     uint32_t timestamp_valid_bits() const { return timestamp_valid_bits_; }
     bool storage_write_without_format() const { return storage_write_without_format_; }
     bool draw_indirect_count() const { return draw_indirect_count_; }
+    bool pipeline_statistics() const { return pipeline_statistics_; }  // primitive counts (PrimitiveCounter)
 
     uint32_t memory_type(uint32_t type_bits, VkMemoryPropertyFlags wanted) const;
     VkFormatFeatureFlags2 format_features(VkFormat format) const;  // optimal tiling
@@ -88,6 +89,7 @@ private:
     uint32_t timestamp_valid_bits_ = 0;
     bool storage_write_without_format_ = false;
     bool draw_indirect_count_ = false;
+    bool pipeline_statistics_ = false;
     VkPhysicalDeviceMemoryProperties memory_{};
 };
 

@@ -527,7 +527,7 @@ void GraphExecutor::record_pass(VkCommandBuffer commands, size_t index, Context&
     vkCmdEndRendering(commands);
 }
 
-PhaseTiming GraphExecutor::run(Phase phase_id, const FrameState& state) {
+PhaseTiming GraphExecutor::run(Phase phase_id, const FrameState& state, bool count_primitives) {
     PhasePasses& phase = phases_[int(phase_id)];
     PhaseTiming timing;
     const auto record_start = Clock::now();
@@ -539,6 +539,11 @@ PhaseTiming GraphExecutor::run(Phase phase_id, const FrameState& state) {
     VK_CHECK(vkBeginCommandBuffer(commands_, &begin));
     Context context(*this, commands_, state);
     if (phase.timer) phase.timer->reset(commands_);
+    const bool counting = count_primitives && gpu_.pipeline_statistics();
+    if (counting) {
+        if (!primitive_counter_) primitive_counter_ = std::make_unique<PrimitiveCounter>(gpu_);
+        primitive_counter_->begin(commands_);
+    }
     size_t slot = 0;
     for (size_t index : phase.passes) {
         const PassDecl& p = graph_.passes[index];
@@ -555,6 +560,7 @@ PhaseTiming GraphExecutor::run(Phase phase_id, const FrameState& state) {
         phase.timer->end(commands_, slot);
         ++slot;
     }
+    if (counting) primitive_counter_->end(commands_);
     VK_CHECK(vkEndCommandBuffer(commands_));
     timing.record_cpu_ms = ms_since(record_start) - cpu_total;
 
@@ -572,10 +578,13 @@ PhaseTiming GraphExecutor::run(Phase phase_id, const FrameState& state) {
         timing.pass_gpu_ms.pop_back();
     }
     timing.uploaded_bytes = context.uploaded_bytes();
+    if (counting) timing.primitives = primitive_counter_->read();
     return timing;
 }
 
-PhaseTiming GraphExecutor::run_load(const FrameState& state) { return run(Phase::load, state); }
-PhaseTiming GraphExecutor::run_frame(const FrameState& state) { return run(Phase::frame, state); }
+PhaseTiming GraphExecutor::run_load(const FrameState& state) { return run(Phase::load, state, false); }
+PhaseTiming GraphExecutor::run_frame(const FrameState& state, bool count_primitives) {
+    return run(Phase::frame, state, count_primitives);
+}
 
 }  // namespace canopy

@@ -6,12 +6,14 @@
 
 #include "core/frame_state.hpp"
 #include "gpu/pass_timer.hpp"
+#include "gpu/primitive_counter.hpp"
 #include "gpu/resources.hpp"
 #include "graph/frame_graph.hpp"
 #include "graph/graph_resources.hpp"
 #include "graph/pipeline_cache.hpp"
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,6 +29,7 @@ struct PhaseTiming {
     double wall_ms = 0;        // CPU: submit to fence signalled
     double record_cpu_ms = 0;  // CPU: recording the commands, CPU passes excluded
     uint64_t uploaded_bytes = 0;
+    std::optional<PrimitiveCounts> primitives;  // when asked for and the device counts them
 };
 
 class GraphExecutor {
@@ -40,8 +43,9 @@ public:
 
     // Runs the load-phase passes (once; the constructor does not).
     PhaseTiming run_load(const FrameState& state);
-    // Records, submits and waits for one frame.
-    PhaseTiming run_frame(const FrameState& state);
+    // Records, submits and waits for one frame; with `count_primitives`, counts the triangles its
+    // passes submit and rasterise (PhaseTiming::primitives; not for timed frames).
+    PhaseTiming run_frame(const FrameState& state, bool count_primitives = false);
 
     const std::vector<std::string>& gpu_pass_names(Phase phase) const { return phases_[int(phase)].gpu_names; }
     const std::vector<std::string>& cpu_pass_names(Phase phase) const { return phases_[int(phase)].cpu_names; }
@@ -62,7 +66,7 @@ private:
     };
     class Context;
 
-    PhaseTiming run(Phase phase, const FrameState& state);
+    PhaseTiming run(Phase phase, const FrameState& state, bool count_primitives);
     void create_pass_bindings();
     VkSampler sampler(SamplerKind kind);
     void barriers_for(VkCommandBuffer commands, const PassDecl& pass);
@@ -75,6 +79,7 @@ private:
     std::unique_ptr<PipelineCache> pipelines_;
     std::vector<std::unique_ptr<PassBinding>> bindings_;  // per pass
     std::array<PhasePasses, 2> phases_;
+    std::unique_ptr<PrimitiveCounter> primitive_counter_;  // when the device has pipeline statistics
     std::array<VkSampler, 4> samplers_{};
     std::map<std::string, bool> buffer_written_;  // written since the last buffer barrier
     VkCommandPool command_pool_ = VK_NULL_HANDLE;

@@ -193,11 +193,15 @@ void FrameRenderer::write_uniforms(const Camera& camera) {
 
 FrameTiming FrameRenderer::render() { return render(FrameState{next_frame_, scene_description_.camera}); }
 
-FrameTiming FrameRenderer::render(const FrameState& state) {
+FrameTiming FrameRenderer::render(const FrameState& state) { return render_frame(state, false); }
+FrameTiming FrameRenderer::render_counting_primitives(const FrameState& state) { return render_frame(state, true); }
+
+FrameTiming FrameRenderer::render_frame(const FrameState& state, bool count_primitives) {
     write_uniforms(state.camera);
-    const PhaseTiming t = executor_->run_frame(state);
+    const PhaseTiming t = executor_->run_frame(state, count_primitives);
     next_frame_ = state.frame_index + 1;
-    return FrameTiming{t.pass_gpu_ms, t.gpu_ms, t.wall_ms, t.pass_cpu_ms, t.record_cpu_ms, t.uploaded_bytes};
+    return FrameTiming{t.pass_gpu_ms, t.gpu_ms, t.wall_ms, t.pass_cpu_ms, t.record_cpu_ms, t.uploaded_bytes,
+                       t.primitives};
 }
 
 namespace {

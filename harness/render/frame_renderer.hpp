@@ -24,6 +24,7 @@ struct FrameTiming {
     std::vector<double> pass_cpu_ms;  // per CPU pass, in cpu_pass_names() order
     double record_cpu_ms = 0;         // CPU: recording the frame's commands (CPU passes excluded)
     uint64_t uploaded_bytes = 0;      // moved from the CPU into buffers by the frame's passes
+    std::optional<PrimitiveCounts> primitives;  // triangles submitted and rasterised, when counted
 };
 
 struct MemoryUse {
@@ -54,6 +55,9 @@ public:
     FrameTiming render();
     // One frame in `state` (its camera, its frame index).
     FrameTiming render(const FrameState& state);
+    // The same, counting the triangles the frame submits and rasterises when the device can
+    // (FrameTiming::primitives); for untimed frames.
+    FrameTiming render_counting_primitives(const FrameState& state);
     // The load phase's timing (run once, at construction), pass names in load_pass_names().
     const FrameTiming& load_timing() const { return load_timing_; }
 
@@ -86,6 +90,7 @@ public:
 
 private:
     void write_uniforms(const Camera& camera);
+    FrameTiming render_frame(const FrameState& state, bool count_primitives);
 
     const GpuContext& gpu_;
     Scene scene_description_;  // its camera, lights and ambient fill the frame uniforms

@@ -139,6 +139,10 @@ CaseResult read_case(const json& j) {
     c.memory = {memory.at("technique").get<uint64_t>(), memory.at("targets").get<uint64_t>(),
                 memory.at("scene").get<uint64_t>()};
     c.triangles = j.at("triangles").get<size_t>();
+    // Absent in results.json written before frames counted their triangles.
+    if (j.contains("primitives") && !j.at("primitives").is_null())
+        c.primitives = PrimitiveCounts{j.at("primitives").at("submitted").get<uint64_t>(),
+                                       j.at("primitives").at("rasterised").get<uint64_t>()};
     c.shadow_sampler = j.at("shadow_sampler").get<std::string>();
     c.nonfinite_pixels = j.at("nonfinite_pixels").get<long long>();
     if (!j.at("image_error").is_null()) c.image_error = read_error(j.at("image_error"));

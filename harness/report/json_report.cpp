@@ -163,6 +163,9 @@ nlohmann::json case_json(const CaseResult& c) {
             {"memory_bytes",
              {{"technique", c.memory.technique_bytes}, {"targets", c.memory.target_bytes}, {"scene", c.memory.scene_bytes}}},
             {"triangles", c.triangles},
+            {"primitives", c.primitives ? nlohmann::json{{"submitted", c.primitives->submitted},
+                                                         {"rasterised", c.primitives->rasterised}}
+                                        : nlohmann::json(nullptr)},
             {"shadow_sampler", c.shadow_sampler},
             {"nonfinite_pixels", c.nonfinite_pixels},
             {"image_error", c.image_error ? error_json(*c.image_error) : nlohmann::json(nullptr)},

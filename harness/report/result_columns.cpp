@@ -50,6 +50,43 @@ ResultColumn both(std::string name, CaseCell cell, std::string markdown_header, 
     return column;
 }
 
+// Triangles a count (1234, 45.6k, 24.6M, 1.23G): three figures are what a table needs.
+std::string count_text(uint64_t n) {
+    if (n < 10000) return std::to_string(n);
+    const char* suffix[] = {"k", "M", "G", "T"};
+    double value = double(n);
+    int s = -1;
+    while (value >= 1000.0 && s < 3) {
+        value /= 1000.0;
+        ++s;
+    }
+    return fmt::format("{:.3g}{}", value, suffix[s]);
+}
+
+// The triangles each case's frame submitted and rasterised (CaseResult::primitives): two CSV
+// cells, and one results.md column when any case was counted.
+ResultColumn primitives_column() {
+    ResultColumn column;
+    column.name = "triangles_submitted, triangles_rasterised";
+    column.csv = [](const RunRecord&) {
+        return CsvBound{{"triangles_submitted", "triangles_rasterised"}, [](const CaseResult& c) {
+                            if (!c.primitives) return Cells{"", ""};
+                            return Cells{std::to_string(c.primitives->submitted), std::to_string(c.primitives->rasterised)};
+                        }};
+    };
+    column.markdown = [](const RunRecord& run) {
+        bool counted = false;
+        for (const CaseResult& c : run.cases) counted = counted || c.primitives.has_value();
+        if (!counted) return MarkdownBound{{}, [](const CaseResult&) { return Cells{}; }};
+        return MarkdownBound{{{"triangles submitted / rasterised", true}}, [](const CaseResult& c) {
+                                 return Cells{c.primitives ? count_text(c.primitives->submitted) + " / " +
+                                                                 count_text(c.primitives->rasterised)
+                                                           : "-"};
+                             }};
+    };
+    return column;
+}
+
 // A column results.md shows and results.csv does not.
 ResultColumn markdown_only(std::string name, Headers headers, std::function<Cells(const CaseResult&)> cells) {
     ResultColumn column;
@@ -219,6 +256,7 @@ std::vector<ResultColumn> make_columns() {
     columns.push_back(csv_only("target_memory_bytes", [](R, C c) { return std::to_string(c.memory.target_bytes); }));
     columns.push_back(csv_only("scene_memory_bytes", [](R, C c) { return std::to_string(c.memory.scene_bytes); }));
     columns.push_back(csv_only("triangles", [](R, C c) { return std::to_string(c.triangles); }));
+    columns.push_back(primitives_column());
     columns.push_back(csv_only("shadow_sampler", [](R, C c) { return quoted(c.shadow_sampler); }));
     columns.push_back(csv_only("nonfinite_pixels", [](R, C c) { return std::to_string(c.nonfinite_pixels); }));
     columns.push_back(metric_family());

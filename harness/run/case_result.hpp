@@ -68,7 +68,10 @@ struct CaseResult {
     bool group_baseline = false;       // the group's first case, which the others' ratios divide by
     RatioRecord ratio;                 // empty when the group's baseline failed
     MemoryUse memory;
-    size_t triangles = 0;
+    size_t triangles = 0;  // the scene's, every population copy counted
+    // The triangles the technique's frame submitted and rasterised (after clipping), counted in the
+    // first warm-up frame (FrameRenderer::render_counting_primitives); empty when not counted.
+    std::optional<PrimitiveCounts> primitives;
     std::string shadow_sampler;
     std::string image_exr, image_png;  // relative to the run folder
     std::string visibility_exr;        // the technique's pixel-centre visibility (core/pixel_visibility.hpp)

@@ -75,13 +75,13 @@ struct LiveCase {
     // One frame at traversal frame `path_frame` of the path (the scene's camera without one), with
     // the test ballast after it when there is one.
     // The next frame of the run at `at`.
-    FrameTiming render(const Camera& at) {
+    FrameTiming render(const Camera& at, bool count_primitives = false) {
         const FrameState state{next_frame++, at};
         if (frame_rendered) frame_rendered(index, state);
-        return renderer->render(state);
+        return count_primitives ? renderer->render_counting_primitives(state) : renderer->render(state);
     }
-    FrameTiming frame(int path_frame) {
-        FrameTiming t = render(path ? path->at(camera, path_frame) : camera);
+    FrameTiming frame(int path_frame, bool count_primitives = false) {
+        FrameTiming t = render(path ? path->at(camera, path_frame) : camera, count_primitives);
         if (ballast) {
             const auto before = Clock::now();
             const double ballast_ms = ballast->run_ms();
@@ -250,7 +250,9 @@ bool measure_chunk(std::vector<LiveCase*>& members, const MeasurementSettings& s
         for (int i = 0; i < settings.warmup_frames && !m->failed; ++i) {
             if (interrupt_requested()) return false;
             try {
-                m->frame(i);
+                // The first warm-up frame counts the triangles (untimed, so the count costs nothing).
+                const FrameTiming t = m->frame(i, i == 0);
+                if (t.primitives) m->result.primitives = t.primitives;
             } catch (const GpuError& e) {
                 m->fail(e.what());
             }
