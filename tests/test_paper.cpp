@@ -1,6 +1,7 @@
 // The [paper] table of an experiment: parsing with file:line errors, and claim verdicts.
 #include "config/experiment_config.hpp"
 #include "report/paper_report.hpp"
+#include "report/text_table.hpp"
 #include "support/temp_folder.hpp"
 
 #include <doctest/doctest.h>
@@ -215,4 +216,13 @@ relation = "smaller"
 )");
     CHECK(wrong_relation.find("relation.toml:20") != std::string::npos);
     CHECK(wrong_relation.find("less") != std::string::npos);
+}
+
+TEST_CASE("time ratios keep two figures however small: a 70x speed-up does not print as 0.01") {
+    CHECK(ratio_number(1.0) == "1.00");
+    CHECK(ratio_number(0.155) == "0.15");
+    CHECK(ratio_number(0.0142) == "0.014");
+    CHECK(ratio_number(0.0023) == "0.0023");
+    CHECK(ratio_number(0.0) == "0.00");
+    CHECK(ratio_cell(Estimate{0.0142, {0.0139, 0.0145}, 10}) == "0.014 [0.014, 0.015]");
 }

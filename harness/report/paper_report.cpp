@@ -199,9 +199,10 @@ std::string paper_report(const PaperComparison& paper, const RunRecord& run) {
                 if (mine && mine_base) {
                     const Estimate e = time_ratio(*mine, *mine_base).estimate;
                     if (!std::isnan(e.value))
-                        canopy_ratio = fmt::format("**{:.2f}** [{:.2f}, {:.2f}]", e.value, e.ci.low, e.ci.high);
+                        canopy_ratio = fmt::format("**{}** [{}, {}]", ratio_number(e.value), ratio_number(e.ci.low),
+                                                   ratio_number(e.ci.high));
                 }
-                cells.push_back(fmt::format("{} → {}", number(paper_ratio, "{:.2f}"), canopy_ratio));
+                cells.push_back(fmt::format("{} → {}", std::isnan(paper_ratio) ? "-" : ratio_number(paper_ratio), canopy_ratio));
             }
             rows.push_back(cells);
         }
@@ -238,17 +239,25 @@ std::string paper_report(const PaperComparison& paper, const RunRecord& run) {
             if (!metric.shown_in(shown_in_paper_tables)) continue;
             const std::string claim(metric.claim), title = table_title(metric);
             std::vector<std::vector<std::string>> rows;
+            bool any_value = false;  // a metric no row's technique declares (a shadow metric for grass) is left out
             for (const PaperRow& row : paper.rows) {
                 std::vector<std::string> cells{row.label};
                 for (size_t col = 0; col < paper.columns.size(); ++col) {
                     const CaseResult* mine = find_case(paper, run, row, col);
                     cells.push_back(mine ? number(metric_of(*mine, claim), "{:.4g}") : "-");
+                    any_value = any_value || cells.back() != "-";
                 }
                 rows.push_back(cells);
             }
-            out += "## canopy: " + title + "\n\n" + table(header, rows) + "\n";
+            if (any_value) out += "## canopy: " + title + "\n\n" + table(header, rows) + "\n";
         }
-        // The reference's own classes of pixels per column: how much umbra and penumbra there is.
+        // The reference's own classes of pixels per column: how much umbra and penumbra there is
+        // (for techniques that declare shadow columns).
+        bool shadows = false;
+        for (const PaperRow& row : paper.rows)
+            for (size_t col = 0; col < paper.columns.size(); ++col)
+                if (const CaseResult* mine = find_case(paper, run, row, col); mine && mine->image_error)
+                    shadows = shadows || mine->image_error->columns.visibility || mine->image_error->columns.shadow_regions;
         std::vector<std::vector<std::string>> classes;
         for (const MetricCountInfo& count : registered_metric_counts()) {
             if (count.label.empty()) continue;
@@ -261,12 +270,17 @@ std::string paper_report(const PaperComparison& paper, const RunRecord& run) {
             }
             classes.push_back(cells);
         }
-        out += "## Reference: pixels in full umbra, fully lit and in penumbra (0 < V < 1)\n\n" + table(header, classes) + "\n";
-        out += "The papers define no error metric: these are canopy's, against an Embree reference with the same "
-               "shading model and the area light integrated. PSNR and FLIP say how far the image is from the truth "
-               "(aliased silhouettes and shading included); the visibility RMSE says how wrong the technique's shadow "
-               "is: the visibility it gave the light against the reference's, at the same pixel centres. The pixel "
-               "classes are the reference's at the pixel centres (1024 light samples), off silhouettes.\n\n";
+        if (shadows) {
+            out += "## Reference: pixels in full umbra, fully lit and in penumbra (0 < V < 1)\n\n" + table(header, classes) + "\n";
+            out += "The papers define no error metric: these are canopy's, against an Embree reference with the same "
+                   "shading model and the area light integrated. PSNR and FLIP say how far the image is from the truth "
+                   "(aliased silhouettes and shading included); the visibility RMSE says how wrong the technique's shadow "
+                   "is: the visibility it gave the light against the reference's, at the same pixel centres. The pixel "
+                   "classes are the reference's at the pixel centres (1024 light samples), off silhouettes.\n\n";
+        } else {
+            out += "The papers define no error metric: these are canopy's, against an Embree reference with the same "
+                   "shading model. PSNR and FLIP say how far the image is from the truth.\n\n";
+        }
     }
 
     const auto verdicts = judge_claims(paper, run);

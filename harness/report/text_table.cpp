@@ -63,9 +63,14 @@ std::string table_cell(const MetricInfo& metric, const ImageMetrics& m) {
     return metric_cell(metric.percent ? 100.0 * value : value, group_declared(metric.group, m.columns));
 }
 
+std::string ratio_number(double ratio) {
+    return std::abs(ratio) >= 0.1 || ratio == 0.0 || !std::isfinite(ratio) ? fmt::format("{:.2f}", ratio)
+                                                                         : fmt::format("{:.2g}", ratio);
+}
+
 std::string ratio_cell(const Estimate& ratio) {
     if (ratio.count == 0 || std::isnan(ratio.value)) return "-";
-    return fmt::format("{:.2f} [{:.2f}, {:.2f}]", ratio.value, ratio.ci.low, ratio.ci.high);
+    return fmt::format("{} [{}, {}]", ratio_number(ratio.value), ratio_number(ratio.ci.low), ratio_number(ratio.ci.high));
 }
 
 }  // namespace canopy

@@ -22,5 +22,7 @@ std::string table_cell(const MetricInfo& metric, const ImageMetrics& m);
 
 // A time ratio and its 95 % interval, "1.93 [1.88, 1.99]"; "-" when not measured.
 std::string ratio_cell(const Estimate& ratio);
+// A time ratio: two decimals, or two significant figures below 0.1 (0.014, not 0.01).
+std::string ratio_number(double ratio);
 
 }  // namespace canopy
