@@ -3,6 +3,7 @@
 #include "config/experiment_config.hpp"
 #include "config/scene_config.hpp"
 #include "core/registry.hpp"
+#include "scene/population_kind.hpp"
 #include "support/config_error_of.hpp"
 #include "support/temp_folder.hpp"
 
@@ -36,7 +37,7 @@ TEST_CASE("every committed experiment makes its reference with the same settings
     // configs/README.md, [reference]: whole-image errors move by 8-12 % between 2 and 4 pixel
     // samples, so tables made with different settings would not compare.
     const auto files = committed_experiments();
-    REQUIRE(files.size() >= 9);  // default, checks/shadow-free and the seven paper experiments
+    REQUIRE(files.size() >= 10);  // default, checks/shadow-free and the eight paper experiments
     for (const fs::path& file : files) {
         CAPTURE(file.string());
         const Experiment experiment = load_experiment(file, TechniqueRegistry::instance());
@@ -109,4 +110,23 @@ TEST_CASE("checks/shadow-free.toml: every committed shadow scene without shadows
     for (const TechniqueEntry& entry : experiment.techniques) techniques.insert(entry.name);
     for (const Technique* t : test::family_techniques("shadow")) registered.insert(t->name());
     CHECK(techniques == registered);
+}
+
+TEST_CASE("paper/l-t7.1.toml: Lemme's Table 7.1 field and settings") {
+    // 32 x 32 cells of 2400 blades at 10 triangles (L1026-1035: 24.6 M triangles), the volume at
+    // 16 slices of 1024 x 128, the image at 1024^2 (L1036).
+    const Experiment experiment = load_experiment(kExperiments / "paper" / "l-t7.1.toml", TechniqueRegistry::instance());
+    REQUIRE(experiment.scenes.size() == 1);
+    const Population& field = experiment.scenes[0].populations.at(0);
+    REQUIRE(field.family);
+    CHECK(field.family->instances.size() == 1024);
+    CHECK(field.family->prototype.triangle_count() == 24000);
+    CHECK(experiment.scenes[0].shadow_light() == nullptr);  // local mode
+    REQUIRE(experiment.techniques.size() == 3);
+    CHECK(experiment.techniques[0].name == "grass.geometry");
+    CHECK(experiment.techniques[1].name == "grass.volume");
+    CHECK(std::get<long long>(experiment.techniques[1].sweep.at("slices").at(0)) == 16);
+    CHECK(std::get<long long>(experiment.techniques[1].sweep.at("resolution").at(0)) == 1024);
+    CHECK(std::get<long long>(experiment.techniques[1].sweep.at("height_resolution").at(0)) == 128);
+    CHECK(std::get<long long>(experiment.techniques[2].sweep.at("resolution").at(0)) == 1024);
 }
