@@ -60,7 +60,7 @@ struct EmbreeInstance {
 struct EmbreeHit {
     unsigned geometry = RTC_INVALID_GEOMETRY_ID;  // geometry(): an object instance or a population
     uint64_t primitive = 0;  // the triangle within it; a population's copy k, triangle t: k * T + t
-    glm::vec3 geometric_normal{0.0f};  // world space, not unit, as Embree's Ng
+    glm::vec3 geometric_normal{0.0f};  // world space, not unit; its sign not the winding's (a mirrored copy flips it)
 };
 
 class EmbreeScene {

@@ -56,7 +56,7 @@ std::string count_text(uint64_t n) {
     const char* suffix[] = {"k", "M", "G", "T"};
     double value = double(n);
     int s = -1;
-    while (value >= 1000.0 && s < 3) {
+    while (value >= 999.5 && s < 3) {  // 999,999 is "1M", not "1e+03k"
         value /= 1000.0;
         ++s;
     }

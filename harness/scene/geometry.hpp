@@ -46,7 +46,8 @@ std::vector<TriangleMesh> build_scene_meshes(const Scene& scene);
 // when `meshes` does not hold one mesh per object and population.
 const TriangleMesh& prototype_mesh(const Scene& scene, const std::vector<TriangleMesh>& meshes, size_t index);
 
-// World-space bounds of every instance of every object and every copy of every population.
+// World-space bounds of every instance of every object and every copy of every population (a
+// copy by its prototype's box: exact for moved, scaled or mirrored copies, loose for rotated ones).
 Bounds scene_bounds(const Scene& scene, const std::vector<TriangleMesh>& meshes);
 
 }  // namespace canopy
