@@ -10,6 +10,7 @@
 #include "scene/geometry.hpp"
 #include "scene/population.hpp"
 #include "support/config_error_of.hpp"
+#include "support/reference_hits.hpp"
 #include "support/test_gpu.hpp"
 #include "support/text_search.hpp"
 
@@ -275,20 +276,8 @@ TEST_CASE("population: the reference traces every copy, for camera and shadow ra
     for (size_t k = 0; k < copies.size(); ++k) {
         // The centre of the copy's top face: the box's local top (y = 0.1), lifted by its own translate.
         const glm::vec3 top = glm::vec3(copies[k].model * glm::vec4(0.0f, 0.1f, 0.0f, 1.0f));
-        RTCRayHit ray{};  // every lane defined
-        ray.ray.org_x = top.x;
-        ray.ray.org_y = 5.0f;
-        ray.ray.org_z = top.z;
-        ray.ray.dir_y = -1.0f;
-        ray.ray.tfar = 10.0f;
-        ray.ray.mask = 0xffffffffu;
-        ray.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-        ray.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-        RTCIntersectContext context{};
-        rtcInitIntersectContext(&context);
-        rtcIntersect1(embree.visible_scene(), &context, &ray);
-        if (ray.hit.geomID == RTC_INVALID_GEOMETRY_ID) continue;
-        const EmbreeHit hit = embree.resolve(ray.hit);
+        const RTCRayHit ray = test::trace_down(embree, top.x, top.z, 5.0f, 10.0f);
+        const EmbreeHit hit = ray.hit.geomID == RTC_INVALID_GEOMETRY_ID ? EmbreeHit{} : embree.resolve(ray.hit);
         if (hit.geometry == 1) {
             ++hits;
             // The hit lies on some copy's top; copies may overlap, so it is this one or a taller one.
@@ -305,6 +294,7 @@ TEST_CASE("population: the reference traces every copy, for camera and shadow ra
         shadow.dir_y = -1.0f;
         shadow.tfar = 5.0f - 0.5f * top.y;  // stops above the floor, inside the copy's height
         shadow.mask = 0xffffffffu;
+        RTCIntersectContext context{};
         rtcInitIntersectContext(&context);
         rtcOccluded1(embree.shadow_scene(), &context, &shadow);
         occluded += shadow.tfar < 0.0f;  // Embree marks an occluded ray with tfar = -inf

@@ -17,4 +17,20 @@ std::vector<std::optional<ReferenceHit>> reference_hits(const Scene& scene, cons
     return hits;
 }
 
+RTCRayHit trace_down(const EmbreeScene& embree, float x, float z, float from_y, float length) {
+    RTCRayHit ray{};
+    ray.ray.org_x = x;
+    ray.ray.org_y = from_y;
+    ray.ray.org_z = z;
+    ray.ray.dir_y = -1.0f;
+    ray.ray.tfar = length;
+    ray.ray.mask = 0xffffffffu;
+    ray.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    ray.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    RTCIntersectContext context{};
+    rtcInitIntersectContext(&context);
+    rtcIntersect1(embree.visible_scene(), &context, &ray);
+    return ray;
+}
+
 }  // namespace canopy::test

@@ -10,6 +10,7 @@
 #include "reference/embree_scene.hpp"
 #include "scene/geometry.hpp"
 #include "support/config_error_of.hpp"
+#include "support/reference_hits.hpp"
 
 #include <doctest/doctest.h>
 
@@ -268,18 +269,8 @@ TEST_CASE("grass population: Embree's instanced cells hit only the blades their 
     int blade_hits = 0, ground_hits = 0, thinned = 0, far_from_root = 0, upright_normals = 0;
     for (int j = 0; j < 160; ++j)
         for (int i = 0; i < 200; ++i) {
-            RTCRayHit ray{};  // every field defined
-            ray.ray.org_x = -2.0f + 4.0f * (float(i) + 0.5f) / 200.0f;
-            ray.ray.org_y = 5.0f;
-            ray.ray.org_z = -1.6f + 3.2f * (float(j) + 0.5f) / 160.0f;
-            ray.ray.dir_y = -1.0f;
-            ray.ray.tfar = 10.0f;
-            ray.ray.mask = 0xffffffffu;
-            ray.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-            ray.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-            RTCIntersectContext context{};
-            rtcInitIntersectContext(&context);
-            rtcIntersect1(embree.visible_scene(), &context, &ray);
+            const RTCRayHit ray = test::trace_down(embree, -2.0f + 4.0f * (float(i) + 0.5f) / 200.0f,
+                                                   -1.6f + 3.2f * (float(j) + 0.5f) / 160.0f, 5.0f, 10.0f);
             REQUIRE(ray.hit.geomID != RTC_INVALID_GEOMETRY_ID);  // the ground lies under every ray
             const EmbreeHit hit = embree.resolve(ray.hit);
             if (embree.geometry(hit.geometry).population < 0) {
