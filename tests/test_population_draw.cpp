@@ -396,3 +396,32 @@ TEST_CASE("population draw: the harness uploads populations only for a graph tha
     CHECK(seen[0] == 1);
     CHECK(seen[1] == 0);
 }
+
+TEST_CASE("population draw: a buffer declared per copy is sized by the copies of the graph's kinds") {
+    const Scene scene = field();  // 40 copies
+    REQUIRE(generate_instances(scene.populations.at(0)).size() == 40);
+    FrameGraph graph = population_graph();
+    graph.buffers.push_back(
+        {.name = "per_copy", .bytes = 16, .bytes_per_copy = 32, .usage = kStorageBuffer, .persistent = true});
+    CHECK(validate(graph).empty());
+    CHECK(describe(graph).find("buffer per_copy bytes=16+32/copy") != std::string::npos);
+    PassDecl fill{.name = "fill", .kind = PassKind::copy, .phase = Phase::load};
+    fill.uses = {ResourceUse{.resource = "per_copy", .use = Use::transfer_write}};
+    std::string refusal;
+    bool filled = false;
+    fill.record = [&](PassContext& pc) {
+        const std::vector<std::byte> bytes(16 + 40 * 32);
+        pc.upload("per_copy", bytes.data(), bytes.size());  // fits exactly
+        filled = true;
+        try {
+            pc.upload("per_copy", bytes.data(), 1, bytes.size());
+        } catch (const std::logic_error& error) {
+            refusal = error.what();
+        }
+    };
+    graph.passes.insert(graph.passes.begin(), std::move(fill));
+    FrameRenderer renderer(test::gpu(), scene, build_scene_meshes(scene), kWidth, kHeight, graph);
+    renderer.render();
+    CHECK(filled);
+    CHECK(refusal.find("uploads 1 bytes at 1296 into 'per_copy' of 1296 bytes") != std::string::npos);
+}

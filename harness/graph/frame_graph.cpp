@@ -93,7 +93,7 @@ std::string validate(const FrameGraph& graph) {
     }
     for (const BufferDecl& b : graph.buffers) {
         if (!names.insert(b.name).second) return fmt::format("resource '{}' is declared twice (or is a harness name)", b.name);
-        if (b.bytes == 0) return fmt::format("buffer '{}' is empty", b.name);
+        if (b.bytes == 0 && b.bytes_per_copy == 0) return fmt::format("buffer '{}' is empty", b.name);
     }
     const auto is_image = [&](const std::string& n) {
         return graph.image(n) || n == graph_names::kColor || n == graph_names::kDepth;
@@ -166,8 +166,9 @@ std::string describe(const FrameGraph& graph) {
                            i.layers, i.mips, i.samples, i.persistent ? " persistent" : "");
     }
     for (const BufferDecl& b : graph.buffers)
-        out += fmt::format("buffer {} bytes={} usage={}{}{}\n", b.name, b.bytes, b.usage, b.persistent ? " persistent" : "",
-                           b.host_visible ? " host-visible" : "");
+        out += fmt::format("buffer {} bytes={}{} usage={}{}{}\n", b.name, b.bytes,
+                           b.bytes_per_copy ? fmt::format("+{}/copy", b.bytes_per_copy) : "", b.usage,
+                           b.persistent ? " persistent" : "", b.host_visible ? " host-visible" : "");
     for (const PassDecl& p : graph.passes) {
         out += fmt::format("pass {} {} {} push={} [{}]\n", to_string(p.phase), to_string(p.kind), p.name,
                            p.push_constant_bytes, p.settings);

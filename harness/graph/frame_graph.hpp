@@ -64,6 +64,9 @@ enum BufferUsage : uint32_t {
 struct BufferDecl {
     std::string name;
     uint64_t bytes = 0;
+    // Plus this much per copy of the scene's populations of the graph's kinds
+    // (GraphNeeds::populations), counted when the graph is allocated: per-cell data, say.
+    uint64_t bytes_per_copy = 0;
     uint32_t usage = 0;        // BufferUsage bits
     bool persistent = false;   // keeps its contents from frame to frame (and from the load phase)
     bool host_visible = false; // CPU passes write it directly (upload); else uploads go through a copy

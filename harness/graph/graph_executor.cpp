@@ -108,6 +108,9 @@ public:
     void draw_population(const std::string& name, uint32_t max_copies) override {
         ex_.scene_.draw_population(commands_, binding().layout, name, max_copies);
     }
+    void draw_prototype(const std::string& name, uint32_t instances) override {
+        ex_.scene_.draw_prototype(commands_, binding().layout, name, instances);
+    }
     void draw_over_population(const std::string& name, std::span<const std::string> vertex_buffers,
                               uint32_t vertex_count) override {
         std::vector<VkBuffer> buffers;
@@ -238,7 +241,9 @@ GraphExecutor::GraphExecutor(const GpuContext& gpu, MemoryLedger& ledger, FrameG
     : gpu_(gpu), graph_(std::move(graph)), scene_(scene) {
     if (std::string problem = validate(graph_); !problem.empty())
         throw std::logic_error("malformed frame graph: " + problem);
-    resources_ = std::make_unique<GraphResources>(gpu, ledger, graph_, width, height, frame_uniforms);
+    uint64_t copies = 0;
+    for (const GeneratedPopulation& population : scene.populations()) copies += population.instances.size();
+    resources_ = std::make_unique<GraphResources>(gpu, ledger, graph_, width, height, frame_uniforms, copies);
     pipelines_ = std::make_unique<PipelineCache>(gpu);
     for (size_t i = 0; i < graph_.passes.size(); ++i) {
         const PassDecl& p = graph_.passes[i];

@@ -111,7 +111,7 @@ void GraphImage::forget_contents() {
 }
 
 GraphResources::GraphResources(const GpuContext& gpu, MemoryLedger& ledger, const FrameGraph& graph, uint32_t width,
-                               uint32_t height, const Buffer& frame_uniforms)
+                               uint32_t height, const Buffer& frame_uniforms, uint64_t copies)
     : frame_uniforms_(&frame_uniforms) {
     const auto add_image = [&](const ImageDecl& decl, const std::string& category) {
         uint32_t w = decl.extent.width, h = decl.extent.height;
@@ -126,9 +126,12 @@ GraphResources::GraphResources(const GpuContext& gpu, MemoryLedger& ledger, cons
     add_image(ImageDecl{graph_names::kDepth, kDepthTargetFormat, ImageExtent::screen()}, "targets");
     for (const ImageDecl& decl : graph.images) add_image(decl, "technique");
     for (const BufferDecl& decl : graph.buffers) {
-        buffers_.emplace(decl.name, Buffer(gpu, ledger, "technique", decl.bytes, buffer_usage(decl), decl.host_visible));
+        // Vulkan has no empty buffers: a per-copy buffer of a scene without copies gets 16 bytes.
+        uint64_t bytes = decl.bytes + decl.bytes_per_copy * copies;
+        if (bytes == 0) bytes = 16;
+        buffers_.emplace(decl.name, Buffer(gpu, ledger, "technique", bytes, buffer_usage(decl), decl.host_visible));
         host_visible_[decl.name] = decl.host_visible;
-        if (decl.host_visible) std::memset(buffers_.at(decl.name).mapped(), 0, decl.bytes);
+        if (decl.host_visible) std::memset(buffers_.at(decl.name).mapped(), 0, bytes);
     }
 }
 

@@ -41,6 +41,10 @@ public:
     // albedo), so the pass declares sizeof(DrawConstants) push-constant bytes like draw_scene.
     // `max_copies`: only the first copies (one, to bake the prototype, say).
     virtual void draw_population(const std::string& name, uint32_t max_copies = UINT32_MAX) = 0;
+    // The prototype of population `name` drawn `instances` times, however many copies there are
+    // (none for a population without copies), for a pipeline whose layout reads no copy attributes (gl_InstanceIndex tells the draws
+    // apart: a bake of the patch and its neighbours, say); pushes DrawConstants likewise.
+    virtual void draw_prototype(const std::string& name, uint32_t instances) = 0;
     // Geometry the technique owns drawn once per copy of population `name` (billboards, impostor
     // boxes): its `vertex_buffers` at bindings 0..n-1, `vertex_count` vertices per copy, and the
     // copies' PopulationInstance records per instance at binding n

@@ -96,7 +96,17 @@ void GpuScene::draw(VkCommandBuffer commands, VkPipelineLayout layout, bool cast
 void GpuScene::draw_population(VkCommandBuffer commands, VkPipelineLayout layout, const std::string& name,
                                uint32_t max_copies) const {
     const PopulationDraw& d = population_draw(name);
-    const uint32_t copies = std::min(d.instance_count, max_copies);
+    draw_instances(commands, layout, d, std::min(d.instance_count, max_copies));
+}
+
+void GpuScene::draw_prototype(VkCommandBuffer commands, VkPipelineLayout layout, const std::string& name,
+                              uint32_t instances) const {
+    const PopulationDraw& d = population_draw(name);
+    draw_instances(commands, layout, d, d.instance_count == 0 ? 0 : instances);
+}
+
+void GpuScene::draw_instances(VkCommandBuffer commands, VkPipelineLayout layout, const PopulationDraw& d,
+                              uint32_t copies) const {
     if (d.draw.index_count == 0 || copies == 0) return;
     const std::array<VkBuffer, 3> buffers{vertices_.handle(), d.instances.handle(), vertex_data_.handle()};
     const std::array<VkDeviceSize, 3> offsets{0, 0, 0};

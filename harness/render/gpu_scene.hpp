@@ -44,6 +44,10 @@ public:
     // `max_copies`: only the first copies (e.g. one, to bake the prototype).
     void draw_population(VkCommandBuffer commands, VkPipelineLayout layout, const std::string& name,
                          uint32_t max_copies = UINT32_MAX) const;
+    // The prototype alone, `instances` times (PassContext::draw_prototype): the copies' buffer is
+    // bound but must not be read.
+    void draw_prototype(VkCommandBuffer commands, VkPipelineLayout layout, const std::string& name,
+                        uint32_t instances) const;
     // Geometry a technique owns (`vertex_buffers` at bindings 0..n-1, `vertex_count` vertices)
     // drawn once per copy of population `name`, its PopulationInstance records at binding n.
     void draw_over_population(VkCommandBuffer commands, VkPipelineLayout layout, const std::string& name,
@@ -57,6 +61,8 @@ private:
     };
 
     const PopulationDraw& population_draw(const std::string& name) const;  // throws naming the populations there are
+    void draw_instances(VkCommandBuffer commands, VkPipelineLayout layout, const PopulationDraw& d,
+                        uint32_t instances) const;
 
     Buffer vertices_;
     Buffer indices_;

@@ -11,7 +11,8 @@ std::vector<GeneratedPopulation> generate_populations(const Scene& scene, const 
                                                 population.prototype.casts_shadows,
                                                 prototype_mesh(scene, meshes, index), generate_instances(population),
                                                 population.family ? population.family->vertex_data
-                                                                  : std::vector<PopulationVertexData>{}});
+                                                                  : std::vector<PopulationVertexData>{},
+                                                population.params});
     }
     return generated;
 }

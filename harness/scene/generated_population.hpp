@@ -19,6 +19,7 @@ struct GeneratedPopulation {
     TriangleMesh prototype;                   // local space, as in build_scene_meshes
     std::vector<PopulationInstance> instances;  // generate_instances
     std::vector<PopulationVertexData> vertex_data;  // a family's kind: one per prototype vertex; else empty
+    ParamSet params;  // a family's kind: the population's parameters (Population::params)
 };
 
 // The scene's populations whose kind is one of `kinds`, in scene order; `meshes` as

@@ -37,6 +37,8 @@ std::vector<TechniqueVariant> technique_variants(const std::string& family) {
         {"grass.billboard", {{"orientation", std::string("camera_facing")}, {"resolution", 64LL}}},
         {"grass.image", {{"resolution", 64LL}, {"slice_height", 0.01}}},
         {"grass.volume", {{"slices", 1LL}, {"resolution", 32LL}, {"height_resolution", 8LL}}},
+        {"grass.image", {{"resolution", 64LL}, {"macro_cells", 2LL}}},
+        {"grass.volume", {{"slices", 4LL}, {"resolution", 32LL}, {"height_resolution", 16LL}, {"macro_cells", 3LL}}},
     };
     for (const TechniqueVariant& v : extra)
         if (family.empty() || family_of(v.technique) == family) all.push_back(v);

@@ -32,11 +32,14 @@ RasterState bake_state(std::span<const uint32_t> fragment_spirv) {
     return s;
 }
 
-void record_prototype_bake(PassContext& pc, const RasterState& bake) {
+void record_prototype_bake(PassContext& pc, const RasterState& bake, bool tiled) {
     const GeneratedPopulation* grass = first_grass(pc.populations());
     if (!grass) return;
     pc.bind(pc.raster_pipeline(bake));
-    pc.draw_population(grass->name, 1);
+    if (tiled)
+        pc.draw_prototype(grass->name, 9);
+    else
+        pc.draw_population(grass->name, 1);
 }
 
 void record_ground_and_copies(PassContext& pc, const RasterState& ground, const RasterState& over,

@@ -42,8 +42,9 @@ VertexLayout without_locations(VertexLayout layout, uint32_t first, uint32_t las
 // with the population's layout less the copies' attributes (locations 2-9): the prototype is
 // drawn in patch space.
 RasterState bake_state(std::span<const uint32_t> fragment_spirv);
-// Records that bake: the first grass population's prototype, drawn once; nothing without one.
-void record_prototype_bake(PassContext& pc, const RasterState& bake);
+// Records that bake: the first grass population's prototype, drawn once, or `tiled` nine times
+// (PatchBake::tiles); nothing without one.
+void record_prototype_bake(PassContext& pc, const RasterState& bake, bool tiled = false);
 
 // One vertex of the quads that show a bake, patch space (w: whatever the technique's shader
 // reads there, e.g. the image layer), and its coordinates in the baked image.

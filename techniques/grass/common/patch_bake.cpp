@@ -20,8 +20,15 @@ Bounds bake_frame(const Bounds& b) {
     return f;
 }
 
-shader::PatchBake ortho_bake(const Bounds& bounds, BakeView view) {
-    const Bounds f = bake_frame(bounds);
+Bounds cell_frame(const Bounds& b) {
+    Bounds f;
+    f.min = glm::vec3(0.0f);
+    f.max = glm::vec3(1.0f, std::max(b.max.y, 1e-4f), 1.0f);
+    return f;
+}
+
+shader::PatchBake ortho_bake(const Bounds& bounds, BakeView view, bool tiled) {
+    const Bounds f = baked_frame(bounds, tiled);
     const glm::vec2 x(f.min.x, f.max.x), y(f.min.y, f.max.y), z(f.min.z, f.max.z);
     glm::mat4 m(0.0f);  // column-major: m[column][row]
     m[3][3] = 1.0f;
@@ -49,6 +56,7 @@ shader::PatchBake ortho_bake(const Bounds& bounds, BakeView view) {
     }
     bake.view_proj = m;
     bake.section = glm::vec4(-1e30f, 1e30f, 0.0f, 0.0f);
+    bake.tiles = glm::vec4(tiled ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f);
     return bake;
 }
 

@@ -22,8 +22,17 @@ enum class BakeView { along_z, along_x, down };
 // side at least 1e-4 long, so a flat prototype still frames. The quads that show a bake span it.
 Bounds bake_frame(const Bounds& bounds);
 
-// The camera framing bake_frame(bounds) (patch space).
-shader::PatchBake ortho_bake(const Bounds& bounds, BakeView view);
+// What a tiled bake frames (PatchBake::tiles): the cell, x and z in [0, 1], y from 0 to the
+// prototype's top (at least 1e-4): blades leaning out of the cell are cut at its edges, and those
+// of the 8 neighbouring copies leaning in are drawn, so the bake repeats without seams.
+Bounds cell_frame(const Bounds& bounds);
+
+// The camera framing bake_frame(bounds) (patch space), or, `tiled`, cell_frame(bounds) with the
+// patch's 8 neighbours drawn too.
+shader::PatchBake ortho_bake(const Bounds& bounds, BakeView view, bool tiled = false);
+
+// What a bake frames: cell_frame(bounds) when tiled, else bake_frame(bounds).
+inline Bounds baked_frame(const Bounds& bounds, bool tiled) { return tiled ? cell_frame(bounds) : bake_frame(bounds); }
 
 // The first population of kind "grass" (what the bakes draw), or nullptr.
 const GeneratedPopulation* first_grass(std::span<const GeneratedPopulation> populations);

@@ -8,9 +8,12 @@
 #include "grass_image_params.h"
 #include "../common/grass_passes.hpp"
 #include "../common/grass_population.hpp"
+#include "../common/macro_cells.hpp"
 #include "../common/patch_bake.hpp"
 
 #include "shaders/grass/grass_image_frag.h"
+#include "shaders/grass/grass_image_macro_frag.h"
+#include "shaders/grass/grass_image_macro_vert.h"
 #include "shaders/grass/grass_image_vert.h"
 #include "shaders/grass/image_bake_frag.h"
 
@@ -33,10 +36,11 @@ constexpr const char* kQuad = "quad";            // 6 QuadVertex
 constexpr const char* kCamera = "bake_camera";   // PatchBake, looking down
 }  // namespace names
 
-// The quad over the prototype's bake_frame in x and z at `height` above the ground, its
-// coordinates those of the top-view bake (grass::BakeView::down: u = x, v = z).
-std::array<grass::QuadVertex, 6> slice_quad(const Bounds& bounds, float height) {
-    const Bounds f = grass::bake_frame(bounds);
+// The quad over the bake's frame in x and z at `height` above the ground, its coordinates those
+// of the top-view bake (grass::BakeView::down: u = x, v = z). Tiled, the frame is the cell, and
+// the macro-cells' vertex shader reads x and z as the corner of the macro-cell.
+std::array<grass::QuadVertex, 6> slice_quad(const Bounds& bounds, float height, bool tiled) {
+    const Bounds f = grass::baked_frame(bounds, tiled);
     std::array<grass::QuadVertex, 6> quad;
     for (size_t i = 0; i < 6; ++i) {
         const glm::vec2 c = grass::kQuadCorners[i];
@@ -50,7 +54,7 @@ class GrassImage final : public Technique {
 public:
     std::string name() const override { return "grass.image"; }
     std::string summary() const override {
-        return "grass as one horizontal slice per cell: the patch's top view baked at load, lit per pixel";
+        return "grass as one horizontal slice per cell or macro-cell: the patch's top view baked at load, lit per pixel";
     }
     std::string paper() const override { return "Lemme 2012 §4.2 and §5.3; Boulanger 2008 §4.2 (the far slice)"; }
     std::vector<ParamSpec> params() const override { return shader::GrassImageParams::specs(); }
@@ -59,6 +63,8 @@ public:
     FrameGraph graph(const ParamSet& params) const override {
         const uint32_t resolution = uint32_t(params.integer("resolution"));
         const float slice_height = float(params.real("slice_height"));
+        const uint32_t macro = uint32_t(params.integer("macro_cells"));
+        const bool tiled = macro > 0;
         FrameGraph g;
         g.needs.populations = {grass::kGrassPopulationKind};
         g.shader_params.set_block(shader::GrassImageParams::from(params));
@@ -71,14 +77,19 @@ public:
         g.buffers.push_back({.name = names::kQuad, .bytes = sizeof(grass::QuadVertex) * 6, .usage = kVertexBuffer,
                              .persistent = true});
         g.buffers.push_back({.name = names::kCamera, .bytes = sizeof(shader::PatchBake), .usage = kUniformBuffer});
+        if (tiled) {
+            g.report["macro_cells"] = fmt::format("{} x {}", macro, macro);
+            grass::declare_macro_buffers(g);
+            g.passes.push_back(grass::macro_setup_pass(macro));
+        }
 
         PassDecl setup{.name = "bake_setup", .kind = PassKind::copy, .phase = Phase::load};
         setup.uses = {use(names::kQuad, Use::transfer_write), use(names::kCamera, Use::transfer_write)};
-        setup.settings = fmt::format("slice_height={}", slice_height);
-        setup.record = [slice_height](PassContext& pc) {
+        setup.settings = fmt::format("slice_height={} tiled={}", slice_height, tiled);
+        setup.record = [slice_height, tiled](PassContext& pc) {
             const Bounds bounds = grass::prototype_bounds(grass::first_grass(pc.populations()));
-            const auto quad = slice_quad(bounds, slice_height * bounds.max.y);
-            const shader::PatchBake camera = grass::ortho_bake(bounds, grass::BakeView::down);
+            const auto quad = slice_quad(bounds, slice_height * bounds.max.y, tiled);
+            const shader::PatchBake camera = grass::ortho_bake(bounds, grass::BakeView::down, tiled);
             pc.upload(names::kQuad, quad.data(), sizeof(quad));
             pc.upload(names::kCamera, &camera, sizeof(camera));
         };
@@ -91,8 +102,8 @@ public:
                     cleared(names::kAlbedo, Use::color_attachment, {0.0f, 0.0f, 0.0f, shader::PATCH_BAKE_EMPTY}),
                     cleared(names::kNormal, Use::color_attachment, {0.0f, 1.0f, 0.0f, 0.0f}),
                     cleared(names::kBakeDepth, Use::depth_attachment, kFarDepth, false)};
-        top.settings = "down";
-        top.record = [bake](PassContext& pc) { grass::record_prototype_bake(pc, bake); };
+        top.settings = tiled ? "down, tiled" : "down";
+        top.record = [bake, tiled](PassContext& pc) { grass::record_prototype_bake(pc, bake, tiled); };
         g.passes.push_back(std::move(top));
 
         PassDecl frame{.name = "slices", .kind = PassKind::raster};
@@ -103,13 +114,26 @@ public:
                       cleared(graph_names::kDepth, Use::depth_attachment, kFarDepth)};
         const RasterState ground = grass::ground_state();
         RasterState slice;
-        slice.vertex_spirv = grass_image_vert;
-        slice.fragment_spirv = grass_image_frag;
-        slice.vertices = grass::quad_layout();
-        frame.settings = "one quad per cell";
-        frame.record = [ground, slice](PassContext& pc) {
-            grass::record_ground_and_copies(pc, ground, slice, names::kQuad, 6);
-        };
+        if (tiled) {
+            frame.uses.push_back(use(grass::macro_names::kField, Use::uniform, 3));
+            frame.uses.push_back(use(grass::macro_names::kCells, Use::storage_read, 4));
+            frame.uses.push_back(use(grass::macro_names::kMacros, Use::vertex));
+            slice.vertex_spirv = grass_image_macro_vert;
+            slice.fragment_spirv = grass_image_macro_frag;
+            slice.vertices = grass::macro_layout();
+            frame.settings = fmt::format("one quad per {} x {} macro-cell", macro, macro);
+            frame.record = [ground, slice, macro](PassContext& pc) {
+                grass::record_ground_and_macros(pc, ground, slice, names::kQuad, 6, macro);
+            };
+        } else {
+            slice.vertex_spirv = grass_image_vert;
+            slice.fragment_spirv = grass_image_frag;
+            slice.vertices = grass::quad_layout();
+            frame.settings = "one quad per cell";
+            frame.record = [ground, slice](PassContext& pc) {
+                grass::record_ground_and_copies(pc, ground, slice, names::kQuad, 6);
+            };
+        }
         g.passes.push_back(std::move(frame));
         return g;
     }

@@ -1,7 +1,8 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // Any grass technique's load-phase bake: the patch's blades (the population's prototype, one
-// copy drawn without its cell's placement) seen by an orthographic bake camera (patch_bake.h).
+// copy drawn without its cell's placement; tiled, with its 8 neighbours) seen by an orthographic
+// bake camera (patch_bake.h).
 #include "frame_uniforms.glsl"
 #include "patch_bake.h"
 
@@ -20,11 +21,11 @@ layout(location = 4) flat out float taper;
 layout(location = 5) flat out float threshold;
 
 void main() {
-    patch_position = in_position;
+    patch_position = in_position + (bake.tiles.x > 0.0 ? patch_bake_tile(gl_InstanceIndex) : vec3(0.0));
     patch_normal = in_normal;
     strip_uv = blade_strip.xy;
     colour = blade_strip.w;
     taper = blade_root.z;
     threshold = blade_strip.z;
-    gl_Position = bake.view_proj * vec4(in_position, 1.0);
+    gl_Position = bake.view_proj * vec4(patch_position, 1.0);
 }

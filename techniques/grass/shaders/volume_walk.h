@@ -60,26 +60,34 @@ CANOPY_FN float volume_first_plane(float e, float d, float n) {
     return lower + (sign_d + abs(sign_d)) * half_gap;           // eq 5.11-5.12
 }
 
-CANOPY_FN VolumeWalk volume_walk(vec3 e, vec3 d, float n) {
+// `n`: the planes per unit of q in x and in z (a macro-cell of k x l cells, grass_macro_cells.h,
+// holds n k along x and n l along z); the float overloads are the one-cell volume's n and n.
+CANOPY_FN VolumeWalk volume_walk(vec3 e, vec3 d, vec2 n) {
     VolumeWalk w;
-    w.first = vec2(volume_first_plane(e.x, d.x, n), volume_first_plane(e.z, d.z, n));
+    w.first = vec2(volume_first_plane(e.x, d.x, n.x), volume_first_plane(e.z, d.z, n.y));
     vec2 moves = vec2(abs(d.x) >= VOLUME_PARALLEL ? 1.0f : 0.0f, abs(d.z) >= VOLUME_PARALLEL ? 1.0f : 0.0f);
     w.step = vec2(d.x > 0.0f ? 1.0f : -1.0f, d.z > 0.0f ? 1.0f : -1.0f) * moves / n;
     w.inverse = vec2(moves.x > 0.0f ? 1.0f / d.x : 0.0f, moves.y > 0.0f ? 1.0f / d.z : 0.0f);
     return w;
 }
 
+CANOPY_FN VolumeWalk volume_walk(vec3 e, vec3 d, float n) { return volume_walk(e, d, vec2(n, n)); }
+
 // The next plane the segment meets after crossing `crossed` planes of each axis (eq 5.15-5.17,
 // the planes moved on by eq 5.21 once per crossing).
-CANOPY_FN VolumeHit volume_next_hit(VolumeWalk w, vec3 e, ivec2 crossed, float n) {
+CANOPY_FN VolumeHit volume_next_hit(VolumeWalk w, vec3 e, ivec2 crossed, vec2 n) {
     vec2 plane = w.first + vec2(crossed) * w.step;
     float to_x = w.inverse.x != 0.0f ? (plane.x - e.x) * w.inverse.x : VOLUME_NEVER;  // eq 5.15-5.16
     float to_z = w.inverse.y != 0.0f ? (plane.y - e.z) * w.inverse.y : VOLUME_NEVER;
     VolumeHit hit;
     hit.axis = to_x <= to_z ? 0 : 1;  // eq 5.17
     hit.lambda = min(to_x, to_z);
-    hit.slice = int(floor((hit.axis == 0 ? plane.x : plane.y) * n));  // (k + 0.5) / n -> k
+    hit.slice = int(floor(hit.axis == 0 ? plane.x * n.x : plane.y * n.y));  // (k + 0.5) / n -> k
     return hit;
+}
+
+CANOPY_FN VolumeHit volume_next_hit(VolumeWalk w, vec3 e, ivec2 crossed, float n) {
+    return volume_next_hit(w, e, crossed, vec2(n, n));
 }
 
 CANOPY_END_NAMESPACE

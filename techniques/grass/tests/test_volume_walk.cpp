@@ -25,13 +25,14 @@ struct Crossing {
 
 // Every slice plane (k + 0.5) / n of x and z that the segment e + lambda d, lambda in [0, 1],
 // crosses, by brute force, sorted along the segment.
-std::vector<Crossing> brute_force(glm::vec3 e, glm::vec3 d, int n) {
+// `n`: the planes along x and along z (a macro-cell's n k and n l).
+std::vector<Crossing> brute_force(glm::vec3 e, glm::vec3 d, glm::ivec2 n) {
     std::vector<Crossing> all;
     for (int axis = 0; axis < 2; ++axis) {
         const int c = axis == 0 ? 0 : 2;
         if (d[c] == 0.0f) continue;
-        for (int k = 0; k < n; ++k) {
-            const float lambda = ((float(k) + 0.5f) / float(n) - e[c]) / d[c];
+        for (int k = 0; k < n[axis]; ++k) {
+            const float lambda = ((float(k) + 0.5f) / float(n[axis]) - e[c]) / d[c];
             if (lambda >= 0.0f && lambda <= 1.0f) all.push_back({lambda, axis, k});
         }
     }
@@ -39,13 +40,16 @@ std::vector<Crossing> brute_force(glm::vec3 e, glm::vec3 d, int n) {
     return all;
 }
 
-// The shader's loop: hits until the segment ends, at most 2n + 1 (as grass_volume.frag).
-std::vector<Crossing> walk(glm::vec3 e, glm::vec3 d, int n) {
-    const shader::VolumeWalk w = shader::volume_walk(e, d, float(n));
+// The shader's loop: hits until the segment ends, at most 2n + 1 (as grass_volume.frag), or with
+// different plane counts per axis n.x + n.y + 1 (as grass_volume_macro.frag).
+std::vector<Crossing> walk(glm::vec3 e, glm::vec3 d, glm::ivec2 n) {
+    const bool one_cell = n.x == n.y;
+    const shader::VolumeWalk w = one_cell ? shader::volume_walk(e, d, float(n.x)) : shader::volume_walk(e, d, glm::vec2(n));
     std::vector<Crossing> hits;
     glm::ivec2 crossed(0);
-    for (int i = 0; i < 2 * n + 1; ++i) {
-        const shader::VolumeHit hit = shader::volume_next_hit(w, e, crossed, float(n));
+    for (int i = 0; i < n.x + n.y + 1; ++i) {
+        const shader::VolumeHit hit = one_cell ? shader::volume_next_hit(w, e, crossed, float(n.x))
+                                               : shader::volume_next_hit(w, e, crossed, glm::vec2(n));
         REQUIRE(std::isfinite(hit.lambda));
         if (hit.lambda > 1.0f) break;
         crossed += hit.axis == 0 ? glm::ivec2(1, 0) : glm::ivec2(0, 1);
@@ -53,6 +57,8 @@ std::vector<Crossing> walk(glm::vec3 e, glm::vec3 d, int n) {
     }
     return hits;
 }
+
+std::vector<Crossing> walk(glm::vec3 e, glm::vec3 d, int n) { return walk(e, d, glm::ivec2(n)); }
 
 // The segment from `e` (inside the unit cube) along `direction` to where it leaves the cube.
 glm::vec3 to_exit(glm::vec3 e, glm::vec3 direction) {
@@ -64,14 +70,15 @@ glm::vec3 to_exit(glm::vec3 e, glm::vec3 direction) {
     return t * direction;
 }
 
-void check_same(glm::vec3 e, glm::vec3 d, int n) {
+void check_same(glm::vec3 e, glm::vec3 d, glm::ivec2 n) {
     CAPTURE(e.x);
     CAPTURE(e.y);
     CAPTURE(e.z);
     CAPTURE(d.x);
     CAPTURE(d.y);
     CAPTURE(d.z);
-    CAPTURE(n);
+    CAPTURE(n.x);
+    CAPTURE(n.y);
     const std::vector<Crossing> expected = brute_force(e, d, n);
     const std::vector<Crossing> got = walk(e, d, n);
     REQUIRE(got.size() == expected.size());
@@ -86,9 +93,11 @@ void check_same(glm::vec3 e, glm::vec3 d, int n) {
             CHECK(got[i].slice == expected[i].slice);
         }
         CHECK(got[i].slice >= 0);
-        CHECK(got[i].slice < n);
+        CHECK(got[i].slice < n[got[i].axis]);
     }
 }
+
+void check_same(glm::vec3 e, glm::vec3 d, int n) { check_same(e, d, glm::ivec2(n)); }
 
 }  // namespace
 
@@ -106,6 +115,24 @@ TEST_CASE("volume walk: the planes met are the slice planes the segment crosses,
         }
     }
     CHECK(rays > 9000);
+}
+
+TEST_CASE("volume walk: with as many planes per axis as a macro-cell of k x l cells has, the same holds") {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f), signed_unit(-1.0f, 1.0f);
+    int rays = 0, met = 0;
+    for (const glm::ivec2 n : {glm::ivec2(4, 8), glm::ivec2(16, 48), glm::ivec2(3, 1), glm::ivec2(256, 16)}) {
+        for (int i = 0; i < 1000; ++i) {
+            const glm::vec3 e(unit(rng), unit(rng), unit(rng));
+            glm::vec3 direction(signed_unit(rng), signed_unit(rng), signed_unit(rng));
+            if (glm::length(direction) < 1e-3f) continue;
+            check_same(e, to_exit(e, direction), n);
+            met += int(walk(e, to_exit(e, direction), n).size());
+            ++rays;
+        }
+    }
+    CHECK(rays > 3900);
+    CHECK(met > 15 * rays);  // the walks do meet many planes
 }
 
 TEST_CASE("volume walk: rays entering through each face, going either way along each axis") {

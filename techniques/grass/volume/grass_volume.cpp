@@ -11,10 +11,13 @@
 #include "grass_volume_params.h"
 #include "../common/grass_passes.hpp"
 #include "../common/grass_population.hpp"
+#include "../common/macro_cells.hpp"
 #include "../common/patch_bake.hpp"
 #include "../shaders/volume_walk.h"
 
 #include "shaders/grass/grass_volume_frag.h"
+#include "shaders/grass/grass_volume_macro_frag.h"
+#include "shaders/grass/grass_volume_macro_vert.h"
 #include "shaders/grass/grass_volume_vert.h"
 #include "shaders/grass/volume_bake_frag.h"
 
@@ -59,10 +62,10 @@ std::vector<SliceBake> slice_bakes(uint32_t n) {
     return bakes;
 }
 
-// The camera of one slice: bake_frame(bounds) seen along the slice's axis, keeping section k of n.
-shader::PatchBake slice_camera(const Bounds& bounds, const SliceBake& slice, uint32_t n) {
-    const Bounds f = grass::bake_frame(bounds);
-    shader::PatchBake bake = grass::ortho_bake(bounds, slice.view);
+// The camera of one slice: the bake's frame seen along the slice's axis, keeping section k of n.
+shader::PatchBake slice_camera(const Bounds& bounds, const SliceBake& slice, uint32_t n, bool tiled) {
+    const Bounds f = grass::baked_frame(bounds, tiled);
+    shader::PatchBake bake = grass::ortho_bake(bounds, slice.view, tiled);
     const int axis = slice.view == grass::BakeView::along_x ? 0 : 2;
     const float width = (f.max[axis] - f.min[axis]) / float(n);
     // The outer sections reach past the frame, so a blade on its edge belongs to one of them.
@@ -96,7 +99,7 @@ class GrassVolume final : public Technique {
 public:
     std::string name() const override { return "grass.volume"; }
     std::string summary() const override {
-        return "grass as a ray-cast volume: n vertical slices per direction baked at load, walked per pixel in a cuboid per cell";
+        return "grass as a ray-cast volume: n vertical slices per direction baked at load, walked per pixel in a cuboid per cell or macro-cell";
     }
     std::string paper() const override { return "Lemme 2012 §4.2.1 and §5.2 (eq 5.2-5.21), after Habel et al. 2007"; }
     std::vector<ParamSpec> params() const override { return shader::GrassVolumeParams::specs(); }
@@ -108,6 +111,8 @@ public:
         const ImageExtent extent =
             ImageExtent::texels(uint32_t(params.integer("resolution")), uint32_t(params.integer("height_resolution")));
         const std::vector<SliceBake> bakes = slice_bakes(n);
+        const uint32_t macro = uint32_t(params.integer("macro_cells"));
+        const bool tiled = macro > 0;
         FrameGraph g;
         g.needs.populations = {grass::kGrassPopulationKind};
         g.shader_params.set_block(block);
@@ -119,24 +124,32 @@ public:
         g.images.push_back({.name = names::kBakeDepth, .format = VK_FORMAT_D32_SFLOAT, .extent = extent});
         g.buffers.push_back({.name = names::kCuboid, .bytes = sizeof(grass::QuadVertex) * kCuboidVertices,
                              .usage = kVertexBuffer, .persistent = true});
-        g.buffers.push_back({.name = names::kBox, .bytes = sizeof(shader::VolumeBox), .usage = kUniformBuffer,
-                             .persistent = true});
+        // One cell's cuboid is the bake's frame; macro-cells place theirs from the field (macro_field).
+        if (!tiled)
+            g.buffers.push_back({.name = names::kBox, .bytes = sizeof(shader::VolumeBox), .usage = kUniformBuffer,
+                                 .persistent = true});
         for (const SliceBake& b : bakes)
             g.buffers.push_back({.name = b.camera, .bytes = sizeof(shader::PatchBake), .usage = kUniformBuffer});
+        if (tiled) {
+            g.report["macro_cells"] = fmt::format("{} x {}", macro, macro);
+            grass::declare_macro_buffers(g);
+            g.passes.push_back(grass::macro_setup_pass(macro));
+        }
 
         PassDecl setup{.name = "bake_setup", .kind = PassKind::copy, .phase = Phase::load};
-        setup.uses = {use(names::kCuboid, Use::transfer_write), use(names::kBox, Use::transfer_write)};
+        setup.uses = {use(names::kCuboid, Use::transfer_write)};
+        if (!tiled) setup.uses.push_back(use(names::kBox, Use::transfer_write));
         for (const SliceBake& b : bakes) setup.uses.push_back(use(b.camera, Use::transfer_write));
-        setup.settings = fmt::format("slices={}", n);
-        setup.record = [bakes, n](PassContext& pc) {
+        setup.settings = fmt::format("slices={} tiled={}", n, tiled);
+        setup.record = [bakes, n, tiled](PassContext& pc) {
             const Bounds bounds = grass::prototype_bounds(grass::first_grass(pc.populations()));
-            const Bounds f = grass::bake_frame(bounds);
+            const Bounds f = grass::baked_frame(bounds, tiled);
             const auto vertices = cuboid();
             const shader::VolumeBox box{glm::vec4(f.min, 0.0f), glm::vec4(f.max - f.min, 0.0f)};
             pc.upload(names::kCuboid, vertices.data(), sizeof(vertices));
-            pc.upload(names::kBox, &box, sizeof(box));
+            if (!tiled) pc.upload(names::kBox, &box, sizeof(box));
             for (const SliceBake& b : bakes) {
-                const shader::PatchBake camera = slice_camera(bounds, b, n);
+                const shader::PatchBake camera = slice_camera(bounds, b, n, tiled);
                 pc.upload(b.camera, &camera, sizeof(camera));
             }
         };
@@ -153,27 +166,40 @@ public:
                               b.layer),
                       cleared(names::kNormal, Use::color_attachment, {0.0f, 1.0f, 0.0f, 0.0f}, true, b.layer),
                       cleared(names::kBakeDepth, Use::depth_attachment, kFarDepth, false)};
-            p.settings = fmt::format("layer={}", b.layer);
-            p.record = [bake](PassContext& pc) { grass::record_prototype_bake(pc, bake); };
+            p.settings = fmt::format("layer={}{}", b.layer, tiled ? " tiled" : "");
+            p.record = [bake, tiled](PassContext& pc) { grass::record_prototype_bake(pc, bake, tiled); };
             g.passes.push_back(std::move(p));
         }
 
         PassDecl frame{.name = "volumes", .kind = PassKind::raster};
         frame.push_constant_bytes = sizeof(DrawConstants);
         frame.uses = {use(graph_names::kFrameUniforms, Use::uniform, 0), use(names::kAlbedo, Use::sampled, 1),
-                      use(names::kNormal, Use::sampled, 2), use(names::kBox, Use::uniform, 3),
-                      use(names::kCuboid, Use::vertex),
+                      use(names::kNormal, Use::sampled, 2), use(names::kCuboid, Use::vertex),
                       cleared(graph_names::kColor, Use::color_attachment, {0.0f, 0.0f, 0.0f, 1.0f}),
                       cleared(graph_names::kDepth, Use::depth_attachment, kFarDepth)};
         const RasterState ground = grass::ground_state();
         RasterState volume;
-        volume.vertex_spirv = grass_volume_vert;
-        volume.fragment_spirv = grass_volume_frag;
-        volume.vertices = grass::quad_layout();
-        frame.settings = "one cuboid per cell, its exit faces drawn";
-        frame.record = [ground, volume](PassContext& pc) {
-            grass::record_ground_and_copies(pc, ground, volume, names::kCuboid, kCuboidVertices);
-        };
+        if (tiled) {
+            frame.uses.push_back(use(grass::macro_names::kField, Use::uniform, 3));
+            frame.uses.push_back(use(grass::macro_names::kCells, Use::storage_read, 4));
+            frame.uses.push_back(use(grass::macro_names::kMacros, Use::vertex));
+            volume.vertex_spirv = grass_volume_macro_vert;
+            volume.fragment_spirv = grass_volume_macro_frag;
+            volume.vertices = grass::macro_layout();
+            frame.settings = fmt::format("one cuboid per {} x {} macro-cell, its exit faces drawn", macro, macro);
+            frame.record = [ground, volume, macro](PassContext& pc) {
+                grass::record_ground_and_macros(pc, ground, volume, names::kCuboid, kCuboidVertices, macro);
+            };
+        } else {
+            frame.uses.insert(frame.uses.begin() + 3, use(names::kBox, Use::uniform, 3));
+            volume.vertex_spirv = grass_volume_vert;
+            volume.fragment_spirv = grass_volume_frag;
+            volume.vertices = grass::quad_layout();
+            frame.settings = "one cuboid per cell, its exit faces drawn";
+            frame.record = [ground, volume](PassContext& pc) {
+                grass::record_ground_and_copies(pc, ground, volume, names::kCuboid, kCuboidVertices);
+            };
+        }
         g.passes.push_back(std::move(frame));
         return g;
     }
