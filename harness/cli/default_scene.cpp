@@ -10,12 +10,16 @@
 namespace canopy {
 
 std::filesystem::path find_default_bench_scene(const std::filesystem::path& executable) {
+    return find_default_scene(kDefaultBenchScene, executable);
+}
+
+std::filesystem::path find_default_scene(const std::string& relative, const std::filesystem::path& executable) {
     namespace fs = std::filesystem;
-    std::vector<fs::path> candidates{fs::path(kDefaultBenchScene)};
+    std::vector<fs::path> candidates{fs::path(relative)};
     if (!executable.empty()) {
         const fs::path folder = executable.parent_path();
-        candidates.push_back((folder / ".." / kDefaultBenchScene).lexically_normal());
-        candidates.push_back((folder / kDefaultBenchScene).lexically_normal());
+        candidates.push_back((folder / ".." / relative).lexically_normal());
+        candidates.push_back((folder / relative).lexically_normal());
     }
     std::vector<fs::path> looked;
     for (const fs::path& candidate : candidates) {
@@ -26,8 +30,8 @@ std::filesystem::path find_default_bench_scene(const std::filesystem::path& exec
     }
     std::string places;
     for (const fs::path& place : looked) places += fmt::format("{}{}", places.empty() ? "" : ", ", place.string());
-    throw ConfigError({}, 0, fmt::format("no scene given, and the default scene {} was not found; looked for {}", kDefaultBenchScene, places),
-                      fmt::format("give the scene file as the command's argument, e.g. path/to/canopy/{}", kDefaultBenchScene));
+    throw ConfigError({}, 0, fmt::format("no scene given, and the default scene {} was not found; looked for {}", relative, places),
+                      fmt::format("give the scene file as the command's argument, e.g. path/to/canopy/{}", relative));
 }
 
 std::filesystem::path current_executable() {

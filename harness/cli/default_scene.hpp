@@ -13,6 +13,8 @@ inline constexpr const char* kDefaultBenchScene = "configs/scenes/spheres.toml";
 // checkout's build/canopy), else next to the executable. Throws ConfigError, listing where it
 // looked, when none exists.
 std::filesystem::path find_default_bench_scene(const std::filesystem::path& executable);
+// The same search for another checkout-relative scene (a family benchmark's default).
+std::filesystem::path find_default_scene(const std::string& relative, const std::filesystem::path& executable);
 
 // This process's executable (/proc/self/exe), or "" when it cannot be read.
 std::filesystem::path current_executable();

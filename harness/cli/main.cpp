@@ -11,6 +11,7 @@
 #include "report/markdown_report.hpp"
 #include "report/paper_report.hpp"
 #include "run/experiment_runner.hpp"
+#include "run/family_benchmark.hpp"
 #include "run/interrupt.hpp"
 #include "run/kernel_scaling.hpp"
 #include "report/atomic_file.hpp"
@@ -33,6 +34,8 @@
 #include <CLI/CLI.hpp>
 #include <fmt/chrono.h>
 #include <fmt/format.h>
+
+#include <list>
 
 #include <algorithm>
 #include <csignal>
@@ -529,6 +532,27 @@ int main(int argc, char** argv) {
         "<= 5 % for cases over 20 ms, CV <= 5 %), and the load average before and after every run.\n"
         "scripts/measurement-study runs it under several settings (README, Timing).");
 
+    // The families' own benchmarks, each with its parameters as options (--name value).
+    struct FamilyBenchmarkCommand {
+        const FamilyBenchmark* benchmark;
+        CLI::App* command;
+        std::string scene, out, device;
+        std::map<std::string, std::string> given;
+    };
+    std::list<FamilyBenchmarkCommand> family_benchmarks;  // stable addresses for CLI11's references
+    for (const FamilyBenchmark* b : FamilyBenchmarkRegistry::instance().all()) {
+        FamilyBenchmarkCommand& c = family_benchmarks.emplace_back();
+        c.benchmark = b;
+        c.command = bench_cmd->add_subcommand(b->name(), b->summary());
+        c.command->add_option("scene", c.scene, fmt::format("scene TOML (default: {} in the checkout)", b->default_scene()));
+        for (const ParamSpec& spec : b->params())
+            c.command->add_option_function<std::string>(
+                "--" + spec.name, [&c, name = spec.name](const std::string& v) { c.given[name] = v; },
+                fmt::format("{} ({}, default {})", spec.doc, spec.type_and_range(), to_string(spec.default_value)));
+        c.command->add_option("--out", c.out, "also write <name>.md and <name>.json (numbers, parameters, environment) into this folder");
+        c.command->add_option("--device", c.device, "Vulkan device: index or part of its name (default: lavapipe)");
+    }
+
     std::vector<std::string> export_runs;
     bool export_force = false;
     CLI::App* export_cmd = app.add_subcommand(
@@ -556,6 +580,12 @@ int main(int argc, char** argv) {
     }
 
     try {
+        for (const FamilyBenchmarkCommand& c : family_benchmarks)
+            if (*c.command)
+                return run_family_benchmark(*c.benchmark,
+                                            c.scene.empty() ? find_default_scene(c.benchmark->default_scene(), current_executable())
+                                                            : fs::path(c.scene),
+                                            c.given, c.device, c.out);
         if (*list_cmd) return list_techniques();
         if (*graph_cmd) return print_graph(graph_technique);
         if (*devices_cmd) return list_devices();
