@@ -37,6 +37,55 @@ float DensityMap::sample(glm::vec2 uv) const {
     return bottom + (top - bottom) * fy;
 }
 
+namespace {
+
+// A smooth value noise in [0, 1] over [0, 1]^2: hashed lattice values blended by smoothstep.
+float value_noise(glm::vec2 uv, uint32_t periods, uint32_t seed) {
+    const glm::vec2 q = uv * float(periods);
+    const glm::ivec2 c(glm::floor(q));
+    const glm::vec2 f = q - glm::vec2(c);
+    const auto lattice = [&](int dx, int dz) {
+        return float(shader::grass_cell_hash(c + glm::ivec2(dx, dz), seed) & 0xffffu) / 65535.0f;
+    };
+    const glm::vec2 s = f * f * (3.0f - 2.0f * f);
+    const float bottom = lattice(0, 0) + (lattice(1, 0) - lattice(0, 0)) * s.x;
+    const float top = lattice(0, 1) + (lattice(1, 1) - lattice(0, 1)) * s.x;
+    return bottom + (top - bottom) * s.y;
+}
+
+}  // namespace
+
+DensityMap density_map(DensityPattern pattern, float low, float high, uint32_t texels, uint32_t periods, uint32_t seed) {
+    if (texels == 0 || periods == 0) throw std::invalid_argument("density_map: texels and periods must be above 0");
+    if (!(low >= 0.0f && high <= 1.0f)) throw std::invalid_argument("density_map: densities lie in [0, 1]");
+    if (pattern == DensityPattern::uniform) return DensityMap{1, 1, {high}};
+    DensityMap map{texels, texels, std::vector<float>(size_t(texels) * texels)};
+    std::vector<float> noise;
+    if (pattern == DensityPattern::clearings) {
+        for (uint32_t j = 0; j < texels; ++j)
+            for (uint32_t i = 0; i < texels; ++i)
+                noise.push_back(value_noise({(float(i) + 0.5f) / float(texels), (float(j) + 0.5f) / float(texels)}, periods, seed));
+    }
+    float median = 0.5f;
+    if (!noise.empty()) {
+        std::vector<float> sorted = noise;
+        std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+        median = sorted[sorted.size() / 2];
+    }
+    for (uint32_t j = 0; j < texels; ++j)
+        for (uint32_t i = 0; i < texels; ++i) {
+            const size_t k = size_t(j) * texels + i;
+            float t = 0.0f;  // 0: low, 1: high
+            if (pattern == DensityPattern::ramp_x) t = texels == 1 ? 1.0f : float(i) / float(texels - 1);
+            if (pattern == DensityPattern::clearings) {
+                const float e = std::clamp((noise[k] - (median - 0.05f)) / 0.1f, 0.0f, 1.0f);
+                t = e * e * (3.0f - 2.0f * e);
+            }
+            map.values[k] = low + (high - low) * t;
+        }
+    return map;
+}
+
 glm::vec2 mirror_signs(const GrassField& field, glm::ivec2 cell) {
     return field.mirror ? shader::grass_mirror_signs(cell, field.mirror_seed) : glm::vec2(1.0f);
 }

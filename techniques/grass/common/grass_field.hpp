@@ -21,6 +21,14 @@ struct DensityMap {
     float sample(glm::vec2 field_uv) const;  // field_uv in [0, 1]^2 over the whole field
 };
 
+// The density maps a scene can ask for by name (a grass population's `density_map`), sampled at
+// `texels` x `texels` over the field: `uniform`, `high` everywhere; `ramp_x`, from `low` at the
+// field's first column (x = 0) to `high` at its last; `clearings`, `high` but for clearings of
+// `low` where a smooth value noise of `periods` lattice cells across the field (seeded) is below
+// its median, with a smooth edge.
+enum class DensityPattern { uniform, ramp_x, clearings };
+DensityMap density_map(DensityPattern pattern, float low, float high, uint32_t texels, uint32_t periods, uint32_t seed);
+
 struct GrassField {
     glm::uvec2 cells{32, 32};  // Lemme's Table 7.1 field (L1022)
     float cell_size = 1.0f;    // world units a cell (and a patch) is wide

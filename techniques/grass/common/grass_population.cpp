@@ -52,6 +52,13 @@ std::vector<ParamSpec> grass_population_params() {
     s.push_back(ParamSpec::integer("mirror_seed", 1, 0, 0xffffffffll, "seed of the cells' mirror signs"));
     s.push_back(ParamSpec::real("density", 1.0, 0.0, 1.0,
                                 "the field's density: a blade is drawn when its threshold is at most this"));
+    s.push_back(ParamSpec::choice("density_map", "uniform", {"uniform", "ramp_x", "clearings"},
+                                  "uniform: `density` everywhere; ramp_x: from `density_low` at the field's first column to "
+                                  "`density` at its last; clearings: `density` but for clearings of `density_low` (Lemme §6.4.1)"));
+    s.push_back(ParamSpec::real("density_low", 0.0, 0.0, 1.0, "ramp_x and clearings: the low end, at most `density`"));
+    s.push_back(ParamSpec::integer("density_map_texels", 64, 2, 4096, "ramp_x and clearings: the map's texels a side over the field"));
+    s.push_back(ParamSpec::integer("density_map_periods", 4, 1, 1024, "clearings: noise lattice cells across the field"));
+    s.push_back(ParamSpec::integer("density_map_seed", 1, 0, 0xffffffffll, "clearings: the noise's seed"));
     s.push_back(ParamSpec::integer("blades", d.blades, 1, 1 << 20, "blades in the patch (Lemme Table 7.1: 2400)"));
     s.push_back(ParamSpec::integer("subdivisions", d.subdivisions, 0, 64,
                                    "cuts along a blade: subdivisions + 1 segments of 2 triangles (Lemme: 4)"));
@@ -110,7 +117,16 @@ GrassPopulationSpec grass_population_spec(const ParamSet& params) {
                          float(params.real("centre_z")) - 0.5f * extent.y);
     f.mirror = params.boolean("mirror");
     f.mirror_seed = uint32_t(params.integer("mirror_seed"));
-    f.density = DensityMap{1, 1, {float(params.real("density"))}};
+    const std::string& pattern = params.choice("density_map");
+    const float low = float(params.real("density_low")), high = float(params.real("density"));
+    if (pattern != "uniform" && low > high)
+        throw std::invalid_argument(fmt::format("density_low = {} is above density = {}: the map's low end must be at most its high end",
+                                                low, high));
+    f.density = density_map(pattern == "ramp_x"      ? DensityPattern::ramp_x
+                            : pattern == "clearings" ? DensityPattern::clearings
+                                                     : DensityPattern::uniform,
+                            low, high, uint32_t(params.integer("density_map_texels")),
+                            uint32_t(params.integer("density_map_periods")), uint32_t(params.integer("density_map_seed")));
     spec.taper = float(params.real("taper"));
     return spec;
 }

@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cmath>
+#include <stdexcept>
 
 using namespace canopy::grass;
 namespace shader = canopy::shader;
@@ -183,4 +184,66 @@ TEST_CASE("grass density: the blend stays between its corners, clamps outside th
     CHECK(shader::grass_patch_corner_densities(world, {-1.0f, 1.0f}) == glm::vec4(2.0f, 1.0f, 4.0f, 3.0f));
     CHECK(shader::grass_patch_corner_densities(world, {1.0f, -1.0f}) == glm::vec4(3.0f, 4.0f, 1.0f, 2.0f));
     CHECK(shader::grass_patch_corner_densities(world, {-1.0f, -1.0f}) == glm::vec4(4.0f, 3.0f, 2.0f, 1.0f));
+}
+
+TEST_CASE("grass density maps: uniform, a ramp along x and seeded clearings, in [low, high]") {
+    const DensityMap uniform = density_map(DensityPattern::uniform, 0.2f, 0.7f, 16, 4, 1);
+    CHECK(uniform.sample({0.3f, 0.9f}) == 0.7f);
+    // The ramp: low at the first column, high at the last, linear in between (bilinear sampling
+    // of a linear ramp is exact between the texel centres).
+    const DensityMap ramp = density_map(DensityPattern::ramp_x, 0.2f, 0.8f, 33, 4, 1);
+    CHECK(ramp.sample({0.0f, 0.5f}) == doctest::Approx(0.2f));
+    CHECK(ramp.sample({1.0f, 0.1f}) == doctest::Approx(0.8f));
+    const float c = (16.0f + 0.5f) / 33.0f;
+    CHECK(ramp.sample({c, 0.7f}) == doctest::Approx(0.5f));
+    // Clearings: both ends present, about half the field low, the rest high, a smooth edge;
+    // fixed by the seed.
+    const DensityMap clearings = density_map(DensityPattern::clearings, 0.0f, 1.0f, 64, 4, 3);
+    int low = 0, high = 0, edge = 0;
+    for (float v : clearings.values) {
+        REQUIRE(v >= 0.0f);
+        REQUIRE(v <= 1.0f);
+        low += v == 0.0f;
+        high += v == 1.0f;
+        edge += v > 0.0f && v < 1.0f;
+    }
+    const int n = int(clearings.values.size());
+    CAPTURE(low);
+    CAPTURE(high);
+    CAPTURE(edge);
+    CHECK(low > n / 4);
+    CHECK(high > n / 4);
+    CHECK(edge > 0);
+    CHECK(edge < n / 4);
+    CHECK(density_map(DensityPattern::clearings, 0.0f, 1.0f, 64, 4, 3).values == clearings.values);
+    CHECK(density_map(DensityPattern::clearings, 0.0f, 1.0f, 64, 4, 4).values != clearings.values);
+    CHECK_THROWS_AS(density_map(DensityPattern::ramp_x, 0.0f, 1.0f, 0, 4, 1), std::invalid_argument);
+}
+
+TEST_CASE("grass density maps: a field with clearings draws the blades its cells' corners keep, none in a clearing") {
+    GrassField field;
+    field.cells = {8, 8};
+    field.density = density_map(DensityPattern::clearings, 0.0f, 1.0f, 64, 2, 5);
+    BladePatchParams params;
+    params.blades = 200;
+    const BladePatch patch = generate_blade_patch(params);
+    int empty_cells = 0, full_cells = 0;
+    for (int z = 0; z < 8; ++z)
+        for (int x = 0; x < 8; ++x) {
+            const glm::vec4 corners = cell_corner_densities(field, {x, z});
+            empty_cells += corners == glm::vec4(0.0f);
+            full_cells += corners == glm::vec4(1.0f);
+        }
+    CHECK(empty_cells > 0);
+    CHECK(full_cells > 0);
+    std::array<int, 64> drawn{};
+    const uint64_t total = for_each_drawn_blade(field, patch, [&](const FieldBlade& b) { ++drawn[size_t(b.cell.y) * 8 + size_t(b.cell.x)]; });
+    CHECK(total > 0);
+    CHECK(total < 64ull * 200);
+    for (int z = 0; z < 8; ++z)
+        for (int x = 0; x < 8; ++x) {
+            const glm::vec4 corners = cell_corner_densities(field, {x, z});
+            if (corners == glm::vec4(0.0f)) CHECK(drawn[size_t(z) * 8 + size_t(x)] == 0);
+            if (corners == glm::vec4(1.0f)) CHECK(drawn[size_t(z) * 8 + size_t(x)] == 200);
+        }
 }

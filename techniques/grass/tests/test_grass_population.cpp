@@ -135,6 +135,14 @@ TEST_CASE("grass population: bad parameters name the line and the fix") {
         CHECK(std::string(error->what()).find("height") != std::string::npos);
         CHECK(std::string(error->what()).find("cannot be generated") != std::string::npos);
     }
+    SUBCASE("a density map whose low end is above its high end") {
+        const auto error = test::config_error_of(
+            [] { parse_scene(with_params("density_map = \"ramp_x\", density = 0.3, density_low = 0.6"), "lawn.toml"); });
+        REQUIRE(error);
+        CHECK(std::string(error->what()).find("density_low = 0.6 is above density = 0.3") != std::string::npos);
+        // A uniform field reads no low end.
+        CHECK_NOTHROW(parse_scene(with_params("density = 0.3, density_low = 0.6"), "lawn.toml"));
+    }
     SUBCASE("a field the reference cannot hold is refused before it is generated") {
         const auto error = test::config_error_of(
             [] { parse_scene(with_params("cells_x = 4096, cells_z = 4096, blades = 1048576, subdivisions = 64"), "lawn.toml"); });
