@@ -108,6 +108,14 @@ public:
     void draw_population(const std::string& name, uint32_t max_copies) override {
         ex_.scene_.draw_population(commands_, binding().layout, name, max_copies);
     }
+    VkDrawIndexedIndirectCommand population_draw_arguments(const std::string& name) const override {
+        return ex_.scene_.draw_arguments(name);
+    }
+    void draw_population_indirect(const std::string& name, const std::string& copies,
+                                  const std::string& arguments) override {
+        ex_.scene_.draw_population_indirect(commands_, binding().layout, name, ex_.resources_->buffer(copies).handle(),
+                                            ex_.resources_->buffer(arguments).handle());
+    }
     void draw_prototype(const std::string& name, uint32_t instances) override {
         ex_.scene_.draw_prototype(commands_, binding().layout, name, instances);
     }

@@ -45,6 +45,16 @@ public:
     // (none for a population without copies), for a pipeline whose layout reads no copy attributes (gl_InstanceIndex tells the draws
     // apart: a bake of the patch and its neighbours, say); pushes DrawConstants likewise.
     virtual void draw_prototype(const std::string& name, uint32_t instances) = 0;
+    // What draw_population(name) draws, as an indexed-indirect record (index count, first index and
+    // vertex offset in the scene's buffers, every copy as instances), for a compute pass that
+    // writes its own record (a cull); zeros for a population with nothing to draw.
+    virtual VkDrawIndexedIndirectCommand population_draw_arguments(const std::string& name) const = 0;
+    // The prototype of population `name` as draw_population draws it, but its instances taken from
+    // the technique's buffer `copies` (PopulationInstance records, e.g. a cull's survivors) and its
+    // arguments from the technique's buffer `arguments` (one VkDrawIndexedIndirectCommand a GPU
+    // pass wrote): no readback. Pushes DrawConstants likewise.
+    virtual void draw_population_indirect(const std::string& name, const std::string& copies,
+                                          const std::string& arguments) = 0;
     // Geometry the technique owns drawn once per copy of population `name` (billboards, impostor
     // boxes): its `vertex_buffers` at bindings 0..n-1, `vertex_count` vertices per copy, and the
     // copies' PopulationInstance records per instance at binding n

@@ -117,6 +117,25 @@ void GpuScene::draw_instances(VkCommandBuffer commands, VkPipelineLayout layout,
     vkCmdDrawIndexed(commands, d.draw.index_count, copies, d.draw.first_index, d.draw.vertex_offset, 0);
 }
 
+VkDrawIndexedIndirectCommand GpuScene::draw_arguments(const std::string& name) const {
+    const PopulationDraw& d = population_draw(name);
+    if (d.draw.index_count == 0 || d.instance_count == 0) return VkDrawIndexedIndirectCommand{};
+    return VkDrawIndexedIndirectCommand{d.draw.index_count, d.instance_count, d.draw.first_index, d.draw.vertex_offset, 0};
+}
+
+void GpuScene::draw_population_indirect(VkCommandBuffer commands, VkPipelineLayout layout, const std::string& name,
+                                        VkBuffer copies, VkBuffer arguments) const {
+    const PopulationDraw& d = population_draw(name);
+    if (d.draw.index_count == 0 || d.instance_count == 0) return;
+    const std::array<VkBuffer, 3> buffers{vertices_.handle(), copies, vertex_data_.handle()};
+    const std::array<VkDeviceSize, 3> offsets{0, 0, 0};
+    vkCmdBindVertexBuffers(commands, 0, 3, buffers.data(), offsets.data());
+    vkCmdBindIndexBuffer(commands, indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
+    vkCmdPushConstants(commands, layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+                       sizeof(DrawConstants), &d.draw.constants);
+    vkCmdDrawIndexedIndirect(commands, arguments, 0, 1, sizeof(VkDrawIndexedIndirectCommand));
+}
+
 void GpuScene::draw_over_population(VkCommandBuffer commands, VkPipelineLayout layout, const std::string& name,
                                     std::span<const VkBuffer> vertex_buffers, uint32_t vertex_count) const {
     const PopulationDraw& d = population_draw(name);

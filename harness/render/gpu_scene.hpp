@@ -48,6 +48,10 @@ public:
     // bound but must not be read.
     void draw_prototype(VkCommandBuffer commands, VkPipelineLayout layout, const std::string& name,
                         uint32_t instances) const;
+    // PassContext::population_draw_arguments and draw_population_indirect.
+    VkDrawIndexedIndirectCommand draw_arguments(const std::string& name) const;
+    void draw_population_indirect(VkCommandBuffer commands, VkPipelineLayout layout, const std::string& name,
+                                  VkBuffer copies, VkBuffer arguments) const;
     // Geometry a technique owns (`vertex_buffers` at bindings 0..n-1, `vertex_count` vertices)
     // drawn once per copy of population `name`, its PopulationInstance records at binding n.
     void draw_over_population(VkCommandBuffer commands, VkPipelineLayout layout, const std::string& name,

@@ -34,6 +34,7 @@ std::vector<TechniqueVariant> technique_variants(const std::string& family) {
         {"shadow.msm", {{"precision", std::string("unorm16")}, {"moment_bias", 6e-5}}},
         {"grass.geometry", {{"samples", 1LL}, {"coverage", std::string("alpha_test")}}},
         {"grass.geometry", {{"coverage", std::string("alpha_test")}}},
+        {"grass.geometry", {{"culling", std::string("gpu")}, {"max_distance", 3.0}}},
         {"grass.billboard", {{"orientation", std::string("camera_facing")}, {"resolution", 64LL}}},
         {"grass.image", {{"resolution", 64LL}, {"slice_height", 0.01}}},
         {"grass.volume", {{"slices", 1LL}, {"resolution", 32LL}, {"height_resolution", 8LL}}},

@@ -8,7 +8,11 @@
     PLAN(integer, samples, (4, 1, 4),                                                                       \
          "MSAA samples of the blade pass: 1 or 4 (lavapipe's; Boulanger used >= 6 on a GPU, L1314)")         \
     SHADER(choice, coverage, ("alpha_to_coverage", {"alpha_test", "alpha_to_coverage"}),                   \
-           "how the blade outline cuts: a hard alpha test, or a smooth alpha turned into sample coverage")
+           "how the blade outline cuts: a hard alpha test, or a smooth alpha turned into sample coverage")  \
+    PLAN(choice, culling, ("none", {"none", "gpu"}),                                                        \
+         "none: every cell's copy is drawn; gpu: a compute pass keeps the copies whose box may be seen (and within max_distance) and writes the draw's instance count") \
+    SHADER(real, max_distance, (0.0, 0.0, 1e6),                                                                \
+         "culling = gpu: copies whose box lies farther than this from the eye are not drawn (world units; 0: no limit)")
 
 CANOPY_BEGIN_NAMESPACE
 CANOPY_CONST int GRASS_COVERAGE_ALPHA_TEST = 0;
