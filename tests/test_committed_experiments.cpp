@@ -132,13 +132,14 @@ TEST_CASE("paper/l-t7.1.toml: Lemme's Table 7.1 field and settings") {
 }
 
 TEST_CASE("paper/l-t7.2.toml: Lemme's Table 7.2 macro sizes on the Table 7.1 field") {
-    // The same field and representations as L-T7.1, each at macro-cells of 1, 2, 4, 8 and 16 (L1047).
+    // The same field and representations as L-T7.1, each at macro-cells of 1, 2, 4, 8 and 16 (L1047)
+    // and, as L-T7.1 draws them, one instance per cell (0).
     const Experiment experiment = load_experiment(kExperiments / "paper" / "l-t7.2.toml", TechniqueRegistry::instance());
     const Experiment t71 = load_experiment(kExperiments / "paper" / "l-t7.1.toml", TechniqueRegistry::instance());
     REQUIRE(experiment.scenes.size() == 1);
     CHECK(experiment.scenes[0].name == t71.scenes[0].name);
     REQUIRE(experiment.techniques.size() == 2);
-    const std::vector<ParamValue> sizes{1LL, 2LL, 4LL, 8LL, 16LL};
+    const std::vector<ParamValue> sizes{0LL, 1LL, 2LL, 4LL, 8LL, 16LL};
     for (const TechniqueEntry& entry : experiment.techniques) {
         CAPTURE(entry.name);
         CHECK(entry.sweep.at("macro_cells") == sizes);

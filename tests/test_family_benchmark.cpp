@@ -1,7 +1,7 @@
-// Family benchmarks (run/family_benchmark.hpp): registered by name, their parameters typed from
+// Family benchmarks (run/family_benchmark.hpp, family_benchmark_run.hpp): registered by name, their parameters typed from
 // the command line's text with refusals that name the parameter and its type.
 #include "core/error.hpp"
-#include "run/family_benchmark.hpp"
+#include "run/family_benchmark_run.hpp"
 
 #include <doctest/doctest.h>
 

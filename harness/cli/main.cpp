@@ -11,7 +11,7 @@
 #include "report/markdown_report.hpp"
 #include "report/paper_report.hpp"
 #include "run/experiment_runner.hpp"
-#include "run/family_benchmark.hpp"
+#include "run/family_benchmark_run.hpp"
 #include "run/interrupt.hpp"
 #include "run/kernel_scaling.hpp"
 #include "report/atomic_file.hpp"

@@ -11,8 +11,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include <filesystem>
-#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -49,17 +47,5 @@ template <typename T>
 struct RegisterFamilyBenchmark {
     RegisterFamilyBenchmark() { FamilyBenchmarkRegistry::instance().add(std::make_unique<T>()); }
 };
-
-// The parameters given as text on the command line (`--name value`), typed by their specs.
-// Throws ConfigError naming the parameter and its type for a value that does not parse.
-std::map<std::string, ParamValue> parse_benchmark_params(const std::vector<ParamSpec>& specs,
-                                                         const std::map<std::string, std::string>& given);
-
-// Runs `benchmark` on `scene_file` (its default scene when empty) on `device`; prints the Markdown
-// and, with `out`, writes out/<name>.md and out/<name>.json (numbers, parameters, scene,
-// environment) atomically. Returns the process exit code.
-int run_family_benchmark(const FamilyBenchmark& benchmark, const std::filesystem::path& scene_file,
-                         const std::map<std::string, std::string>& given, const std::string& device,
-                         const std::filesystem::path& out);
 
 }  // namespace canopy

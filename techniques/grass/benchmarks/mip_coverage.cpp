@@ -23,7 +23,8 @@ namespace canopy {
 namespace {
 
 // A baked slice as colour and alpha: the bakes store a threshold in alpha, above 1 where no
-// blade shows (PATCH_BAKE_EMPTY); a level-0 texel is a blade (alpha 1) or none (0).
+// blade shows (PATCH_BAKE_EMPTY); a texel is a blade (alpha 1) or none (0), whatever the
+// scene's density (a density below 1 would cut some at render time).
 grass::RgbaLevel slice_level(const Image& baked) {
     grass::RgbaLevel level;
     level.width = uint32_t(baked.width);
@@ -108,6 +109,13 @@ public:
             throw ConfigError({}, 0, fmt::format("--supersampling {}: not a power of 2", s), "use 1, 2, 4 or 8");
         const long long image_bake = params.integer("resolution") * s;
         const long long slice_bake = params.integer("slice_resolution") * s, height_bake = params.integer("height_resolution") * s;
+        for (const auto& [name, baked] : {std::pair<const char*, long long>{"resolution", image_bake},
+                                          {"slice_resolution", slice_bake},
+                                          {"height_resolution", height_bake}})
+            if (baked > 4096)
+                throw ConfigError({}, 0, fmt::format("--{} x --supersampling = {} texels to bake, more than the 4096 the "
+                                                     "techniques bake", name, baked),
+                                  fmt::format("lower --{} or --supersampling", name));
         struct Source {
             std::string label;
             std::vector<grass::RgbaLevel> slices;

@@ -8,7 +8,7 @@
 #include "grass_image_params.h"
 #include "../common/grass_passes.hpp"
 #include "../common/grass_population.hpp"
-#include "../common/macro_cells.hpp"
+#include "../common/macro_passes.hpp"
 #include "../common/patch_bake.hpp"
 
 #include "shaders/grass/grass_image_frag.h"

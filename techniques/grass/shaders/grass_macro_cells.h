@@ -19,7 +19,7 @@ struct GrassCell {
 // The field the macro-cells tile (std140).
 struct GrassMacroField {
     vec4 origin_size;  // xyz: the corner of cell (0, 0), world; w: a cell's width, world
-    ivec4 cells;       // x, y: cells along x and z; z: the macro size k; w: 0
+    ivec4 cells;       // x, y: cells along x and z (the shaders index field_cells by them); z: the macro size k, for a reader of the buffer (no shader needs it); w: 0
     vec4 patch_top;    // x: the patch's top (patch units, as the bake frames it); yzw: 0
 };
 

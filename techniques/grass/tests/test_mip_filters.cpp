@@ -2,7 +2,9 @@
 // on four texels, at its extremes (all transparent, all opaque); and on whole pyramids of a sparse
 // blade-like mask, what the theses argue about: the box filter's alpha test loses the blades
 // level by level (Lemme Fig. 4.8), the max-alpha filter's keeps too many (L439), and the
-// coverage-preserving filter keeps level 0's coverage at every level. A filter that averages
+// coverage-preserving filter keeps no more than max-alpha and no fewer than level 0's share
+// rounded to the level's texels, closer to level 0 than max-alpha where level 0 has partial
+// alphas, and exactly max-alpha's where it has none. A filter that averages
 // alpha where it should take the maximum, or skips the rescaling, fails a check here.
 #include "support/bake_truth.hpp"
 

@@ -11,7 +11,7 @@
 #include "grass_volume_params.h"
 #include "../common/grass_passes.hpp"
 #include "../common/grass_population.hpp"
-#include "../common/macro_cells.hpp"
+#include "../common/macro_passes.hpp"
 #include "../common/patch_bake.hpp"
 #include "../shaders/volume_walk.h"
 
