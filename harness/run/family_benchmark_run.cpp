@@ -15,7 +15,10 @@ namespace canopy {
 std::map<std::string, ParamValue> parse_benchmark_params(const std::vector<ParamSpec>& specs,
                                                          const std::map<std::string, std::string>& given) {
     std::map<std::string, ParamValue> values;
-    for (const auto& [name, text] : given) {
+    for (const auto& entry : given) {
+        // Named copies: clang before 16 refuses lambdas that capture structured bindings.
+        const std::string& name = entry.first;
+        const std::string& text = entry.second;
         const auto spec = std::find_if(specs.begin(), specs.end(), [&](const ParamSpec& s) { return s.name == name; });
         if (spec == specs.end()) throw ConfigError({}, 0, fmt::format("unknown parameter --{}", name));
         const auto refuse = [&]() {
