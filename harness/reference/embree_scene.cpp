@@ -180,6 +180,7 @@ void EmbreeScene::add_population(const Scene& scene, const std::vector<TriangleM
     const bool masked = population.alpha_mask.kind != AlphaMask::Kind::none;
     if (population.family) {
         record.albedo_scale = population.family->albedo_scale;
+        record.transmission = population.family->transmission;
         if (population.family->opaque || caller) {
             copy_alpha_tests_.push_back([caller, opaque = population.family->opaque](uint32_t copy, uint32_t triangle,
                                                                                     float u, float v) {

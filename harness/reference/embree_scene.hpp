@@ -92,6 +92,8 @@ public:
     // The albedo at a hit: the material's, times a family population's albedo scale there
     // (FamilyPopulation::albedo_scale, as its shaders modulate it).
     glm::vec3 albedo(unsigned geom_id, uint64_t prim_id, float u, float v) const;
+    // The share of the light from behind that the surface transmits (FamilyPopulation::transmission).
+    float transmission(unsigned geom_id) const { return records_[geom_id].transmission; }
     // Interpolated vertex normal in world space (unit, not yet turned towards the viewer), as
     // the raster pipeline interpolates it.
     glm::vec3 shading_normal(unsigned geom_id, uint64_t prim_id, float u, float v) const;
@@ -112,6 +114,7 @@ private:
         int alpha_test = -1;                    // an object's: index into alpha_tests_, or -1: opaque
         // A family population's (copy, prototype triangle, u, v) -> albedo factor, or empty.
         std::function<float(uint32_t, uint32_t, float, float)> albedo_scale;
+        float transmission = 0.0f;              // a family population's, else 0
         std::vector<float> positions;           // xyz per vertex + 1 float of padding Embree may read
         std::vector<glm::vec3> normals;         // unit; world space, or a population's prototype space
         std::shared_ptr<const std::vector<uint32_t>> indices;

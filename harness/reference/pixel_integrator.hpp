@@ -109,6 +109,17 @@ PixelIntegrator::SubpixelResult PixelIntegrator::shade(const Ray& ray, uint64_t 
             result.visible_fraction = estimate.visible_fraction;
         }
     }
+    // Transmission (Boulanger eq 4.1's gamma): the light the other side receives, gamma times, its
+    // shadow rays leaving from that side.
+    if (const float gamma = embree_.transmission(hit->geometry); gamma > 0.0f) {
+        const SurfacePoint back{surface.position, -surface.normal, 2.0f * surface.position - surface.origin};
+        for (size_t index = 0; index < lights_.size(); ++index) {
+            const LightEstimate estimate =
+                integrate_light(lights_[index], back, random_key(key, lights_.size() + index), false, tracer);
+            irradiance += gamma * estimate.irradiance;
+            irradiance_variance += gamma * gamma * estimate.variance;
+        }
+    }
     const glm::vec3 albedo = embree_.albedo(hit->geometry, hit->primitive, hit->u, hit->v);
     result.radiance = shader::lambert_radiance(albedo, irradiance, 1.0f, ambient_);
     const glm::vec3 scale = albedo / shader::PI;

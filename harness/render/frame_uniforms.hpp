@@ -35,7 +35,7 @@ static_assert(sizeof(FrameUniforms) == 5 * 64 + 9 * 16 + 64 * 16 + kMaxParamBloc
 struct DrawConstants {
     glm::mat4 model;
     glm::vec4 normal_matrix[3];
-    glm::vec4 albedo;
+    glm::vec4 albedo;  // rgb; w: the surface's transmission (FamilyPopulation::transmission; 0 for objects)
 };
 static_assert(sizeof(DrawConstants) == 128, "push constants are limited to 128 bytes");
 

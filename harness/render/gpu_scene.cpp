@@ -31,7 +31,7 @@ GpuScene::GpuScene(const GpuContext& gpu, MemoryLedger& ledger, const Scene& sce
             draw.constants.model = instance.matrix();
             glm::mat3 normal = glm::transpose(glm::inverse(glm::mat3(draw.constants.model)));
             for (int c = 0; c < 3; ++c) draw.constants.normal_matrix[c] = glm::vec4(normal[c], 0.0f);
-            draw.constants.albedo = glm::vec4(object.material.albedo, 1.0f);
+            draw.constants.albedo = glm::vec4(object.material.albedo, 0.0f);  // w: transmission (none)
             draws_.push_back(draw);
             triangles_ += mesh.triangle_count();
         }
@@ -45,7 +45,7 @@ GpuScene::GpuScene(const GpuContext& gpu, MemoryLedger& ledger, const Scene& sce
         // The copies' matrices come per instance: the pushed model and normal matrix are identities.
         draw.draw.constants.model = glm::mat4(1.0f);
         for (int c = 0; c < 3; ++c) draw.draw.constants.normal_matrix[c] = glm::vec4(glm::mat3(1.0f)[c], 0.0f);
-        draw.draw.constants.albedo = glm::vec4(population.material.albedo, 1.0f);
+        draw.draw.constants.albedo = glm::vec4(population.material.albedo, population.transmission);
         draw.instance_count = uint32_t(population.instances.size());
         triangles_ += population.prototype.triangle_count() * population.instances.size();
         // Per-vertex family data parallel to the shared vertex buffer: zeros for the objects'

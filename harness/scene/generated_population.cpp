@@ -12,7 +12,8 @@ std::vector<GeneratedPopulation> generate_populations(const Scene& scene, const 
                                                 prototype_mesh(scene, meshes, index), generate_instances(population),
                                                 population.family ? population.family->vertex_data
                                                                   : std::vector<PopulationVertexData>{},
-                                                population.params});
+                                                population.params,
+                                                population.family ? population.family->transmission : 0.0f});
     }
     return generated;
 }

@@ -20,6 +20,7 @@ struct GeneratedPopulation {
     std::vector<PopulationInstance> instances;  // generate_instances
     std::vector<PopulationVertexData> vertex_data;  // a family's kind: one per prototype vertex; else empty
     ParamSet params;  // a family's kind: the population's parameters (Population::params)
+    float transmission = 0.0f;  // FamilyPopulation::transmission
 };
 
 // The scene's populations whose kind is one of `kinds`, in scene order; `meshes` as

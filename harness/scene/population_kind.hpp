@@ -36,6 +36,10 @@ struct FamilyPopulation {
     // The reference's albedo scale at the same point (the family's shaders multiply the
     // material's albedo by the same). Empty: 1.
     std::function<float(uint32_t copy, uint32_t triangle, float u, float v)> albedo_scale;
+    // The share of the light arriving from behind a surface that it transmits to the side seen
+    // (Boulanger 2008 eq 4.1's gamma, for thin blades and leaves): shading adds gamma times the
+    // irradiance the other side receives. 0: opaque, as every other surface.
+    float transmission = 0.0f;
 };
 
 class PopulationKind {

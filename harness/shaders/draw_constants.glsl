@@ -2,5 +2,5 @@
 layout(push_constant) uniform DrawBlock {
     mat4 model;
     vec4 normal_matrix[3];     // columns of the inverse-transpose of mat3(model)
-    vec4 albedo;               // rgb
+    vec4 albedo;               // rgb; w: the surface's transmission (FamilyPopulation::transmission; 0 for objects)
 } draw;

@@ -24,5 +24,6 @@ void main() {
     vec3 n = normalize(patch_normal);
     if (dot(n, bake.toward_viewer.xyz) < 0.0) n = -n;
     vec3 irradiance = scene_light_irradiance(patch_position, n);
+    if (draw.albedo.w > 0.0) irradiance += draw.albedo.w * scene_light_irradiance(patch_position, -n);  // transmission
     out_texel = vec4(lambert_radiance(draw.albedo.rgb * colour, irradiance, 1.0, frame.ambient.rgb), threshold);
 }

@@ -82,6 +82,9 @@ std::vector<ParamSpec> grass_population_params() {
     s.push_back(ParamSpec::integer("noise_periods", d.thresholds.noise_periods, 1, 256,
                                    "clustered: noise lattice cells across the patch"));
     s.push_back(ParamSpec::boolean("equalise", false, "replace the thresholds by their ranks: exactly uniform"));
+    s.push_back(ParamSpec::real("transmission", 0.0, 0.0, 1.0,
+                                "Boulanger eq 4.1's gamma: the share of the light from behind a blade that passes through "
+                                "(every representation and the reference add gamma times the far side's irradiance)"));
     return s;
 }
 
@@ -128,6 +131,7 @@ GrassPopulationSpec grass_population_spec(const ParamSet& params) {
                             low, high, uint32_t(params.integer("density_map_texels")),
                             uint32_t(params.integer("density_map_periods")), uint32_t(params.integer("density_map_seed")));
     spec.taper = float(params.real("taper"));
+    spec.transmission = float(params.real("transmission"));
     return spec;
 }
 
@@ -148,6 +152,7 @@ FamilyPopulation generate_grass_population(const GrassPopulationSpec& spec) {
     const BladePatch patch = generate_blade_patch(spec.patch);
     const GrassField& field = spec.field;
     FamilyPopulation out;
+    out.transmission = spec.transmission;
     out.prototype.vertices.reserve(patch.vertices.size());
     out.vertex_data.reserve(patch.vertices.size());
     for (const BladeVertex& v : patch.vertices) {

@@ -23,6 +23,7 @@ struct GrassPopulationSpec {
     BladePatchParams patch;
     GrassField field;
     float taper = 2.0f;  // the outline's taper exponent k (blade_alpha.h)
+    float transmission = 0.0f;  // Boulanger eq 4.1's gamma (FamilyPopulation::transmission)
 };
 GrassPopulationSpec grass_population_spec(const ParamSet& params);
 

@@ -34,11 +34,11 @@ std::vector<shader::GrassCell> grass_cells(const GrassField& field, std::span<co
     return cells;
 }
 
-shader::GrassMacroField macro_field(const GrassField& field, uint32_t k, float top) {
+shader::GrassMacroField macro_field(const GrassField& field, uint32_t k, float top, float transmission) {
     shader::GrassMacroField f;
     f.origin_size = glm::vec4(field.origin, field.cell_size);
     f.cells = glm::ivec4(int(field.cells.x), int(field.cells.y), int(k), 0);
-    f.patch_top = glm::vec4(top, 0.0f, 0.0f, 0.0f);
+    f.patch_top = glm::vec4(top, transmission, 0.0f, 0.0f);
     return f;
 }
 

@@ -27,7 +27,8 @@ uint32_t macro_count(glm::uvec2 cells, uint32_t k);  // macro_instances(cells, k
 // (c % cells.x, c / cells.x)): its mirror signs and the corner densities its copy carries.
 std::vector<shader::GrassCell> grass_cells(const GrassField& field, std::span<const PopulationInstance> copies);
 
-// The field's placement for the macro shaders; `top`: the bake frame's top (patch units).
-shader::GrassMacroField macro_field(const GrassField& field, uint32_t k, float top);
+// The field's placement for the macro shaders; `top`: the bake frame's top (patch units);
+// `transmission`: the population's (FamilyPopulation::transmission).
+shader::GrassMacroField macro_field(const GrassField& field, uint32_t k, float top, float transmission);
 
 }  // namespace canopy::grass

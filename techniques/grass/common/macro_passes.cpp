@@ -48,7 +48,7 @@ PassDecl macro_setup_pass(uint32_t k) {
         const GrassField field = field_of(grass);
         const std::vector<shader::GrassCell> cells = grass_cells(field, grass->instances);
         const std::vector<glm::vec4> macros = macro_instances(field.cells, k);
-        const shader::GrassMacroField placement = macro_field(field, k, cell_frame(prototype_bounds(grass)).max.y);
+        const shader::GrassMacroField placement = macro_field(field, k, cell_frame(prototype_bounds(grass)).max.y, grass->transmission);
         pc.upload(macro_names::kCells, cells.data(), cells.size() * sizeof(shader::GrassCell));
         pc.upload(macro_names::kMacros, macros.data(), macros.size() * sizeof(glm::vec4));
         pc.upload(macro_names::kField, &placement, sizeof(placement));

@@ -23,5 +23,5 @@ void main() {
         alpha = blade_alpha(strip_uv, taper, fwidth(strip_uv.x));
         if (alpha <= 0.0) discard;
     }
-    out_color = grass_lit_output(draw.albedo.rgb * colour, world_position, world_normal, alpha);
+    out_color = grass_lit_output(draw.albedo.rgb * colour, world_position, world_normal, alpha, draw.albedo.w);
 }

@@ -5,6 +5,7 @@
 // density threshold"), lit per pixel with the baked normal by the family's one model.
 #include "grass_image_params.h"
 #include "frame_uniforms.glsl"
+#include "draw_constants.glsl"
 #include "grass_density.h"
 #include "grass_shading.glsl"
 
@@ -22,5 +23,5 @@ void main() {
     vec4 albedo = texture(slice_albedo, uv);
     if (!grass_blade_drawn(albedo.a, grass_root_density(densities, patch_xz))) discard;
     vec3 n = mat3(normal_matrix[0], normal_matrix[1], normal_matrix[2]) * texture(slice_normal, uv).xyz;
-    out_color = grass_lit_output(albedo.rgb, world_position, n, 1.0);
+    out_color = grass_lit_output(albedo.rgb, world_position, n, 1.0, draw.albedo.w);
 }

@@ -26,5 +26,5 @@ void main() {
     vec4 albedo = texture(slice_albedo, p);
     if (!grass_blade_drawn(albedo.a, grass_root_density(c.densities, p))) discard;
     vec3 n = grass_mirror_vector(texture(slice_normal, p).xyz, c.signs.xy);
-    out_color = grass_lit_output(albedo.rgb, world_position, n, 1.0);
+    out_color = grass_lit_output(albedo.rgb, world_position, n, 1.0, field.patch_top.y);
 }

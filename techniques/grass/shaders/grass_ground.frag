@@ -9,4 +9,4 @@ layout(location = 0) in vec3 world_position;
 layout(location = 1) in vec3 world_normal;
 layout(location = 0) out vec4 out_color;
 
-void main() { out_color = grass_lit_output(draw.albedo.rgb, world_position, world_normal, 1.0); }
+void main() { out_color = grass_lit_output(draw.albedo.rgb, world_position, world_normal, 1.0, draw.albedo.w); }

@@ -20,7 +20,7 @@ struct GrassCell {
 struct GrassMacroField {
     vec4 origin_size;  // xyz: the corner of cell (0, 0), world; w: a cell's width, world
     ivec4 cells;       // x, y: cells along x and z (the shaders index field_cells by them); z: the macro size k, for a reader of the buffer (no shader needs it); w: 0
-    vec4 patch_top;    // x: the patch's top (patch units, as the bake frames it); yzw: 0
+    vec4 patch_top;    // x: the patch's top (patch units, as the bake frames it); y: the population's transmission; zw: 0
 };
 
 // The field cell of macro-cell point u (field coordinates: one unit a cell) for the macro-cell

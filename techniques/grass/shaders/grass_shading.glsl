@@ -5,8 +5,12 @@
 // frame_uniforms.glsl.
 #include "scene_lighting.glsl"
 
-vec4 grass_lit_output(vec3 albedo, vec3 world_position, vec3 world_normal, float alpha) {
-    vec3 irradiance = scene_light_irradiance(world_position, camera_side_normal(world_normal, world_position));
+// `transmission`: Boulanger eq 4.1's gamma (FamilyPopulation::transmission, the population's
+// DrawConstants albedo.w): the other side's irradiance, gamma times, is added, as the reference does.
+vec4 grass_lit_output(vec3 albedo, vec3 world_position, vec3 world_normal, float alpha, float transmission) {
+    vec3 n = camera_side_normal(world_normal, world_position);
+    vec3 irradiance = scene_light_irradiance(world_position, n);
+    if (transmission > 0.0) irradiance += transmission * scene_light_irradiance(world_position, -n);
     // Alpha carries the outline's coverage for alpha-to-coverage; the harness shows images with A = 1.
     return vec4(lambert_radiance(albedo, irradiance, 1.0, frame.ambient.rgb), alpha);
 }

@@ -9,6 +9,7 @@
 // cuboids and the ground resolve by the depth test. A ray that meets no blade is discarded.
 #include "grass_volume_params.h"
 #include "frame_uniforms.glsl"
+#include "draw_constants.glsl"
 #include "grass_density.h"
 #include "grass_shading.glsl"
 #include "volume_walk.h"
@@ -49,7 +50,7 @@ void main() {
         float hit_alpha = 1.0;
         vec3 world = (model * vec4(p, 1.0)).xyz;
         vec3 normal = mat3(normal_matrix[0], normal_matrix[1], normal_matrix[2]) * texture(slice_normal, texel).xyz;
-        vec3 radiance = grass_lit_output(albedo.rgb, world, normal, 1.0).rgb;
+        vec3 radiance = grass_lit_output(albedo.rgb, world, normal, 1.0, draw.albedo.w).rgb;
         if (alpha == 0.0) first_blade = world;
         color += (1.0 - alpha) * hit_alpha * radiance;  // eq 5.19
         alpha += (1.0 - alpha) * hit_alpha;             // eq 5.20

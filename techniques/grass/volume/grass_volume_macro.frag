@@ -60,7 +60,7 @@ void main() {
         if (!grass_blade_drawn(albedo.a, grass_root_density(c.densities, p))) continue;
         vec3 world = origin + q * extent;
         vec3 normal = grass_mirror_vector(texture(slice_normal, texel).xyz, s);
-        vec3 radiance = grass_lit_output(albedo.rgb, world, normal, 1.0).rgb;
+        vec3 radiance = grass_lit_output(albedo.rgb, world, normal, 1.0, field.patch_top.y).rgb;
         if (alpha == 0.0) first_blade = world;
         color += (1.0 - alpha) * radiance;  // eq 5.19 with a level-0 texel's alpha of 1
         alpha += (1.0 - alpha);             // eq 5.20
