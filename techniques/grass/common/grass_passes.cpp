@@ -7,9 +7,30 @@
 #include "shaders/harness/scene_vert.h"
 
 #include <array>
+#include <fmt/format.h>
 #include <cstddef>
 
 namespace canopy::grass {
+
+std::optional<ParamConflict> blade_samples_conflict(const ParamSet& params) {
+    const long long samples = params.integer("samples");
+    if (samples != 1 && samples != 4)
+        return ParamConflict{{"samples"}, fmt::format("{} MSAA samples: lavapipe offers 1 and 4 only", samples),
+                             "samples = 1 or samples = 4"};
+    if (samples == 1 && params.choice("coverage") == "alpha_to_coverage")
+        return ParamConflict{{"coverage", "samples"},
+                             "alpha-to-coverage with one sample per pixel is an alpha test with wider blades",
+                             "coverage = \"alpha_test\" for samples = 1, or samples = 4"};
+    return std::nullopt;
+}
+
+PassDecl clear_camera_depth_pass() {
+    PassDecl depth{.name = "clear_depth", .kind = PassKind::raster};
+    depth.uses = {cleared(graph_names::kDepth, Use::depth_attachment, kFarDepth)};
+    depth.settings = "clear";
+    depth.record = [](PassContext&) {};
+    return depth;
+}
 
 RasterState ground_state() {
     RasterState s;
@@ -42,10 +63,18 @@ void record_prototype_bake(PassContext& pc, const RasterState& bake, bool tiled)
         pc.draw_population(grass->name, 1);
 }
 
-void record_ground_and_copies(PassContext& pc, const RasterState& ground, const RasterState& over,
-                              const std::string& vertex_buffer, uint32_t vertex_count) {
+void record_ground(PassContext& pc, const RasterState& ground) {
     pc.bind(pc.raster_pipeline(ground));
     pc.draw_scene(SceneFilter::all);
+}
+
+void record_ground_and_copies(PassContext& pc, const RasterState& ground, const RasterState& over,
+                              const std::string& vertex_buffer, uint32_t vertex_count) {
+    record_ground(pc, ground);
+    record_copies(pc, over, vertex_buffer, vertex_count);
+}
+
+void record_copies(PassContext& pc, const RasterState& over, const std::string& vertex_buffer, uint32_t vertex_count) {
     pc.bind(pc.raster_pipeline(over));
     const std::array<std::string, 1> buffers{vertex_buffer};
     for (const GeneratedPopulation& population : pc.populations())

@@ -7,11 +7,13 @@
 #include "graph/frame_graph.hpp"
 #include "graph/pass_context.hpp"
 #include "graph/raster_state.hpp"
+#include "core/technique.hpp"
 
 #include <glm/glm.hpp>
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 
@@ -30,6 +32,14 @@ inline ResourceUse cleared(const std::string& image, Use how, std::array<float, 
 }
 
 inline constexpr std::array<float, 4> kFarDepth{1.0f, 0.0f, 0.0f, 0.0f};
+
+// The blades' `samples` and `coverage` (grass.geometry, grass.lod): lavapipe's 1 or 4 samples,
+// and alpha-to-coverage only with 4.
+std::optional<ParamConflict> blade_samples_conflict(const ParamSet& params);
+
+// After a multisampled frame: the camera depth, not resolved from the multisampled passes, cleared
+// (far) so that nothing reads undefined memory. Image errors do not use it.
+PassDecl clear_camera_depth_pass();
 
 // scene.vert and grass_ground.frag: the scene's objects shaded as the blades are.
 RasterState ground_state();
@@ -58,8 +68,11 @@ inline constexpr std::array<glm::vec2, 6> kQuadCorners{glm::vec2(0, 0), glm::vec
 // QuadVertex at locations 0-1 (binding 0), then the copies (VertexLayout::population_copies).
 VertexLayout quad_layout();
 
-// What the image-based techniques' frame pass records: the scene's objects with `ground`, then
-// `vertex_count` vertices of `vertex_buffer` drawn with `over` once per copy of every population.
+// What the image-based techniques' frame pass records: the scene's objects with `ground`
+// (record_ground), then `vertex_count` vertices of `vertex_buffer` drawn with `over` once per copy
+// of every population (record_copies).
+void record_ground(PassContext& pc, const RasterState& ground);
+void record_copies(PassContext& pc, const RasterState& over, const std::string& vertex_buffer, uint32_t vertex_count);
 void record_ground_and_copies(PassContext& pc, const RasterState& ground, const RasterState& over,
                               const std::string& vertex_buffer, uint32_t vertex_count);
 

@@ -90,15 +90,7 @@ public:
     ErrorColumns error_columns() const override { return {}; }  // image errors only: no lit pass of canopy's
 
     std::optional<ParamConflict> conflict(const ParamSet& params) const override {
-        const long long samples = params.integer("samples");
-        if (samples != 1 && samples != 4)
-            return ParamConflict{{"samples"}, fmt::format("{} MSAA samples: lavapipe offers 1 and 4 only", samples),
-                                 "samples = 1 or samples = 4"};
-        if (samples == 1 && params.choice("coverage") == "alpha_to_coverage")
-            return ParamConflict{{"coverage", "samples"},
-                                 "alpha-to-coverage with one sample per pixel is an alpha test with wider blades",
-                                 "coverage = \"alpha_test\" for samples = 1, or samples = 4"};
-        return std::nullopt;
+        return grass::blade_samples_conflict(params);
     }
 
     FrameGraph graph(const ParamSet& params) const override {
@@ -156,15 +148,7 @@ public:
             }
         };
         g.passes.push_back(std::move(blades));
-        if (samples > 1) {
-            // The camera depth is not resolved from the multisampled pass; cleared (far) so that
-            // nothing reads undefined memory. Image errors do not use it.
-            PassDecl depth{.name = "clear_depth", .kind = PassKind::raster};
-            depth.uses = {cleared(graph_names::kDepth, Use::depth_attachment, kFarDepth)};
-            depth.settings = "clear";
-            depth.record = [](PassContext&) {};
-            g.passes.push_back(std::move(depth));
-        }
+        if (samples > 1) g.passes.push_back(grass::clear_camera_depth_pass());
         return g;
     }
 };

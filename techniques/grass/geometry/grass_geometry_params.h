@@ -3,6 +3,7 @@
 #define CANOPY_GRASS_GEOMETRY_PARAMS_H
 
 #include "param_block.h"
+#include "../shaders/blade_coverage.h"
 
 #define GRASS_GEOMETRY_PARAMS(SHADER, PLAN, DERIVED)                                                        \
     PLAN(integer, samples, (4, 1, 4),                                                                       \
@@ -15,8 +16,6 @@
          "culling = gpu: copies whose box lies farther than this from the eye are not drawn (world units; 0: no limit)")
 
 CANOPY_BEGIN_NAMESPACE
-CANOPY_CONST int GRASS_COVERAGE_ALPHA_TEST = 0;
-CANOPY_CONST int GRASS_COVERAGE_ALPHA_TO_COVERAGE = 1;
 CANOPY_PARAM_BLOCK(GrassGeometryParams, GRASS_GEOMETRY_PARAMS)
 CANOPY_END_NAMESPACE
 

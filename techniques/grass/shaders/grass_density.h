@@ -25,6 +25,13 @@ CANOPY_FN float grass_root_density(vec4 corners, vec2 root_xz) {
 // ]0, 1], so density 0 draws nothing and density 1 every blade.
 CANOPY_FN bool grass_blade_drawn(float threshold, float density) { return threshold <= density; }
 
+// Kept by a representation that draws the share band = (lo, hi] of the blades the density keeps
+// (grass.lod: lod_band, lod_selection.h): bdth in (lo ld, hi ld]. The band (0, 1] is
+// grass_blade_drawn (thresholds are > 0), and the three bands of grass.lod draw each blade once.
+CANOPY_FN bool grass_blade_in_band(float threshold, float density, vec2 band) {
+    return threshold > band.x * density && threshold <= band.y * density;
+}
+
 // The cell's corner densities in world order (x0z0, x1z0, x0z1, x1z1) turned into the patch's
 // order for mirror signs s (cell_mirroring.h): a mirrored axis swaps its two ends.
 CANOPY_FN vec4 grass_patch_corner_densities(vec4 world, vec2 s) {

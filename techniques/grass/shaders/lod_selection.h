@@ -84,6 +84,40 @@ CANOPY_FN float lod_second_opacity_smooth(float bdth, float ld, float w1, float 
     return smoothstep(w1 - eps, w1 + eps, bdth / ld);
 }
 
+// grass.lod's three representations, near to far.
+CANOPY_CONST int GRASS_LOD_GEOMETRY = 0;
+CANOPY_CONST int GRASS_LOD_VOLUME = 1;
+CANOPY_CONST int GRASS_LOD_IMAGE = 2;
+
+// 1 up to a, 0 from b, linear between: eq 4.3's form, lod_weight_geometry(d, a, b), and a step
+// at b where a = b (eq 4.3 would divide by zero there).
+CANOPY_FN float lod_ramp_down(float d, float a, float b) {
+    if (!(b > a)) return d < b ? 1.0f : 0.0f;
+    return clamp((b - d) / (b - a), 0.0f, 1.0f);
+}
+
+// grass.lod's cuts c1 <= c2 of a cell's thresholds at distance d (canopy's reading of Boulanger
+// eq 4.3-4.5 with Lemme's binary test, eq 5.25 made complementary): the geometry keeps the blades
+// with bdth in (0, c1 ld], the volume (c1 ld, c2 ld], the image (c2 ld, ld]. c1 = w_g (eq 4.3),
+// 1 - c2 is the image's weight, rising over [image_start, image_full], and c2 - c1 is w_vs
+// (eq 4.4) where the two transitions do not overlap. The three bands partition ]0, ld] for any
+// d, so no blade is drawn twice or dropped. Boulanger draws the horizontal slice at 1 - w_g,
+// beneath the vertical slices too (eq 4.5): with opaque volume texels that would draw the
+// volume's blades a second time, so canopy's image keeps only what the volume leaves.
+CANOPY_FN vec2 lod_cuts(float d, float geometry_full, float geometry_none, float image_start, float image_full) {
+    float c1 = lod_ramp_down(d, geometry_full, geometry_none);
+    float c2 = max(c1, lod_ramp_down(d, image_start, image_full));
+    return vec2(c1, c2);
+}
+
+// The share (lo, hi] of ]0, 1] a representation draws, in units of the local density
+// (grass_blade_in_band, grass_density.h).
+CANOPY_FN vec2 lod_band(int representation, vec2 cuts) {
+    if (representation == GRASS_LOD_GEOMETRY) return vec2(0.0f, cuts.x);
+    if (representation == GRASS_LOD_VOLUME) return vec2(cuts.x, cuts.y);
+    return vec2(cuts.y, 1.0f);
+}
+
 CANOPY_END_NAMESPACE
 
 #endif

@@ -3,6 +3,9 @@
 // made complementary and eq 5.26 guarded. Over all thresholds, densities and weights: every blade
 // the density keeps is drawn exactly once in total (opacities summing to 1), none that it thins;
 // a representation drawn alone (w = 0 or 1) leaves no blade semi-transparent; nothing is NaN.
+// grass.lod's three bands (lod_cuts, lod_band, grass_blade_in_band): over distances through both
+// transitions, every blade the density keeps falls in exactly one band, none it thins in any.
+#include "../shaders/grass_density.h"
 #include "../shaders/lod_selection.h"
 
 #include <doctest/doctest.h>
@@ -114,4 +117,62 @@ TEST_CASE("lod selection: Lemme's eq 5.25, made complementary, puts every kept b
         }
     CHECK(naive_twice > 1000);
     CHECK(naive_dropped > 1000);
+}
+
+TEST_CASE("grass.lod's bands: over every distance, threshold and density, each kept blade falls in exactly one band") {
+    struct Bands {
+        float geometry_full, geometry_none, image_start, image_full;
+    };
+    // Separate transitions, touching ones, overlapping ends and steps (equal ends: no ramp).
+    const std::vector<Bands> settings{{5, 20, 50, 80}, {5, 20, 20, 40}, {10, 10, 30, 30}, {0, 0, 0, 0}, {1e6f, 1e6f, 1e6f, 1e6f}};
+    for (const Bands& b : settings) {
+        CAPTURE(b.geometry_full);
+        CAPTURE(b.image_start);
+        for (float d = 0.0f; d <= 120.0f; d += 0.37f) {
+            const shader::vec2 cuts = shader::lod_cuts(d, b.geometry_full, b.geometry_none, b.image_start, b.image_full);
+            REQUIRE(cuts.x >= 0.0f);
+            REQUIRE(cuts.x <= cuts.y);
+            REQUIRE(cuts.y <= 1.0f);
+            for (float ld : kDensities)
+                for (float th : thresholds()) {
+                    int drawn = 0;
+                    for (int r : {shader::GRASS_LOD_GEOMETRY, shader::GRASS_LOD_VOLUME, shader::GRASS_LOD_IMAGE})
+                        drawn += shader::grass_blade_in_band(th, ld, shader::lod_band(r, cuts)) ? 1 : 0;
+                    if (drawn != (th <= ld ? 1 : 0)) {
+                        CAPTURE(d);
+                        CAPTURE(ld);
+                        CAPTURE(th);
+                        REQUIRE(drawn == (th <= ld ? 1 : 0));
+                    }
+                }
+        }
+    }
+}
+
+TEST_CASE("grass.lod's bands: all blades near, all volume between the transitions, all image far; w_vs between") {
+    const float gf = 5.0f, gn = 20.0f, is = 50.0f, ifull = 80.0f;
+    const auto cuts = [&](float d) { return shader::lod_cuts(d, gf, gn, is, ifull); };
+    CHECK(cuts(0.0f).x == 1.0f);
+    CHECK(cuts(gf).x == 1.0f);
+    CHECK(cuts(gn).x == 0.0f);
+    CHECK(cuts(gn).y == 1.0f);
+    CHECK(cuts(is).y == 1.0f);
+    CHECK(cuts(ifull).y == 0.0f);
+    CHECK(cuts(1000.0f).y == 0.0f);
+    for (float d = 0.0f; d < 100.0f; d += 0.5f) {
+        CAPTURE(d);
+        // c1 is eq 4.3's w_g, c2 - c1 eq 4.4's w_vs (the transitions do not overlap here).
+        CHECK(cuts(d).x == doctest::Approx(shader::lod_weight_geometry(d, gf, gn)).epsilon(1e-6));
+        CHECK(cuts(d).y - cuts(d).x == doctest::Approx(shader::lod_weight_vertical_slices(d, gf, gn, is, ifull)).epsilon(1e-5));
+        // Farther cells keep fewer blades near and more far.
+        CHECK(cuts(d + 0.5f).x <= cuts(d).x);
+        CHECK(cuts(d + 0.5f).y <= cuts(d).y);
+    }
+    // Equal ends are a step, not 0 / 0.
+    CHECK(shader::lod_ramp_down(9.9f, 10.0f, 10.0f) == 1.0f);
+    CHECK(shader::lod_ramp_down(10.0f, 10.0f, 10.0f) == 0.0f);
+    // The band (0, 1] is grass_blade_drawn.
+    for (float ld : kDensities)
+        for (float th : thresholds())
+            REQUIRE(shader::grass_blade_in_band(th, ld, shader::vec2(0.0f, 1.0f)) == shader::grass_blade_drawn(th, ld));
 }

@@ -27,6 +27,8 @@ void main() {
                      lod_weight_vertical_slices(30.0, 10.0, 20.0, 40.0, 80.0) + lod_weight_horizontal_slice(15.0, 10.0, 20.0));
     values[8] = vec4(lod_in_first(0.2, 0.5, 0.5) ? 1.0 : 0.0, lod_in_second(0.3, 0.5, 0.5) ? 1.0 : 0.0,
                      lod_first_opacity_smooth(0.2, 0.5, 0.5, 0.02), lod_second_opacity_smooth(0.2, 0.0, 0.5, 0.02));
+    vec2 band = lod_band(GRASS_LOD_VOLUME, lod_cuts(12.0, 4.0, 8.0, 10.0, 20.0));
+    values[11] = vec4(band, grass_blade_in_band(0.5, 0.8, band) ? 1.0 : 0.0, lod_ramp_down(5.0, 5.0, 5.0));
     VolumeWalk walk = volume_walk(vec3(0.1, 1.0, 0.3), vec3(0.5, -0.8, 0.0), 4.0);
     VolumeHit hit = volume_next_hit(walk, vec3(0.1, 1.0, 0.3), ivec2(1, 0), 4.0);
     values[9] = vec4(hit.lambda, float(hit.axis + hit.slice), volume_entry(vec3(-0.5, 0.5, 0.5), vec3(1.0, 0.0, 0.0)),

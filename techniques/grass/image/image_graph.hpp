@@ -1,0 +1,31 @@
+// What grass.image declares, apart from the technique, so grass.lod's far band declares the same
+// bake and quads: the top view baked at load (Lemme §5.3) and the frame pass that shows it on one
+// horizontal quad per cell or macro-cell.
+#pragma once
+
+#include "graph/frame_graph.hpp"
+#include "graph/raster_state.hpp"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace canopy::grass {
+
+struct ImageSettings {
+    uint32_t resolution = 256;   // texels across the bake
+    float slice_height = 0.1f;   // a fraction of the patch's tallest blade
+    uint32_t macro_cells = 0;    // 0: a quad per cell; k: per k x k macro-cell
+    std::string prefix;          // before every resource and pass name ("" for grass.image)
+};
+
+// The bake's images and buffers and the load-phase passes that fill them.
+void declare_image_bake(FrameGraph& g, const ImageSettings& s);
+
+// The frame pass: with `ground`, the scene's objects first; then one quad per cell (drawn with
+// `per_cell`, shaders of the image's bodies, shaders/grass_image_vertex.glsl and
+// grass_image_fragment.glsl) or per macro-cell. `attachments`: colour and depth, cleared or loaded.
+PassDecl image_frame_pass(const ImageSettings& s, const RasterState& per_cell, bool ground,
+                          std::vector<ResourceUse> attachments);
+
+}  // namespace canopy::grass

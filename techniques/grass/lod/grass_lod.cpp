@@ -1,0 +1,140 @@
+// grass.lod: a field drawn near as blades, in the middle as the ray-cast volume and far as the
+// image slice (Boulanger 2008 §4.2.5, Lemme 2012 §5.4), the three meeting by density thresholds:
+// at a cell's distance, lod_cuts (shaders/lod_selection.h) splits its blades' thresholds into
+// three bands, and each representation draws only the blades of its band, so a transition moves
+// blades one by one and none is drawn twice or dropped. One pass per band, so each band's share
+// of the frame is timed apart; the volume's and the image's bakes are those of grass.volume and
+// grass.image (volume_graph.hpp, image_graph.hpp), and the shaders are compiled from the same
+// bodies with the band switched on (shaders/grass_lod_band.glsl).
+#include "core/registry.hpp"
+#include "graph/pass_context.hpp"
+#include "render/frame_uniforms.hpp"
+
+#include "grass_lod_params.h"
+#include "../common/grass_passes.hpp"
+#include "../common/grass_population.hpp"
+#include "../image/image_graph.hpp"
+#include "../volume/volume_graph.hpp"
+
+#include "shaders/grass/grass_lod_blades_frag.h"
+#include "shaders/grass/grass_lod_blades_vert.h"
+#include "shaders/grass/grass_lod_image_frag.h"
+#include "shaders/grass/grass_lod_image_vert.h"
+#include "shaders/grass/grass_lod_volume_frag.h"
+#include "shaders/grass/grass_lod_volume_vert.h"
+
+#include <fmt/format.h>
+
+namespace canopy {
+namespace {
+
+constexpr VkFormat kColorFormat = VK_FORMAT_R32G32B32A32_SFLOAT;  // as the camera target
+
+using grass::cleared;
+using grass::kFarDepth;
+using grass::use;
+
+// The three passes' attachments: the first clears, the others load; with MSAA they render into
+// multisampled targets kept between the passes, and the last resolves into the camera's colour.
+std::vector<ResourceUse> band_attachments(uint32_t samples, bool first, bool last) {
+    const std::array<float, 4> background{0.0f, 0.0f, 0.0f, 1.0f};
+    const std::string color = samples > 1 ? "msaa_color" : graph_names::kColor;
+    const std::string depth = samples > 1 ? "msaa_depth" : graph_names::kDepth;
+    std::vector<ResourceUse> uses;
+    if (first) {
+        uses.push_back(cleared(color, Use::color_attachment, background));
+        uses.push_back(cleared(depth, Use::depth_attachment, kFarDepth));
+    } else {
+        uses.push_back(use(color, Use::color_attachment));
+        uses.push_back(use(depth, Use::depth_attachment));
+    }
+    if (samples > 1 && last) uses.push_back(use(graph_names::kColor, Use::resolve_target));
+    return uses;
+}
+
+class GrassLod final : public Technique {
+public:
+    std::string name() const override { return "grass.lod"; }
+    std::string summary() const override {
+        return "grass in three distance bands: blades near, the ray-cast volume in the middle, the image slice far, meeting blade by blade by density thresholds";
+    }
+    std::string paper() const override {
+        return "Boulanger 2008 §4.2.5 (eq 4.3-4.6, Algorithm 1); Lemme 2012 §5.4 (eq 5.22-5.26)";
+    }
+    std::vector<ParamSpec> params() const override { return shader::GrassLodParams::specs(); }
+    ErrorColumns error_columns() const override { return {}; }
+
+    std::optional<ParamConflict> conflict(const ParamSet& params) const override {
+        if (auto c = grass::blade_samples_conflict(params)) return c;
+        const double d[4] = {params.real("geometry_full"), params.real("geometry_none"), params.real("image_start"),
+                             params.real("image_full")};
+        if (!(d[0] <= d[1] && d[1] <= d[2] && d[2] <= d[3]))
+            return ParamConflict{{"geometry_full", "geometry_none", "image_start", "image_full"},
+                                 fmt::format("the bands' distances {}, {}, {}, {} are out of order", d[0], d[1], d[2], d[3]),
+                                 "geometry_full <= geometry_none <= image_start <= image_full"};
+        return std::nullopt;
+    }
+
+    FrameGraph graph(const ParamSet& params) const override {
+        const auto block = shader::GrassLodParams::from(params);
+        const uint32_t samples = uint32_t(params.integer("samples"));
+        const bool to_coverage = block.coverage == shader::GRASS_COVERAGE_ALPHA_TO_COVERAGE;
+        const grass::VolumeSettings volume{.slices = uint32_t(block.slices),
+                                           .resolution = uint32_t(params.integer("resolution")),
+                                           .height_resolution = uint32_t(params.integer("height_resolution")),
+                                           .prefix = "volume_"};
+        const grass::ImageSettings image{.resolution = uint32_t(params.integer("image_resolution")),
+                                         .slice_height = float(params.real("slice_height")),
+                                         .prefix = "image_"};
+        FrameGraph g;
+        g.needs.populations = {grass::kGrassPopulationKind};
+        g.shader_params.set_block(block);
+        g.report["bands"] = fmt::format("blades to {}-{}, volume ({} slices) to {}-{}, image beyond", block.geometry_full,
+                                        block.geometry_none, volume.slices, block.image_start, block.image_full);
+        g.report["coverage"] = to_coverage ? "alpha-to-coverage" : "alpha-test";
+        g.report["samples"] = std::to_string(samples);
+        if (samples > 1) {
+            g.images.push_back({.name = "msaa_color", .format = kColorFormat, .extent = ImageExtent::screen(),
+                                .samples = samples});
+            g.images.push_back({.name = "msaa_depth", .format = VK_FORMAT_D32_SFLOAT, .extent = ImageExtent::screen(),
+                                .samples = samples});
+        }
+        grass::declare_volume_bake(g, volume);
+        grass::declare_image_bake(g, image);
+
+        // Near: the ground and the blades of the geometry's band.
+        PassDecl blades{.name = "blades", .kind = PassKind::raster};
+        blades.push_constant_bytes = sizeof(DrawConstants);
+        blades.uses = {use(graph_names::kFrameUniforms, Use::uniform, 0)};
+        for (ResourceUse& u : band_attachments(samples, true, false)) blades.uses.push_back(std::move(u));
+        RasterState field;
+        field.vertex_spirv = grass_lod_blades_vert;
+        field.fragment_spirv = grass_lod_blades_frag;
+        field.vertices = VertexLayout::population();
+        field.alpha_to_coverage = to_coverage && samples > 1;
+        blades.settings = fmt::format("samples={} coverage={}", samples, g.report["coverage"]);
+        blades.record = [ground = grass::ground_state(), field](PassContext& pc) {
+            grass::record_ground(pc, ground);
+            pc.bind(pc.raster_pipeline(field));
+            for (const GeneratedPopulation& population : pc.populations()) pc.draw_population(population.name);
+        };
+        g.passes.push_back(std::move(blades));
+
+        // Middle: the volume's band, then far: the image's.
+        RasterState cuboids;
+        cuboids.vertex_spirv = grass_lod_volume_vert;
+        cuboids.fragment_spirv = grass_lod_volume_frag;
+        g.passes.push_back(grass::volume_frame_pass(volume, cuboids, false, band_attachments(samples, false, false)));
+        RasterState quads;
+        quads.vertex_spirv = grass_lod_image_vert;
+        quads.fragment_spirv = grass_lod_image_frag;
+        g.passes.push_back(grass::image_frame_pass(image, quads, false, band_attachments(samples, false, true)));
+        if (samples > 1) g.passes.push_back(grass::clear_camera_depth_pass());
+        return g;
+    }
+};
+
+RegisterTechnique<GrassLod> registered;
+
+}  // namespace
+}  // namespace canopy

@@ -1,0 +1,36 @@
+// grass.lod's parameters, written once for C++ and GLSL (harness/shaders/param_block.h). The
+// representations' own parameters keep the names they have in grass.geometry, grass.volume and
+// grass.image, since grass.lod's shaders are compiled from the same bodies.
+#ifndef CANOPY_GRASS_LOD_PARAMS_H
+#define CANOPY_GRASS_LOD_PARAMS_H
+
+#include "param_block.h"
+#include "../shaders/blade_coverage.h"
+
+#define GRASS_LOD_PARAMS(SHADER, PLAN, DERIVED)                                                              \
+    SHADER(real, geometry_full, (5.0, 0.0, 1e6),                                                             \
+           "distance up to which a cell is all blades (Boulanger's minGeom; Lemme's football field: level 1 begins at 5 m)") \
+    SHADER(real, geometry_none, (20.0, 0.0, 1e6),                                                            \
+           "distance from which a cell has no blades left (maxGeom; Lemme's level 0 ends at 20 m)")          \
+    SHADER(real, image_start, (50.0, 0.0, 1e6),                                                              \
+           "distance from which the image takes blades over from the volume (minBTF; Lemme's level 2 begins at 50 m)") \
+    SHADER(real, image_full, (80.0, 0.0, 1e6),                                                               \
+           "distance from which a cell is all image (maxBTF; Lemme's 8-slice level 1 ends at 80 m)")       \
+    PLAN(integer, samples, (4, 1, 4), "MSAA samples of every band's pass: 1 or 4 (lavapipe's)")             \
+    SHADER(choice, coverage, ("alpha_to_coverage", {"alpha_test", "alpha_to_coverage"}),                    \
+           "how the near band's blade outline cuts (grass.geometry's coverage)")                          \
+    SHADER(integer, slices, (8, 1, 64), "the middle band's vertical slices per direction (grass.volume's slices)") \
+    PLAN(integer, resolution, (256, 16, 4096), "texels of a volume slice across the patch (grass.volume's resolution)") \
+    PLAN(integer, height_resolution, (64, 4, 4096), "texels of a volume slice up the patch's height (grass.volume's)") \
+    PLAN(integer, image_resolution, (256, 16, 4096), "texels across the far band's top-view bake (grass.image's resolution)") \
+    PLAN(real, slice_height, (0.1, 0.01, 1.0), "the far band's slice height, a fraction of the tallest blade (grass.image's)")
+
+CANOPY_BEGIN_NAMESPACE
+CANOPY_PARAM_BLOCK(GrassLodParams, GRASS_LOD_PARAMS)
+CANOPY_END_NAMESPACE
+
+#ifndef __cplusplus
+#define TECHNIQUE_PARAMS GrassLodParams
+#endif
+
+#endif

@@ -1,0 +1,26 @@
+// The blades' fragment stage (grass.geometry, grass.lod's near band): the blade outline
+// (blade_alpha.h) cut by a hard alpha test, or ramped over a pixel for alpha-to-coverage; shaded
+// by the family's one model with the blade's colour. Included after the technique's parameter
+// block, which has `coverage`.
+#include "frame_uniforms.glsl"
+#include "draw_constants.glsl"
+#include "blade_alpha.h"
+#include "grass_shading.glsl"
+
+layout(location = 0) centroid in vec3 world_position;
+layout(location = 1) centroid in vec3 world_normal;
+layout(location = 2) centroid in vec2 strip_uv;
+layout(location = 3) centroid in float colour;
+layout(location = 4) flat in float taper;
+layout(location = 0) out vec4 out_color;
+
+void main() {
+    float alpha = 1.0;
+    if (frame.technique.coverage == GRASS_COVERAGE_ALPHA_TEST) {
+        if (!blade_opaque(strip_uv, taper)) discard;
+    } else {
+        alpha = blade_alpha(strip_uv, taper, fwidth(strip_uv.x));
+        if (alpha <= 0.0) discard;
+    }
+    out_color = grass_lit_output(draw.albedo.rgb * colour, world_position, world_normal, alpha, draw.albedo.w);
+}

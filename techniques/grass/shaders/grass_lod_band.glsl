@@ -1,0 +1,18 @@
+// The share of a cell's blades a representation's shader draws (lod_band, lod_selection.h): all
+// of them (0, 1] when compiled alone; inside grass.lod, whose shaders define
+// GRASS_LOD_REPRESENTATION before including their representation's body, the band of that
+// representation at the cell's distance. The distance is the eye's to the cell's centre (patch
+// point (0.5, 0, 0.5), which mirroring keeps), computed per copy alike in every representation's
+// vertex stage, so the three agree on the cuts of every cell. Needs frame_uniforms.glsl and, in
+// grass.lod, GrassLodParams as the technique's block.
+#include "lod_selection.h"
+
+vec2 grass_representation_band(mat4 model) {
+#ifdef GRASS_LOD_REPRESENTATION
+    float d = distance((model * vec4(0.5, 0.0, 0.5, 1.0)).xyz, frame.camera_position.xyz);
+    return lod_band(GRASS_LOD_REPRESENTATION, lod_cuts(d, frame.technique.geometry_full, frame.technique.geometry_none,
+                                                       frame.technique.image_start, frame.technique.image_full));
+#else
+    return vec2(0.0, 1.0);
+#endif
+}

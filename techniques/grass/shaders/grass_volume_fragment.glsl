@@ -1,0 +1,63 @@
+// The volume's fragment stage (grass.volume, and grass.lod's middle band): Lemme's ray cast
+// through the cell's vertical slices (§5.2, eq 5.3-5.21). The ray from the eye to this exit point
+// enters the cuboid (volume_entry), walks the slice planes in order (volume_walk.h), and at each
+// samples the slice's baked texel: skipped where the blade's threshold is beyond the cell's
+// density there or outside the representation's band (grass_lod_band.glsl), else lit per pixel
+// with the baked normal by the family's one model and composited front to back (eq 5.19-5.20). The
+// depth written is that of the first blade met (Lemme: "used for modifying the depth value"), so
+// overlapping cuboids and the ground resolve by the depth test. A ray that meets no blade is
+// discarded. Included after the technique's parameter block, which has `slices`.
+#include "frame_uniforms.glsl"
+#include "draw_constants.glsl"
+#include "grass_density.h"
+#include "grass_shading.glsl"
+#include "volume_walk.h"
+
+layout(set = 0, binding = 1) uniform sampler2DArray slice_albedo;  // NEAREST: thresholds are not blended
+layout(set = 0, binding = 2) uniform sampler2DArray slice_normal;  // NEAREST
+layout(set = 0, binding = 3, std140) uniform BoxBlock { VolumeBox box; };
+
+layout(location = 0) in vec3 exit_q;
+layout(location = 1) flat in vec3 eye_q;
+layout(location = 2) flat in vec4 densities;
+layout(location = 3) flat in mat4 model;
+layout(location = 7) flat in vec3 normal_matrix[3];
+layout(location = 10) flat in vec2 band;  // grass_lod_band.glsl
+layout(location = 0) out vec4 out_color;
+
+void main() {
+    int n = frame.technique.slices;
+    vec3 to_exit = exit_q - eye_q;
+    vec3 e = eye_q + volume_entry(eye_q, to_exit) * to_exit;  // eq 5.4: the ray's entry
+    vec3 d = exit_q - e;
+    VolumeWalk walk = volume_walk(e, d, float(n));
+    vec3 color = vec3(0.0);
+    float alpha = 0.0;
+    vec3 first_blade = vec3(0.0);
+    ivec2 crossed = ivec2(0);
+    for (int i = 0; i < 2 * n + 1; ++i) {
+        VolumeHit hit = volume_next_hit(walk, e, crossed, float(n));
+        if (hit.lambda > 1.0) break;  // the ray leaves the cuboid first
+        crossed += hit.axis == 0 ? ivec2(1, 0) : ivec2(0, 1);
+        vec3 q = e + hit.lambda * d;  // eq 5.18
+        int slice = clamp(hit.slice, 0, n - 1);
+        // Slices along x are baked looking along x (u = z), those along z looking along z (u = x).
+        vec3 texel = hit.axis == 0 ? vec3(q.z, 1.0 - q.y, float(slice)) : vec3(q.x, 1.0 - q.y, float(n + slice));
+        vec4 albedo = texture(slice_albedo, texel);
+        vec3 p = box.origin.xyz + q * box.extent.xyz;
+        if (!grass_blade_in_band(albedo.a, grass_root_density(densities, p.xz), band)) continue;
+        // A level-0 texel shows a blade or none: its alpha is 1 (eq 5.19-5.20 keep the general form).
+        float hit_alpha = 1.0;
+        vec3 world = (model * vec4(p, 1.0)).xyz;
+        vec3 normal = mat3(normal_matrix[0], normal_matrix[1], normal_matrix[2]) * texture(slice_normal, texel).xyz;
+        vec3 radiance = grass_lit_output(albedo.rgb, world, normal, 1.0, draw.albedo.w).rgb;
+        if (alpha == 0.0) first_blade = world;
+        color += (1.0 - alpha) * hit_alpha * radiance;  // eq 5.19
+        alpha += (1.0 - alpha) * hit_alpha;             // eq 5.20
+        if (alpha >= 0.999) break;                      // "sufficient opacity"
+    }
+    if (alpha <= 0.0) discard;
+    vec4 clip = frame.view_proj * vec4(first_blade, 1.0);
+    gl_FragDepth = clip.z / clip.w;
+    out_color = vec4(color / alpha, 1.0);
+}

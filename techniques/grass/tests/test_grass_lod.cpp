@@ -1,0 +1,153 @@
+// grass.lod (blades near, volume in the middle, image far, split by density thresholds): with its
+// bands pushed to either end it draws exactly what grass.geometry, grass.volume or grass.image
+// draws alone, so a band that a representation ignores or takes from another shows; with the
+// blades split between two bands (half each), the two together cover from above what the
+// reference's rays hit, no blade dropped, and each band draws its part; across a field whose cells
+// lie in all three bands the image is finite and its coverage no worse than the representations'.
+#include "support/bake_truth.hpp"
+
+#include "config/scene_config.hpp"
+#include "core/registry.hpp"
+#include "render/frame_renderer.hpp"
+#include "scene/geometry.hpp"
+#include "support/test_gpu.hpp"
+
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <string>
+
+using namespace canopy;
+using grass::test::one_cell_scene;
+
+namespace {
+
+using Values = std::map<std::string, ParamValue>;
+
+const char* kFarAbove =
+    "[camera]\nposition = [0.5, 80, 0.5]\ntarget = [0.5, 0, 0.5]\nup = [0, 0, -1]\nfov = 0.9\nnear = 40\nfar = 120";
+
+// 3 x 3 cells of 60 blades on a ground plane, seen from a low, standing eye: cells from about
+// 1 to 5 m away.
+Scene field_scene() {
+    return parse_scene(R"([scene]
+name = "lod-field"
+ambient = 0.2
+[camera]
+position = [1.5, 0.6, 4.6]
+target = [1.5, 0.0, 1.0]
+fov = 50
+near = 0.05
+far = 40
+[[light]]
+type = "directional"
+direction = [-0.3, -1, -0.2]
+casts_shadows = false
+[[object]]
+name = "ground"
+shape = "plane"
+size = [6, 6]
+albedo = [0.35, 0.25, 0.15]
+[[population]]
+name = "grass"
+kind = "grass"
+albedo = [0.1, 0.8, 0.1]
+params = { cells_x = 3, cells_z = 3, centre_x = 1.5, centre_z = 1.5, blades = 60, subdivisions = 3, width_min = 0.06, width_max = 0.1 }
+)",
+                       "lod-field.toml");
+}
+
+Image render(const Scene& scene, const std::string& technique, const Values& values, uint32_t w = 160, uint32_t h = 96) {
+    const Technique* t = TechniqueRegistry::instance().find(technique);
+    REQUIRE(t);
+    const ParamSet params = ParamSet::resolve(t->params(), values, {}, {}, technique);
+    FrameRenderer renderer(test::gpu(), scene, build_scene_meshes(scene), w, h, t->graph(params));
+    renderer.render();
+    return renderer.read_color();
+}
+
+// The representations' parameters as grass.lod names them, one sample, alpha-tested blades.
+Values lod_values(double geometry_full, double geometry_none, double image_start, double image_full) {
+    return {{"geometry_full", geometry_full}, {"geometry_none", geometry_none}, {"image_start", image_start},
+            {"image_full", image_full},       {"samples", 1LL},                 {"coverage", std::string("alpha_test")},
+            {"slices", 4LL},                  {"resolution", 96LL},             {"height_resolution", 48LL},
+            {"image_resolution", 128LL}};
+}
+
+float max_difference(const Image& a, const Image& b) {
+    REQUIRE(a.pixels.size() == b.pixels.size());
+    float m = 0.0f;
+    for (size_t i = 0; i < a.pixels.size(); ++i) m = std::max(m, std::abs(a.pixels[i] - b.pixels[i]));
+    return m;
+}
+
+}  // namespace
+
+TEST_CASE("grass.lod: with its bands at either end it draws what each representation draws alone") {
+    const Scene scene = field_scene();
+    const Image blades = render(scene, "grass.geometry", {{"samples", 1LL}, {"coverage", std::string("alpha_test")}});
+    const Image volume = render(scene, "grass.volume", {{"slices", 4LL}, {"resolution", 96LL}, {"height_resolution", 48LL}});
+    const Image image = render(scene, "grass.image", {{"resolution", 128LL}});
+    // Every band at 1e6: all blades; at 0: all image; the volume's between 0 and 1e6: all volume.
+    const Image lod_blades = render(scene, "grass.lod", lod_values(1e6, 1e6, 1e6, 1e6));
+    const Image lod_image = render(scene, "grass.lod", lod_values(0, 0, 0, 0));
+    const Image lod_volume = render(scene, "grass.lod", lod_values(0, 0, 1e6, 1e6));
+    CHECK(grass::test::grass_pixels(blades) > 1000);
+    CHECK(grass::test::grass_pixels(volume) > 1000);
+    CHECK(grass::test::grass_pixels(image) > 400);
+    CHECK(max_difference(lod_blades, blades) <= 1e-5f);
+    CHECK(max_difference(lod_volume, volume) <= 1e-5f);
+    CHECK(max_difference(lod_image, image) <= 1e-5f);
+    // The three differ from one another, so the checks above tell them apart.
+    CHECK(max_difference(blades, volume) > 0.1f);
+    CHECK(max_difference(blades, image) > 0.1f);
+}
+
+TEST_CASE("grass.lod: half the blades near and half far cover from above what the reference's rays hit") {
+    // The eye is 80 away: geometry_none = 160 keeps about half of each threshold range as blades,
+    // and image_start = image_full = 0 gives the rest to the image.
+    const Scene scene = one_cell_scene(kFarAbove, "density = 1.0");
+    const Image split = render(scene, "grass.lod", lod_values(0, 160, 0, 0), 160, 120);
+    const Scene half = one_cell_scene(kFarAbove, "density = 0.5");
+    const Image blades_half = render(half, "grass.geometry", {{"samples", 1LL}, {"coverage", std::string("alpha_test")}}, 160, 120);
+    for (float v : split.pixels) REQUIRE(std::isfinite(v));
+    const grass::test::CoverageAgreement a = grass::test::compare_with_reference_hits(scene, split);
+    CAPTURE(a.compared);
+    CAPTURE(a.covered);
+    CAPTURE(a.differ);
+    CHECK(a.covered > 300);
+    CHECK(a.differ <= a.compared / 500);
+    // Both bands draw: the blades alone (those of threshold <= 0.5) cover clearly less.
+    const int drawn = grass::test::grass_pixels(split), near_only = grass::test::grass_pixels(blades_half);
+    CAPTURE(drawn);
+    CAPTURE(near_only);
+    CHECK(near_only > 100);
+    CHECK(drawn > near_only + 100);
+}
+
+TEST_CASE("grass.lod: a field in all three bands renders finite, covering as the representations do") {
+    const Scene scene = field_scene();
+    // Cells 1-5 m away: blades to 1.5-2.5, the volume to 3-4, the image beyond.
+    Values values = lod_values(1.5, 2.5, 3.0, 4.0);
+    values["samples"] = 4LL;
+    values["coverage"] = std::string("alpha_to_coverage");
+    const Image lod = render(scene, "grass.lod", values);
+    for (float v : lod.pixels) REQUIRE(std::isfinite(v));
+    const Image blades = render(scene, "grass.geometry", {{"samples", 4LL}});
+    const Image image = render(scene, "grass.image", {{"resolution", 128LL}});
+    const auto lod_agreement = grass::test::compare_with_reference_hits(scene, lod);
+    const auto blades_agreement = grass::test::compare_with_reference_hits(scene, blades);
+    const auto image_agreement = grass::test::compare_with_reference_hits(scene, image);
+    CAPTURE(lod_agreement.differ);
+    CAPTURE(blades_agreement.differ);
+    CAPTURE(image_agreement.differ);
+    CAPTURE(lod_agreement.compared);
+    CHECK(lod_agreement.covered > 150);
+    MESSAGE("coverage differs at " << lod_agreement.differ << " (lod), " << blades_agreement.differ << " (blades), " << image_agreement.differ << " (image) of " << lod_agreement.compared);
+    CHECK(lod_agreement.differ <= std::max(blades_agreement.differ, image_agreement.differ) + lod_agreement.compared / 50);
+    // Neither all blades nor all image.
+    CHECK(max_difference(lod, blades) > 0.1f);
+    CHECK(max_difference(lod, image) > 0.1f);
+}
