@@ -1,5 +1,7 @@
 #include "graph/graph_readback.hpp"
 
+#include "gpu/format_names.hpp"
+
 #include <fmt/format.h>
 
 #include <cmath>
@@ -9,8 +11,6 @@
 namespace canopy {
 
 namespace {
-
-std::string format_name(VkFormat format) { return fmt::format("VkFormat {}", int(format)); }
 
 float half_to_float(uint16_t h) {
     const uint32_t sign = uint32_t(h >> 15), exponent = (h >> 10) & 0x1f, mantissa = h & 0x3ff;

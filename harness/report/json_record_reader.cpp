@@ -16,10 +16,10 @@ namespace {
 
 using nlohmann::json;
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kAbsent = std::numeric_limits<double>::quiet_NaN();
 
 // null (not applicable, or not finite) reads back as NaN.
-double metric(const json& value) { return value.is_null() ? kNaN : value.get<double>(); }
+double metric(const json& value) { return value.is_null() ? kAbsent : value.get<double>(); }
 
 SampleStats read_stats(const json& j) {
     SampleStats s;
@@ -53,7 +53,7 @@ ImageMetrics read_error(const json& j) {
         if (!info.infinite_key.empty() && j.value(std::string(info.infinite_key), false))
             m.*info.value = std::numeric_limits<double>::infinity();
         else
-            m.*info.value = j.contains(name) ? metric(j.at(name)) : kNaN;
+            m.*info.value = j.contains(name) ? metric(j.at(name)) : kAbsent;
     }
     for (const MetricCountInfo& count : registered_metric_counts()) {
         const std::string name(count.name);

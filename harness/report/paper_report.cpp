@@ -15,7 +15,7 @@ namespace canopy {
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kMissing = std::numeric_limits<double>::quiet_NaN();
 
 std::string column_value(const PaperComparison& paper, const CaseResult& c) {
     if (paper.column_key == "screen") return fmt::format("{}x{}", c.resolution.width, c.resolution.height);
@@ -49,7 +49,7 @@ const PaperRow* row_named(const PaperComparison& paper, const std::string& label
 }
 
 double paper_time(const PaperComparison& paper, const PaperRow& row, size_t column) {
-    if (row.values.empty()) return kNaN;
+    if (row.values.empty()) return kMissing;
     const double v = row.values[column];
     return paper.unit == "fps" ? 1000.0 / v : v;
 }
@@ -59,7 +59,7 @@ double paper_time(const PaperComparison& paper, const PaperRow& row, size_t colu
 double metric_of(const CaseResult& c, const std::string& claim) {
     if (claim == kTimeClaim) return c.gpu_frame.stats.median;
     const MetricInfo* metric = find_claim_metric(claim);
-    if (!metric || !c.image_error) return kNaN;
+    if (!metric || !c.image_error) return kMissing;
     return metric->meaningful_value(*c.image_error);
 }
 
