@@ -235,7 +235,7 @@ TEST_CASE("macro-cells: seen from afar, the mirrored cells cover what the refere
         // The tiled bake cuts blades leaning out of a cell and brings in those of neighbours
         // mirrored as the cell is (Boulanger §4.2.3 tiles one unmirrored patch), so pixels along
         // the edges between cells that mirror differently differ: 2.1 % of those compared from
-        // above, 1.4 % along -z (and 5.5 % of the volume's depths are off by more than half a
+        // above, 1.4 % along -z (and 5.4 % of the volume's depths are off by more than half a
         // section there).
         CHECK(same.differ <= same.compared / 40);
         // The image's depth is its slice's, not the blade's; the volume's is the first blade's.
