@@ -98,12 +98,13 @@ TEST_CASE("grass transmission: blades lit from behind, the raster and the refere
 }
 
 TEST_CASE("grass transmission: the image-based representations and the ground follow gamma as the blades do") {
-    for (const std::string technique : {"grass.image", "grass.volume", "grass.billboard"}) {
+    for (const std::string technique : {"grass.image", "grass.volume", "grass.billboard", "grass.slices"}) {
         CAPTURE(technique);
         std::map<std::string, ParamValue> params;
         for (int macro : {0, 1}) {
-            if (technique == "grass.billboard" && macro == 1) continue;
-            if (technique != "grass.billboard") params["macro_cells"] = (long long)macro;
+            const bool has_macro_cells = technique == "grass.image" || technique == "grass.volume";
+            if (!has_macro_cells && macro == 1) continue;
+            if (has_macro_cells) params["macro_cells"] = (long long)macro;
             CAPTURE(macro);
             const Image opaque = test::render_technique(back_lit(0.0), technique, params, kWidth, kHeight);
             const Image thin = test::render_technique(back_lit(0.6), technique, params, kWidth, kHeight);

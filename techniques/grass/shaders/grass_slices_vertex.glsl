@@ -1,0 +1,56 @@
+// The BTF slices' vertex stage (grass.slices): each cell's 2n vertical quads and its horizontal
+// one (Boulanger §4.2.3, Algorithm 3), placed and mirrored with the cell
+// (PassContext::draw_over_population). Per vertex, as Algorithm 3 does: which side of its slice
+// the eye is on (the front or back view of Figure 4.6), the weights of the five baked light
+// directions for the light seen in the patch's own axes (App. A; a mirrored cell sees the light
+// mirrored), and the light's irradiance on a surface facing it. Included after the technique's
+// parameter block, which has `slices`.
+#include "frame_uniforms.glsl"
+#include "scene_lighting.glsl"
+#include "btf_interpolation.h"
+#include "grass_lod_band.glsl"
+
+layout(location = 0) in vec4 quad_position;             // patch space
+layout(location = 1) in vec4 quad_uv;                   // u, v; axis (0 x, 1 z, 2 horizontal); slice
+layout(location = 2) in mat4 instance_model;             // locations 2-5
+layout(location = 6) in vec4 instance_normal_matrix[3];  // locations 6-8
+layout(location = 9) in vec4 corner_densities;           // patch order (grass_density.h)
+
+layout(location = 0) out vec2 uv;
+layout(location = 1) out vec2 patch_xz;
+layout(location = 2) out vec4 weights0123;  // btf_light_weights, interpolated and renormalised per fragment
+layout(location = 3) out float weight4;
+layout(location = 4) out vec3 light_irradiance;  // on a surface facing the light
+layout(location = 5) flat out vec4 densities;
+layout(location = 6) flat out ivec2 layer;   // x: the albedo layer (-1: the horizontal slice); y: its first lit row
+layout(location = 7) flat out vec2 band;     // grass_lod_band.glsl
+
+void main() {
+    vec4 world = instance_model * vec4(quad_position.xyz, 1.0);
+    uv = quad_uv.xy;
+    patch_xz = quad_position.xz;
+    densities = corner_densities;
+    band = grass_representation_band(instance_model);
+
+    int axis = int(quad_uv.z), slice = int(quad_uv.w), n = frame.technique.slices;
+    if (axis == 2) {
+        layer = ivec2(-1, 0);
+    } else {
+        vec3 eye = (inverse(instance_model) * vec4(frame.camera_position.xyz, 1.0)).xyz;
+        // The quad's four vertices share its plane, so they agree on the side.
+        bool front = axis == 0 ? eye.x >= quad_position.x : eye.z >= quad_position.z;
+        int l = (axis * n + slice) * 2 + (front ? 0 : 1);
+        layer = ivec2(l, l * BTF_LIGHTS);
+    }
+
+    int light_type = int(frame.light_position.w);
+    vec3 toward_light = light_type == LIGHT_DIRECTIONAL ? -frame.light_axis.xyz
+                                                        : normalize(frame.light_position.xyz - world.xyz);
+    light_irradiance = scene_light_irradiance(world.xyz, toward_light);
+    // transpose(normal matrix) = inverse(model) for directions: the light in patch space.
+    mat3 normal_matrix = mat3(instance_normal_matrix[0].xyz, instance_normal_matrix[1].xyz, instance_normal_matrix[2].xyz);
+    BtfWeights w = btf_light_weights(transpose(normal_matrix) * toward_light);
+    weights0123 = w.w0123;
+    weight4 = w.w4;
+    gl_Position = frame.view_proj * world;
+}

@@ -1,0 +1,23 @@
+// grass.slices' parameters, written once for C++ and GLSL (harness/shaders/param_block.h).
+#ifndef CANOPY_GRASS_SLICES_PARAMS_H
+#define CANOPY_GRASS_SLICES_PARAMS_H
+
+#include "param_block.h"
+
+#define GRASS_SLICES_PARAMS(SHADER, PLAN, DERIVED)                                                          \
+    SHADER(integer, slices, (8, 1, 32), "vertical slices per direction, x and z (Boulanger gives no count; grass.volume's default)") \
+    PLAN(integer, resolution, (256, 16, 4096), "texels of a slice across the patch, and of the horizontal slice each way") \
+    PLAN(integer, height_resolution, (64, 4, 4096), "texels of a vertical slice up the patch's height") \
+    SHADER(real, slice_height, (0.1, 0.01, 1.0),                                                             \
+         "the horizontal slice's height above the ground, a fraction of the tallest blade (Boulanger: 'close to the bottom of the patch')") \
+    PLAN(boolean, neighbours, (true), "bake the patch with its 8 neighbours, cut to the cell (Boulanger §4.2.3: else blades are cut between patches), or the patch alone over its bounds")
+
+CANOPY_BEGIN_NAMESPACE
+CANOPY_PARAM_BLOCK(GrassSlicesParams, GRASS_SLICES_PARAMS)
+CANOPY_END_NAMESPACE
+
+#ifndef __cplusplus
+#define TECHNIQUE_PARAMS GrassSlicesParams
+#endif
+
+#endif

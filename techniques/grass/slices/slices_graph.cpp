@@ -1,0 +1,194 @@
+#include "slices_graph.hpp"
+
+#include "graph/pass_context.hpp"
+#include "render/frame_uniforms.hpp"
+
+#include "../common/grass_passes.hpp"
+#include "../common/grass_population.hpp"
+#include "../common/patch_bake.hpp"
+#include "../shaders/btf_interpolation.h"
+
+#include "shaders/grass/slices_bake_frag.h"
+
+#include <fmt/format.h>
+
+#include <vector>
+
+namespace canopy::grass {
+namespace {
+
+struct Names {
+    std::string albedo;      // RGBA32F x 4n layers: albedo (the ambient row), threshold
+    std::string lit;         // RGBA16F x 20n layers: the five lit rows of each slice and side
+    std::string top_albedo;  // RGBA32F: the horizontal slice's albedo, threshold
+    std::string top_lit;     // RGBA16F x 5 layers
+    std::string bake_depth, top_depth;
+    std::string quads;       // (2n + 1) x 6 QuadVertex
+    explicit Names(const std::string& p)
+        : albedo(p + "slices_albedo"), lit(p + "slices_lit"), top_albedo(p + "top_albedo"), top_lit(p + "top_lit"),
+          bake_depth(p + "bake_depth"), top_depth(p + "top_bake_depth"), quads(p + "slice_quads") {}
+};
+
+// One bake pass: a vertical slice's side, or (axis 2) the horizontal slice seen from above.
+struct SliceBake {
+    uint32_t axis;     // 0: planes x = const, 1: z = const, 2: the horizontal slice
+    uint32_t section;  // k of n along the axis
+    uint32_t side;     // 0: front (seen from +axis), 1: back
+    uint32_t layer;    // in the albedo array (0 for the horizontal slice)
+    std::string camera;
+    std::string name;
+};
+
+std::vector<SliceBake> slice_bakes(uint32_t n, const std::string& prefix) {
+    std::vector<SliceBake> bakes;
+    for (uint32_t axis = 0; axis < 2; ++axis)
+        for (uint32_t k = 0; k < n; ++k)
+            for (uint32_t side = 0; side < 2; ++side) {
+                const std::string id = fmt::format("{}{}_{}", axis == 0 ? 'x' : 'z', k, side == 0 ? "front" : "back");
+                bakes.push_back({axis, k, side, slice_side_layer(axis, k, side, n), prefix + "bake_camera_" + id,
+                                 prefix + "bake_slice_" + id});
+            }
+    bakes.push_back({2, 0, 0, 0, prefix + "bake_camera_top", prefix + "bake_top"});
+    return bakes;
+}
+
+// Where section k of n begins along `axis` of the frame. Baked with its neighbours, the sections
+// end at the cell's sides: what lies beyond is a neighbouring cell's, drawn by its own slices.
+// Alone, the outer sections reach past the frame, so a blade on its edge belongs to one of them.
+float section_start(const Bounds& f, int axis, uint32_t k, uint32_t n, bool tiled) {
+    if (k == 0 && !tiled) return -1e30f;
+    if (k == n && !tiled) return 1e30f;
+    return f.min[axis] + (f.max[axis] - f.min[axis]) * float(k) / float(n);
+}
+
+// The camera of one bake: looking along -axis for the front side, along +axis for the back (the
+// same image coordinates, depth reversed), keeping the slice's section.
+shader::PatchBake slice_camera(const Bounds& bounds, const SliceBake& b, uint32_t n, bool tiled) {
+    if (b.axis == 2) return ortho_bake(bounds, BakeView::down, tiled);
+    const Bounds f = baked_frame(bounds, tiled);
+    const int axis = b.axis == 0 ? 0 : 2;
+    shader::PatchBake bake = ortho_bake(bounds, b.axis == 0 ? BakeView::along_x : BakeView::along_z, tiled);
+    const float lo = section_start(f, axis, b.section, n, tiled), hi = section_start(f, axis, b.section + 1, n, tiled);
+    bake.section = glm::vec4(lo, hi, 0.0f, 0.0f);
+    if (b.side == 1) {
+        bake.view_proj[axis][2] = -bake.view_proj[axis][2];
+        bake.view_proj[3][2] = 1.0f - bake.view_proj[3][2];
+        bake.toward_viewer = -bake.toward_viewer;
+        bake.section = glm::vec4(-hi, -lo, 0.0f, 0.0f);  // along = -coordinate
+    }
+    return bake;
+}
+
+// The 2n vertical quads, each at the middle of its section, spanning the frame and the blades'
+// height, and the horizontal one. position.w: 0; uv: (u, v) in the slice's bake, z: the axis
+// (0 x, 1 z, 2 horizontal), w: the slice.
+std::vector<QuadVertex> slice_quads(const Bounds& bounds, uint32_t n, float slice_height, bool tiled) {
+    const Bounds f = baked_frame(bounds, tiled);
+    const float top = f.max.y;
+    std::vector<QuadVertex> quads;
+    for (uint32_t a = 0; a < 2; ++a) {
+        const int axis = a == 0 ? 0 : 2, across = a == 0 ? 2 : 0;
+        for (uint32_t k = 0; k < n; ++k) {
+            const float plane = f.min[axis] + (f.max[axis] - f.min[axis]) * (float(k) + 0.5f) / float(n);
+            for (const glm::vec2 c : kQuadCorners) {
+                glm::vec4 p(0.0f, c.y * top, 0.0f, 0.0f);
+                p[axis] = plane;
+                p[across] = f.min[across] + c.x * (f.max[across] - f.min[across]);
+                quads.push_back({p, glm::vec4(c.x, 1.0f - c.y, float(a), float(k))});
+            }
+        }
+    }
+    for (const glm::vec2 c : kQuadCorners)
+        quads.push_back({glm::vec4(f.min.x + c.x * (f.max.x - f.min.x), slice_height * top,
+                                   f.min.z + c.y * (f.max.z - f.min.z), 0.0f),
+                         glm::vec4(c.x, c.y, 2.0f, 0.0f)});
+    return quads;
+}
+
+}  // namespace
+
+std::string slices_albedo_name(const std::string& prefix) { return Names(prefix).albedo; }
+std::string slices_lit_name(const std::string& prefix) { return Names(prefix).lit; }
+std::string top_albedo_name(const std::string& prefix) { return Names(prefix).top_albedo; }
+std::string top_lit_name(const std::string& prefix) { return Names(prefix).top_lit; }
+
+void declare_slices_bake(FrameGraph& g, const SlicesSettings& s) {
+    const Names names(s.prefix);
+    const uint32_t n = s.slices, lights = uint32_t(shader::BTF_LIGHTS);
+    const bool tiled = s.neighbours;
+    const float slice_height = s.slice_height;
+    const ImageExtent side = ImageExtent::texels(s.resolution, s.height_resolution);
+    const ImageExtent top = ImageExtent::square(s.resolution);
+    g.images.push_back({.name = names.albedo, .format = VK_FORMAT_R32G32B32A32_SFLOAT, .extent = side,
+                        .layers = 4 * n, .persistent = true});
+    g.images.push_back({.name = names.lit, .format = VK_FORMAT_R16G16B16A16_SFLOAT, .extent = side,
+                        .layers = 4 * n * lights, .persistent = true});
+    g.images.push_back({.name = names.top_albedo, .format = VK_FORMAT_R32G32B32A32_SFLOAT, .extent = top, .persistent = true});
+    g.images.push_back({.name = names.top_lit, .format = VK_FORMAT_R16G16B16A16_SFLOAT, .extent = top,
+                        .layers = lights, .persistent = true});
+    g.images.push_back({.name = names.bake_depth, .format = VK_FORMAT_D32_SFLOAT, .extent = side});
+    g.images.push_back({.name = names.top_depth, .format = VK_FORMAT_D32_SFLOAT, .extent = top});
+    g.buffers.push_back({.name = names.quads, .bytes = sizeof(QuadVertex) * 6 * (2 * n + 1), .usage = kVertexBuffer,
+                         .persistent = true});
+    const std::vector<SliceBake> bakes = slice_bakes(n, s.prefix);
+    for (const SliceBake& b : bakes)
+        g.buffers.push_back({.name = b.camera, .bytes = sizeof(shader::PatchBake), .usage = kUniformBuffer});
+
+    PassDecl setup{.name = s.prefix + "bake_setup", .kind = PassKind::copy, .phase = Phase::load};
+    setup.uses = {use(names.quads, Use::transfer_write)};
+    for (const SliceBake& b : bakes) setup.uses.push_back(use(b.camera, Use::transfer_write));
+    setup.settings = fmt::format("slices={} slice_height={} neighbours={}", n, slice_height, tiled);
+    setup.record = [bakes, n, slice_height, tiled, names](PassContext& pc) {
+        const Bounds bounds = prototype_bounds(first_grass(pc.populations()));
+        const std::vector<QuadVertex> quads = slice_quads(bounds, n, slice_height, tiled);
+        pc.upload(names.quads, quads.data(), quads.size() * sizeof(QuadVertex));
+        for (const SliceBake& b : bakes) {
+            const shader::PatchBake camera = slice_camera(bounds, b, n, tiled);
+            pc.upload(b.camera, &camera, sizeof(camera));
+        }
+    };
+    g.passes.push_back(std::move(setup));
+
+    // Each bake writes the slice side's albedo and threshold and its five lit rows at once: one
+    // drawing of the blades between the slice's clipping planes, shaded under every baked light.
+    const RasterState bake = bake_state(slices_bake_frag);
+    for (const SliceBake& b : bakes) {
+        const bool horizontal = b.axis == 2;
+        PassDecl p{.name = b.name, .kind = PassKind::raster, .phase = Phase::load};
+        p.push_constant_bytes = sizeof(DrawConstants);
+        p.uses = {use(graph_names::kFrameUniforms, Use::uniform, 0), use(b.camera, Use::uniform, 1),
+                  cleared(horizontal ? names.top_albedo : names.albedo, Use::color_attachment,
+                          {0.0f, 0.0f, 0.0f, shader::PATCH_BAKE_EMPTY}, true, b.layer)};
+        for (uint32_t row = 0; row < lights; ++row)
+            p.uses.push_back(cleared(horizontal ? names.top_lit : names.lit, Use::color_attachment, {0.0f, 0.0f, 0.0f, 0.0f},
+                                     true, horizontal ? row : b.layer * lights + row));
+        p.uses.push_back(cleared(horizontal ? names.top_depth : names.bake_depth, Use::depth_attachment, kFarDepth, false));
+        p.settings = horizontal ? fmt::format("down{}", tiled ? ", tiled" : "")
+                                : fmt::format("layer={}{}", b.layer, tiled ? " tiled" : "");
+        p.record = [bake, tiled](PassContext& pc) { record_prototype_bake(pc, bake, tiled); };
+        g.passes.push_back(std::move(p));
+    }
+}
+
+PassDecl slices_frame_pass(const SlicesSettings& s, const RasterState& per_cell, bool ground,
+                           std::vector<ResourceUse> attachments) {
+    const Names names(s.prefix);
+    PassDecl frame{.name = s.prefix + "btf_slices", .kind = PassKind::raster};
+    frame.push_constant_bytes = sizeof(DrawConstants);
+    frame.uses = {use(graph_names::kFrameUniforms, Use::uniform, 0), use(names.albedo, Use::sampled, 1),
+                  use(names.lit, Use::sampled, 2),  use(names.top_albedo, Use::sampled, 3),
+                  use(names.top_lit, Use::sampled, 4), use(names.quads, Use::vertex)};
+    frame.uses.insert(frame.uses.end(), attachments.begin(), attachments.end());
+    const std::optional<RasterState> objects = ground ? std::optional<RasterState>(ground_state()) : std::nullopt;
+    RasterState slices = per_cell;
+    slices.vertices = quad_layout();
+    const uint32_t vertices = 6 * (2 * s.slices + 1);
+    frame.settings = fmt::format("{} vertical and 1 horizontal quads per cell", 2 * s.slices);
+    frame.record = [objects, slices, vertices, quads = names.quads](PassContext& pc) {
+        if (objects) record_ground(pc, *objects);
+        record_copies(pc, slices, quads, vertices);
+    };
+    return frame;
+}
+
+}  // namespace canopy::grass

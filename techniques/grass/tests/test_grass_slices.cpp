@@ -1,0 +1,305 @@
+// grass.slices (Boulanger's BTF slices): each slice side's load-phase bake holds, texel by texel,
+// the blade Embree's orthographic rays meet within that slice's section, its back side the same
+// outline; seen from afar along either slice direction and from above, the slices cover what the
+// reference's rays hit at about the depth they hit it; and with the sun along any of the five
+// baked directions, the slices show exactly the colours grass.volume (from the side) and
+// grass.image (from above) compute per pixel from the same bakes, on a mirrored field, so the
+// baked rows, the light's weights, its mirroring and the choice of the side seen are all pinned.
+// A slice baked from the wrong section, two rows swapped, the light not mirrored with its cell or
+// the sides swapped fails a check here.
+#include "support/bake_truth.hpp"
+
+#include "core/registry.hpp"
+#include "config/scene_config.hpp"
+#include "reference/embree_scene.hpp"
+#include "reference/reference_renderer.hpp"
+#include "render/frame_renderer.hpp"
+#include "scene/geometry.hpp"
+#include "support/reference_hits.hpp"
+#include "support/test_gpu.hpp"
+
+#include "../shaders/btf_interpolation.h"
+#include "../slices/slices_graph.hpp"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+using namespace canopy;
+using grass::test::one_cell_scene;
+
+namespace {
+
+constexpr uint32_t kSlices = 4;
+constexpr uint32_t kWidth = 96, kHeight = 48;
+const char* kAnyCamera = "[camera]\nposition = [0.5, 1.0, 2.5]\ntarget = [0.5, 0.0, 0.5]";
+// Far away with a narrow view: nearly the orthographic views along -x, -z and -y.
+const char* kFarAlongZ = "[camera]\nposition = [0.5, 0.12, 80]\ntarget = [0.5, 0.12, 0.5]\nfov = 0.9\nnear = 40\nfar = 120";
+const char* kFarAlongX = "[camera]\nposition = [80, 0.12, 0.5]\ntarget = [0.5, 0.12, 0.5]\nfov = 0.9\nnear = 40\nfar = 120";
+const char* kFarAlongMinusZ = "[camera]\nposition = [0.5, 0.12, -80]\ntarget = [0.5, 0.12, 0.5]\nfov = 0.9\nnear = 40\nfar = 120";
+const char* kFarAlongMinusX = "[camera]\nposition = [-80, 0.12, 0.5]\ntarget = [0.5, 0.12, 0.5]\nfov = 0.9\nnear = 40\nfar = 120";
+// Very far above the 2 x 2 field's centre, so that the vertical slices, seen edge-on, cover
+// almost no pixel centre.
+const char* kFarAboveField =
+    "[camera]\nposition = [1, 1000, 1]\ntarget = [1, 0, 1]\nup = [0, 0, -1]\nfov = 0.13\nnear = 900\nfar = 1100";
+const char* kFarAbove =
+    "[camera]\nposition = [0.5, 80, 0.5]\ntarget = [0.5, 0, 0.5]\nup = [0, 0, -1]\nfov = 0.9\nnear = 40\nfar = 120";
+// Inside the field, among the slices, looking across it.
+const char* kInside = "[camera]\nposition = [0.05, 0.06, 0.1]\ntarget = [1, 0.04, 0.7]\nnear = 0.001\nfov = 60";
+
+const Technique& technique(const char* name) {
+    const Technique* t = TechniqueRegistry::instance().find(name);
+    REQUIRE(t);
+    return *t;
+}
+
+FrameRenderer slices_renderer(const Scene& scene, uint32_t width, uint32_t height, bool neighbours = false) {
+    const ParamSet params = ParamSet::resolve(technique("grass.slices").params(),
+                                              {{"slices", (long long)kSlices},
+                                               {"resolution", (long long)kWidth},
+                                               {"height_resolution", (long long)kHeight},
+                                               {"neighbours", neighbours}},
+                                              {}, {}, "grass.slices");
+    return FrameRenderer(test::gpu(), scene, build_scene_meshes(scene), width, height,
+                         technique("grass.slices").graph(params));
+}
+
+// grass.image baking the same top view as slices_renderer.
+FrameRenderer image_renderer(const Scene& scene, uint32_t width, uint32_t height) {
+    const ParamSet params =
+        ParamSet::resolve(technique("grass.image").params(), {{"resolution", (long long)kWidth}}, {}, {}, "grass.image");
+    return FrameRenderer(test::gpu(), scene, build_scene_meshes(scene), width, height,
+                         technique("grass.image").graph(params));
+}
+
+Bounds prototype_bounds(const Scene& scene) {
+    Bounds b;
+    for (const Vertex& v : scene.populations.at(0).family->prototype.vertices) b.extend(v.position);
+    return b;
+}
+
+// 2 x 2 cells of the one-cell patch, each mirrored its own way (this seed mirrors some in x and
+// some in z).
+Scene mirrored_field(const std::string& camera) {
+    return parse_scene(std::string("[scene]\nname = \"field\"\nambient = 0.2\n") + camera +
+                           "\n[[light]]\ntype = \"directional\"\ndirection = [0, -1, 0]\ncasts_shadows = false\n"
+                           "[[population]]\nname = \"patch\"\nkind = \"grass\"\nalbedo = [0.1, 0.8, 0.1]\n"
+                           "params = { cells_x = 2, cells_z = 2, centre_x = 1, centre_z = 1, mirror = true, mirror_seed = 3, "
+                           "blades = 60, subdivisions = 3, width_min = 0.06, width_max = 0.1 }\n",
+                       "field.toml");
+}
+
+// A technique's colours against the reference's (one sample at each pixel centre, the scene's
+// shading), where the reference's ray hits a blade off the edges between blades and the technique
+// shows grass: how many differ by more than 5 % in green, and the mean relative difference.
+struct ColourAgreement {
+    int both = 0, off = 0;
+    double mean_relative = 0.0;
+};
+
+ColourAgreement compare_with_reference_colours(const Scene& scene, const Image& image) {
+    const EmbreeScene embree(scene, build_scene_meshes(scene));
+    const int width = image.width, height = image.height;
+    ReferenceSettings settings;
+    settings.pixel_samples = 1;
+    settings.light_samples = 1;
+    const ReferenceImages reference = render_reference(scene, embree, uint32_t(width), uint32_t(height), settings);
+    const auto hits = test::reference_hits(scene, embree, uint32_t(width), uint32_t(height));
+    const uint32_t per_blade = 2 * (uint32_t(scene.populations.at(0).params.integer("subdivisions")) + 1);
+    const auto label = [&](int x, int y) -> int64_t {
+        const auto& h = hits[size_t(y) * size_t(width) + size_t(x)];
+        return h && h->what.population >= 0 ? int64_t(h->hit.primitive / per_blade) : -1;
+    };
+    ColourAgreement a;
+    for (int y = 1; y + 1 < height; ++y)
+        for (int x = 1; x + 1 < width; ++x) {
+            const int64_t blade = label(x, y);
+            if (blade < 0 || !grass::test::shows_grass(image.at(x, y))) continue;
+            bool edge = false;
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) edge = edge || label(x + dx, y + dy) != blade;
+            if (edge) continue;
+            const double want = reference.radiance.at(x, y)[1], got = image.at(x, y)[1];
+            const double relative = std::abs(got - want) / std::max(want, 1e-3);
+            ++a.both;
+            a.off += relative > 0.05;
+            a.mean_relative += relative;
+        }
+    if (a.both > 0) a.mean_relative /= a.both;
+    return a;
+}
+
+struct Agreement {
+    int both = 0;       // pixels where both show grass
+    int coverage = 0;   // where one shows grass and the other not
+    int colour = 0;     // of `both`, where the colours differ by more than the tolerance
+    double worst = 0.0;
+};
+
+Agreement compare_images(const Image& a, const Image& b, float tolerance) {
+    Agreement r;
+    for (int y = 0; y < a.height; ++y)
+        for (int x = 0; x < a.width; ++x) {
+            const bool ga = grass::test::shows_grass(a.at(x, y)), gb = grass::test::shows_grass(b.at(x, y));
+            if (ga != gb) ++r.coverage;
+            if (!ga || !gb) continue;
+            ++r.both;
+            double d = 0.0;
+            for (int c = 0; c < 3; ++c) d = std::max(d, double(std::abs(a.at(x, y)[c] - b.at(x, y)[c])));
+            r.worst = std::max(r.worst, d);
+            r.colour += d > tolerance;
+        }
+    return r;
+}
+
+}  // namespace
+
+TEST_CASE("grass.slices: each slice side's bake shows the blades of its own section, texel by texel") {
+    const Scene scene = one_cell_scene(kAnyCamera, "density = 1.0");
+    FrameRenderer renderer = slices_renderer(scene, 64, 48);
+    renderer.render();
+    const Bounds b = prototype_bounds(scene);
+    int covered = 0;
+    for (uint32_t axis = 0; axis < 2; ++axis)
+        for (uint32_t k = 0; k < kSlices; ++k) {
+            CAPTURE(axis);
+            CAPTURE(k);
+            const Image front = renderer.read_image("slices_albedo", 0, grass::slice_side_layer(axis, k, 0, kSlices));
+            const Image back = renderer.read_image("slices_albedo", 0, grass::slice_side_layer(axis, k, 1, kSlices));
+            REQUIRE(front.width == int(kWidth));
+            REQUIRE(front.height == int(kHeight));
+            const float lo = axis == 0 ? b.min.x : b.min.z, hi = axis == 0 ? b.max.x : b.max.z;
+            const float step = (hi - lo) / float(kSlices);
+            const grass::test::Section section{k == 0 ? -1e30f : lo + step * float(k),
+                                               k + 1 == kSlices ? 1e30f : lo + step * float(k + 1)};
+            const auto view = axis == 0 ? grass::test::View::along_x : grass::test::View::along_z;
+            const auto truth = grass::test::traced_bake(scene, view, kWidth, kHeight, section);
+            const grass::test::BakeAgreement same = grass::test::compare_bake(front, truth);
+            CAPTURE(same.compared);
+            CAPTURE(same.covered);
+            CAPTURE(same.coverage);
+            CHECK(same.coverage <= same.compared / 1000);
+            CHECK(same.threshold <= same.compared / 1000);
+            covered += same.covered;
+            // Seen from behind, the section has the same outline (the blade in front may differ).
+            CHECK(grass::test::compare_bake(back, truth).coverage <= same.compared / 1000);
+            // The neighbouring section's blades are not this one's.
+            if (k + 1 < kSlices) {
+                const grass::test::Section next{section.hi, k + 2 == kSlices ? 1e30f : lo + step * float(k + 2)};
+                const auto other = grass::test::traced_bake(scene, view, kWidth, kHeight, next);
+                CHECK(grass::test::compare_bake(front, other).coverage > same.coverage + 20);
+            }
+            for (float v : front.pixels) REQUIRE(std::isfinite(v));
+            for (float v : back.pixels) REQUIRE(std::isfinite(v));
+        }
+    CHECK(covered > 1000);
+    // The horizontal slice: the patch from above.
+    const Image top = renderer.read_image("top_albedo");
+    const auto truth = grass::test::traced_bake(scene, grass::test::View::down, kWidth);
+    const grass::test::BakeAgreement same = grass::test::compare_bake(top, truth);
+    CHECK(same.covered > 300);
+    CHECK(same.coverage <= same.compared / 1000);
+    CHECK(same.threshold <= same.compared / 1000);
+}
+
+TEST_CASE("grass.slices: seen from afar along either slice direction and from above, the slices cover what the reference's rays hit") {
+    for (const bool neighbours : {false, true})
+        for (const char* camera : {kFarAlongZ, kFarAlongX, kFarAbove}) {
+            CAPTURE(camera);
+            CAPTURE(neighbours);
+            const Scene scene = one_cell_scene(camera, "density = 1.0");
+            FrameRenderer renderer = slices_renderer(scene, 160, 120, neighbours);
+            renderer.render();
+            const auto [color, visibility] = renderer.read_color_and_pixel_visibility();
+            // The depth is the slice's plane: within half a section's width of the blade.
+            const Bounds b = prototype_bounds(scene);
+            const float tolerance = 0.5f * (b.max.x - b.min.x) / float(kSlices) + 0.01f;
+            const grass::test::CoverageAgreement a =
+                grass::test::compare_with_reference_hits(scene, color, &visibility, tolerance);
+            CAPTURE(a.compared);
+            CAPTURE(a.covered);
+            CAPTURE(a.differ);
+            CAPTURE(a.depth_off);
+            CHECK(a.covered > 300);
+            // Baked with its neighbours, the cell shows the blades leaning in from them and cuts
+            // its own at its sides, which the one-cell reference does not: a few per cent.
+            CHECK(a.differ <= a.compared / (neighbours ? 50 : 1000));
+            if (camera != kFarAbove) CHECK(a.depth_off <= a.depth_compared / (neighbours ? 10 : 100));
+        }
+}
+
+TEST_CASE("grass.slices: with the sun along each baked direction, the slices seen along an axis from any side show the reference's colours") {
+    // Seen along an axis (nearly orthographically), the nearest slice showing a blade at a pixel
+    // shows the nearest blade of the nearest section that has one there: the blade the
+    // reference's ray hits, seen from the same side, lit by exactly one baked row.
+    int compared = 0;
+    for (int row = 0; row < shader::BTF_LIGHTS; ++row)
+        for (const char* camera : {kFarAlongX, kFarAlongZ, kFarAlongMinusX, kFarAlongMinusZ}) {
+            CAPTURE(row);
+            CAPTURE(camera);
+            Scene scene = one_cell_scene(camera, "density = 1.0");
+            scene.lights.at(0).direction = -shader::btf_light_direction(row);
+            FrameRenderer slices = slices_renderer(scene, 160, 120);
+            slices.render();
+            const Image color = slices.read_color();
+            for (float v : color.pixels) REQUIRE(std::isfinite(v));
+            const ColourAgreement same = compare_with_reference_colours(scene, color);
+            CAPTURE(same.both);
+            CAPTURE(same.off);
+            CAPTURE(same.mean_relative);
+            CHECK(same.both > 200);
+            // Vertex-interpolated normals and the RGBA16F rows agree to a few per cent; the
+            // slices' planes a texel off the ray's first blade account for the rest.
+            CHECK(same.off <= same.both / 20);
+            CHECK(same.mean_relative < 0.02);
+            compared += same.both;
+        }
+    CHECK(compared > 4000);
+}
+
+TEST_CASE("grass.slices: with the sun along each baked direction, the horizontal slice from above shows grass.image's colours on a mirrored field") {
+    // The same top-view bake: grass.image lights its texel per pixel with the world's light and the
+    // mirrored normal, grass.slices with the baked row of the light mirrored into the cell.
+    int compared = 0;
+    for (int row = 0; row < shader::BTF_LIGHTS; ++row) {
+        CAPTURE(row);
+        Scene scene = mirrored_field(kFarAboveField);
+        scene.lights.at(0).direction = -shader::btf_light_direction(row);
+        FrameRenderer slices = slices_renderer(scene, 160, 120);
+        slices.render();
+        FrameRenderer image = image_renderer(scene, 160, 120);
+        image.render();
+        const Image a = slices.read_color(), b = image.read_color();
+        for (float v : a.pixels) REQUIRE(std::isfinite(v));
+        const Agreement same = compare_images(a, b, 4e-3f);
+        CAPTURE(same.both);
+        CAPTURE(same.coverage);
+        CAPTURE(same.colour);
+        CAPTURE(same.worst);
+        CHECK(same.both > 2000);
+        CHECK(same.colour <= same.both / 200);
+        CHECK(same.coverage <= same.both / 200);
+        compared += same.both;
+    }
+    CHECK(compared > 10000);
+}
+
+TEST_CASE("grass.slices: extremes: an eye among the slices, the sun at the zenith and the horizon, density 0 and 1") {
+    for (const char* camera : {kInside, kAnyCamera})
+        for (const glm::vec3 sun : {glm::vec3(0, -1, 0), glm::vec3(1, 0, 0), glm::vec3(0.3f, -1e-7f, -1.0f)})
+            for (const char* density : {"density = 1.0", "density = 0.0"}) {
+                CAPTURE(camera);
+                CAPTURE(density);
+                Scene scene = one_cell_scene(camera, density);
+                scene.lights.at(0).direction = glm::normalize(sun);
+                FrameRenderer renderer = slices_renderer(scene, 96, 64, true);
+                renderer.render();
+                const Image color = renderer.read_color();
+                for (float v : color.pixels) REQUIRE(std::isfinite(v));
+                const int grass = grass::test::grass_pixels(color);
+                if (std::string(density) == "density = 0.0") CHECK(grass == 0);
+                else CHECK(grass > 200);
+            }
+}
