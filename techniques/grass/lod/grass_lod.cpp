@@ -1,10 +1,11 @@
-// grass.lod: a field drawn near as blades, in the middle as the ray-cast volume and far as the
-// image slice (Boulanger 2008 §4.2.5, Lemme 2012 §5.4), the three meeting by density thresholds:
+// grass.lod: a field drawn near as blades, in the middle as the ray-cast volume (Lemme) or the BTF
+// slices (Boulanger) and far as the image slice (Boulanger 2008 §4.2.5, Lemme 2012 §5.4), the
+// three meeting by density thresholds:
 // at a cell's distance, lod_cuts (shaders/lod_selection.h) splits its blades' thresholds into
 // three bands, and each representation draws only the blades of its band, so a transition moves
 // blades one by one and none is drawn twice or dropped. One pass per band, so each band's share
-// of the frame is timed apart; the volume's and the image's bakes are those of grass.volume and
-// grass.image (volume_graph.hpp, image_graph.hpp), and the shaders are compiled from the same
+// of the frame is timed apart; the middle and far bakes are those of grass.volume or grass.slices
+// and grass.image (volume_graph.hpp, slices_graph.hpp, image_graph.hpp), and the shaders are compiled from the same
 // bodies with the band switched on (shaders/grass_lod_band.glsl).
 #include "core/registry.hpp"
 #include "graph/pass_context.hpp"
@@ -14,12 +15,15 @@
 #include "../common/grass_passes.hpp"
 #include "../common/grass_population.hpp"
 #include "../image/image_graph.hpp"
+#include "../slices/slices_graph.hpp"
 #include "../volume/volume_graph.hpp"
 
 #include "shaders/grass/grass_lod_blades_frag.h"
 #include "shaders/grass/grass_lod_blades_vert.h"
 #include "shaders/grass/grass_lod_image_frag.h"
 #include "shaders/grass/grass_lod_image_vert.h"
+#include "shaders/grass/grass_lod_slices_frag.h"
+#include "shaders/grass/grass_lod_slices_vert.h"
 #include "shaders/grass/grass_lod_volume_frag.h"
 #include "shaders/grass/grass_lod_volume_vert.h"
 
@@ -56,7 +60,7 @@ class GrassLod final : public Technique {
 public:
     std::string name() const override { return "grass.lod"; }
     std::string summary() const override {
-        return "grass in three distance bands: blades near, the ray-cast volume in the middle, the image slice far, meeting blade by blade by density thresholds";
+        return "grass in three distance bands: blades near, the ray-cast volume or BTF slices in the middle, the image slice far, meeting blade by blade by density thresholds";
     }
     std::string paper() const override {
         return "Boulanger 2008 §4.2.5 (eq 4.3-4.6, Algorithm 1); Lemme 2012 §5.4 (eq 5.22-5.26)";
@@ -83,14 +87,20 @@ public:
                                            .resolution = uint32_t(params.integer("resolution")),
                                            .height_resolution = uint32_t(params.integer("height_resolution")),
                                            .prefix = "volume_"};
+        const bool btf = params.choice("middle") == "slices";
+        const grass::SlicesSettings slices{.slices = uint32_t(block.slices),
+                                           .resolution = uint32_t(params.integer("resolution")),
+                                           .height_resolution = uint32_t(params.integer("height_resolution")),
+                                           .prefix = "middle_"};
         const grass::ImageSettings image{.resolution = uint32_t(params.integer("image_resolution")),
                                          .slice_height = float(params.real("slice_height")),
                                          .prefix = "image_"};
         FrameGraph g;
         g.needs.populations = {grass::kGrassPopulationKind};
         g.shader_params.set_block(block);
-        g.report["bands"] = fmt::format("blades to {}-{}, volume ({} slices) to {}-{}, image beyond", block.geometry_full,
-                                        block.geometry_none, volume.slices, block.image_start, block.image_full);
+        g.report["bands"] = fmt::format("blades to {}-{}, {} ({} slices) to {}-{}, image beyond", block.geometry_full,
+                                        block.geometry_none, btf ? "BTF slices" : "volume", volume.slices,
+                                        block.image_start, block.image_full);
         g.report["coverage"] = to_coverage ? "alpha-to-coverage" : "alpha-test";
         g.report["samples"] = std::to_string(samples);
         if (samples > 1) {
@@ -99,7 +109,8 @@ public:
             g.images.push_back({.name = "msaa_depth", .format = VK_FORMAT_D32_SFLOAT, .extent = ImageExtent::screen(),
                                 .samples = samples});
         }
-        grass::declare_volume_bake(g, volume);
+        if (btf) grass::declare_slices_bake(g, slices);
+        else grass::declare_volume_bake(g, volume);
         grass::declare_image_bake(g, image);
 
         // Near: the ground and the blades of the geometry's band.
@@ -120,11 +131,12 @@ public:
         };
         g.passes.push_back(std::move(blades));
 
-        // Middle: the volume's band, then far: the image's.
-        RasterState cuboids;
-        cuboids.vertex_spirv = grass_lod_volume_vert;
-        cuboids.fragment_spirv = grass_lod_volume_frag;
-        g.passes.push_back(grass::volume_frame_pass(volume, cuboids, false, band_attachments(samples, false, false)));
+        // Middle: the volume's or the slices' band, then far: the image's.
+        RasterState middle;
+        middle.vertex_spirv = btf ? std::span<const uint32_t>(grass_lod_slices_vert) : std::span<const uint32_t>(grass_lod_volume_vert);
+        middle.fragment_spirv = btf ? std::span<const uint32_t>(grass_lod_slices_frag) : std::span<const uint32_t>(grass_lod_volume_frag);
+        g.passes.push_back(btf ? grass::slices_frame_pass(slices, middle, false, band_attachments(samples, false, false))
+                               : grass::volume_frame_pass(volume, middle, false, band_attachments(samples, false, false)));
         RasterState quads;
         quads.vertex_spirv = grass_lod_image_vert;
         quads.fragment_spirv = grass_lod_image_frag;

@@ -19,9 +19,11 @@
     PLAN(integer, samples, (4, 1, 4), "MSAA samples of every band's pass: 1 or 4 (lavapipe's)")             \
     SHADER(choice, coverage, ("alpha_to_coverage", {"alpha_test", "alpha_to_coverage"}),                    \
            "how the near band's blade outline cuts (grass.geometry's coverage)")                          \
-    SHADER(integer, slices, (8, 1, 64), "the middle band's vertical slices per direction (grass.volume's slices)") \
-    PLAN(integer, resolution, (256, 16, 4096), "texels of a volume slice across the patch (grass.volume's resolution)") \
-    PLAN(integer, height_resolution, (64, 4, 4096), "texels of a volume slice up the patch's height (grass.volume's)") \
+    PLAN(choice, middle, ("volume", {"volume", "slices"}),                                                    \
+         "the middle band: Lemme's ray-cast volume (grass.volume) or Boulanger's BTF slices (grass.slices)")     \
+    SHADER(integer, slices, (8, 1, 64), "the middle band's vertical slices per direction (grass.volume's and grass.slices' slices)") \
+    PLAN(integer, resolution, (256, 16, 4096), "texels of a middle-band slice across the patch (grass.volume's and grass.slices' resolution)") \
+    PLAN(integer, height_resolution, (64, 4, 4096), "texels of a middle-band slice up the patch's height (grass.volume's and grass.slices')") \
     PLAN(integer, image_resolution, (256, 16, 4096), "texels across the far band's top-view bake (grass.image's resolution)") \
     PLAN(real, slice_height, (0.1, 0.01, 1.0), "the far band's slice height, a fraction of the tallest blade (grass.image's)")
 

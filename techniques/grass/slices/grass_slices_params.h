@@ -5,7 +5,7 @@
 #include "param_block.h"
 
 #define GRASS_SLICES_PARAMS(SHADER, PLAN, DERIVED)                                                          \
-    SHADER(integer, slices, (8, 1, 32), "vertical slices per direction, x and z (Boulanger gives no count; grass.volume's default)") \
+    SHADER(integer, slices, (8, 1, 64), "vertical slices per direction, x and z (Boulanger gives no count; grass.volume's default)") \
     PLAN(integer, resolution, (256, 16, 4096), "texels of a slice across the patch, and of the horizontal slice each way") \
     PLAN(integer, height_resolution, (64, 4, 4096), "texels of a vertical slice up the patch's height") \
     SHADER(real, slice_height, (0.1, 0.01, 1.0),                                                             \

@@ -1,6 +1,6 @@
-// grass.lod (blades near, volume in the middle, image far, split by density thresholds): with its
-// bands pushed to either end it draws exactly what grass.geometry, grass.volume or grass.image
-// draws alone, so a band that a representation ignores or takes from another shows; with the
+// grass.lod (blades near, volume or BTF slices in the middle, image far, split by density
+// thresholds): with its bands pushed to either end it draws exactly what grass.geometry,
+// grass.volume, grass.slices or grass.image draws alone, so a band that a representation ignores or takes from another shows; with the
 // blades split between two bands (half each), the two together cover from above what the
 // reference's rays hit, no blade dropped, and each band draws its part; across a field whose cells
 // lie in all three bands the image is finite and its coverage no worse than the representations'.
@@ -103,6 +103,18 @@ TEST_CASE("grass.lod: with its bands at either end it draws what each representa
     // The three differ from one another, so the checks above tell them apart.
     CHECK(max_difference(blades, volume) > 0.1f);
     CHECK(max_difference(blades, image) > 0.1f);
+    // With Boulanger's middle band: all slices, as grass.slices draws them.
+    const Image slices = render(scene, "grass.slices", {{"slices", 4LL}, {"resolution", 96LL}, {"height_resolution", 48LL}});
+    Values btf = lod_values(0, 0, 1e6, 1e6);
+    btf["middle"] = std::string("slices");
+    const Image lod_slices = render(scene, "grass.lod", btf);
+    CHECK(grass::test::grass_pixels(slices) > 1000);
+    CHECK(max_difference(lod_slices, slices) <= 1e-5f);
+    CHECK(max_difference(slices, volume) > 0.1f);
+    // and its blades and image bands unchanged.
+    btf = lod_values(1e6, 1e6, 1e6, 1e6);
+    btf["middle"] = std::string("slices");
+    CHECK(max_difference(render(scene, "grass.lod", btf), blades) <= 1e-5f);
 }
 
 TEST_CASE("grass.lod: half the blades near and half far cover from above what the reference's rays hit") {
@@ -135,9 +147,13 @@ TEST_CASE("grass.lod: a field in all three bands renders finite, covering as the
     values["coverage"] = std::string("alpha_to_coverage");
     const Image lod = render(scene, "grass.lod", values);
     for (float v : lod.pixels) REQUIRE(std::isfinite(v));
+    values["middle"] = std::string("slices");
+    const Image lod_btf = render(scene, "grass.lod", values);
+    for (float v : lod_btf.pixels) REQUIRE(std::isfinite(v));
     const Image blades = render(scene, "grass.geometry", {{"samples", 4LL}});
     const Image image = render(scene, "grass.image", {{"resolution", 128LL}});
     const auto lod_agreement = grass::test::compare_with_reference_hits(scene, lod);
+    const auto btf_agreement = grass::test::compare_with_reference_hits(scene, lod_btf);
     const auto blades_agreement = grass::test::compare_with_reference_hits(scene, blades);
     const auto image_agreement = grass::test::compare_with_reference_hits(scene, image);
     CAPTURE(lod_agreement.differ);
@@ -147,6 +163,10 @@ TEST_CASE("grass.lod: a field in all three bands renders finite, covering as the
     CHECK(lod_agreement.covered > 150);
     MESSAGE("coverage differs at " << lod_agreement.differ << " (lod), " << blades_agreement.differ << " (blades), " << image_agreement.differ << " (image) of " << lod_agreement.compared);
     CHECK(lod_agreement.differ <= std::max(blades_agreement.differ, image_agreement.differ) + lod_agreement.compared / 50);
+    CAPTURE(btf_agreement.differ);
+    CHECK(btf_agreement.covered > 150);
+    CHECK(btf_agreement.differ <= std::max(blades_agreement.differ, image_agreement.differ) + btf_agreement.compared / 50);
+    CHECK(max_difference(lod, lod_btf) > 0.05f);  // the middle band differs
     // Neither all blades nor all image.
     CHECK(max_difference(lod, blades) > 0.1f);
     CHECK(max_difference(lod, image) > 0.1f);
