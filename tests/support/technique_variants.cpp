@@ -40,6 +40,9 @@ std::vector<TechniqueVariant> technique_variants(const std::string& family) {
         {"grass.volume", {{"slices", 1LL}, {"resolution", 32LL}, {"height_resolution", 8LL}}},
         {"grass.image", {{"resolution", 64LL}, {"macro_cells", 2LL}}},
         {"grass.volume", {{"slices", 4LL}, {"resolution", 32LL}, {"height_resolution", 16LL}, {"macro_cells", 3LL}}},
+        {"grass.slices", {{"slices", 1LL}, {"resolution", 32LL}, {"height_resolution", 8LL}, {"neighbours", false}}},
+        {"grass.lod", {{"middle", std::string("slices")}, {"samples", 1LL}, {"coverage", std::string("alpha_test")},
+                       {"slices", 2LL}, {"resolution", 32LL}, {"height_resolution", 8LL}, {"image_resolution", 32LL}}},
     };
     for (const TechniqueVariant& v : extra)
         if (family.empty() || family_of(v.technique) == family) all.push_back(v);
