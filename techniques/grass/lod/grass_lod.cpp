@@ -12,6 +12,7 @@
 #include "render/frame_uniforms.hpp"
 
 #include "grass_lod_params.h"
+#include "../common/grass_cull.hpp"
 #include "../common/grass_passes.hpp"
 #include "../common/grass_population.hpp"
 #include "../image/image_graph.hpp"
@@ -20,6 +21,7 @@
 
 #include "shaders/grass/grass_lod_blades_frag.h"
 #include "shaders/grass/grass_lod_blades_vert.h"
+#include "shaders/grass/grass_lod_cull_comp.h"
 #include "shaders/grass/grass_lod_image_frag.h"
 #include "shaders/grass/grass_lod_image_vert.h"
 #include "shaders/grass/grass_lod_slices_frag.h"
@@ -103,6 +105,9 @@ public:
                                         block.image_start, block.image_full);
         g.report["coverage"] = to_coverage ? "alpha-to-coverage" : "alpha-test";
         g.report["samples"] = std::to_string(samples);
+        const bool culled = params.choice("culling") == "gpu";
+        g.report["culling"] = culled ? "gpu, near band within geometry_none" : "none";
+        if (culled) grass::declare_grass_cull(g, grass_lod_cull_comp);
         if (samples > 1) {
             g.images.push_back({.name = "msaa_color", .format = kColorFormat, .extent = ImageExtent::screen(),
                                 .samples = samples});
@@ -123,11 +128,15 @@ public:
         field.fragment_spirv = grass_lod_blades_frag;
         field.vertices = VertexLayout::population();
         field.alpha_to_coverage = to_coverage && samples > 1;
-        blades.settings = fmt::format("samples={} coverage={}", samples, g.report["coverage"]);
-        blades.record = [ground = grass::ground_state(), field](PassContext& pc) {
+        blades.settings = fmt::format("samples={} coverage={} culling={}", samples, g.report["coverage"], g.report["culling"]);
+        if (culled) grass::use_cull_survivors(blades);
+        blades.record = [ground = grass::ground_state(), field, culled](PassContext& pc) {
             grass::record_ground(pc, ground);
             pc.bind(pc.raster_pipeline(field));
-            for (const GeneratedPopulation& population : pc.populations()) pc.draw_population(population.name);
+            if (culled)
+                grass::draw_populations_culled(pc);
+            else
+                for (const GeneratedPopulation& population : pc.populations()) pc.draw_population(population.name);
         };
         g.passes.push_back(std::move(blades));
 

@@ -17,6 +17,8 @@
     SHADER(real, image_full, (80.0, 0.0, 1e6),                                                               \
            "distance from which a cell is all image (maxBTF; Lemme's 8-slice level 1 ends at 80 m)")       \
     PLAN(integer, samples, (4, 1, 4), "MSAA samples of every band's pass: 1 or 4 (lavapipe's)")             \
+    PLAN(choice, culling, ("gpu", {"none", "gpu"}),                                                         \
+         "gpu: a compute pass keeps for the near band only the copies whose box may be seen within geometry_none (grass.geometry's cull; the image is the same); none: every copy's blades go through the vertex stage") \
     SHADER(choice, coverage, ("alpha_to_coverage", {"alpha_test", "alpha_to_coverage"}),                    \
            "how the near band's blade outline cuts (grass.geometry's coverage)")                          \
     PLAN(choice, middle, ("volume", {"volume", "slices"}),                                                    \

@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <map>
 #include <string>
 
@@ -170,4 +171,28 @@ TEST_CASE("grass.lod: a field in all three bands renders finite, covering as the
     // Neither all blades nor all image.
     CHECK(max_difference(lod, blades) > 0.1f);
     CHECK(max_difference(lod, image) > 0.1f);
+}
+
+TEST_CASE("grass.lod: culling the near band's copies to geometry_none changes no pixel and drops the far cells") {
+    const Scene scene = field_scene();
+    // Cells 1-5 m away (centres): blades to 1.5-2.5 m.
+    Values values = lod_values(1.5, 2.5, 3.0, 4.0);
+    values["culling"] = std::string("none");
+    const Image whole = render(scene, "grass.lod", values);
+    values["culling"] = std::string("gpu");
+    const Technique* t = TechniqueRegistry::instance().find("grass.lod");
+    REQUIRE(t);
+    FrameRenderer renderer(test::gpu(), scene, build_scene_meshes(scene), 160, 96,
+                           t->graph(ParamSet::resolve(t->params(), values, {}, {}, "grass.lod")));
+    renderer.render();
+    CHECK(max_difference(renderer.read_color(), whole) <= 1e-5f);
+    CHECK(grass::test::grass_pixels(whole) > 1000);
+    // The survivors: the cells whose box comes within 2.5 m of the eye, fewer than the 9.
+    const std::vector<std::byte> bytes = renderer.read_buffer("draw_arguments");
+    REQUIRE(bytes.size() >= sizeof(VkDrawIndexedIndirectCommand));
+    VkDrawIndexedIndirectCommand draw;
+    std::memcpy(&draw, bytes.data(), sizeof(draw));
+    CAPTURE(draw.instanceCount);
+    CHECK(draw.instanceCount >= 1);
+    CHECK(draw.instanceCount < 9);
 }
