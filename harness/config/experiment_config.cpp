@@ -36,7 +36,8 @@ const char* const kExperimentExample =
 // A scene variant's overrides: its name, the width of its shadow light (a rect's side, a
 // sphere's diameter: the width penumbra estimates use), e.g. to sweep the light size (Fig 6.9),
 // whether its objects cast shadows (false: a shadow-free variant, where every technique's
-// visibility should be 1 wherever the light reaches), and whether its first light does.
+// visibility should be 1 wherever the light reaches), whether its first light does, and its
+// camera (keys of [camera] given replace the scene's).
 void apply_scene_variant(TomlReader& variant, Scene& scene) {
     scene.name = variant.get_string("name", scene.name);
     if (const auto problem = file_name_problem(scene.name))
@@ -63,6 +64,11 @@ void apply_scene_variant(TomlReader& variant, Scene& scene) {
                                 "light_size applies to a shadow-casting rect or sphere light");
         if (light->type == LightType::rect) light->rect_size = glm::vec2(float(size));
         else light->sphere_radius = float(0.5 * size);
+    }
+    // Another view of the same scene (e.g. a grass field seen near, mid-distance and far).
+    if (std::optional<TomlReader> camera = variant.get_table("camera", "the scene variant's camera")) {
+        read_scene_camera(*camera, scene.camera);
+        camera->finish();
     }
     if (variant.has("casts_shadows")) {
         const bool casts = variant.get_bool("casts_shadows", true);

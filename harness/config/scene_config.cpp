@@ -605,4 +605,6 @@ Scene parse_scene(const std::string& text, const std::filesystem::path& file) {
 
 Scene load_scene(const std::filesystem::path& file) { return parse_scene(read_config_file(file), file); }
 
+void read_scene_camera(TomlReader& reader, Camera& camera) { read_camera(reader, camera); }
+
 }  // namespace canopy
