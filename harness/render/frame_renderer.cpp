@@ -10,6 +10,7 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <set>
 
 #include <cmath>
 #include <cstring>
@@ -136,15 +137,22 @@ FrameRenderer::FrameRenderer(const GpuContext& gpu, const Scene& scene, const st
     scene_ = std::make_unique<GpuScene>(gpu, ledger_, scene, meshes, graph.needs.populations);
     if (light_view_resolution_)
         light_view_ = compute_light_view(*scene.shadow_light(), scene_bounds(scene, meshes), *light_view_resolution_);
-    for (PassDecl& pass : graph.passes) {
-        // A multisampled target that resolves into the camera target clears to the background too.
-        const bool resolves_to_color = std::any_of(pass.uses.begin(), pass.uses.end(), [](const ResourceUse& use) {
+    // A multisampled target that some pass resolves into the camera target clears to the background
+    // too, wherever it is cleared: grass.lod clears it in its first pass and resolves in its last.
+    std::set<std::string> resolved_to_color;
+    for (const PassDecl& pass : graph.passes) {
+        const bool resolves = std::any_of(pass.uses.begin(), pass.uses.end(), [](const ResourceUse& use) {
             return use.use == Use::resolve_target && use.resource == graph_names::kColor;
         });
-        for (ResourceUse& use : pass.uses)
-            if (use.clear && (use.resource == graph_names::kColor || (resolves_to_color && use.use == Use::color_attachment)))
-                *use.clear = {scene.background.r, scene.background.g, scene.background.b, (*use.clear)[3]};
+        if (resolves)
+            for (const ResourceUse& use : pass.uses)
+                if (use.use == Use::color_attachment) resolved_to_color.insert(use.resource);
     }
+    for (PassDecl& pass : graph.passes)
+        for (ResourceUse& use : pass.uses)
+            if (use.clear && (use.resource == graph_names::kColor ||
+                              (use.use == Use::color_attachment && resolved_to_color.count(use.resource))))
+                *use.clear = {scene.background.r, scene.background.g, scene.background.b, (*use.clear)[3]};
     uniforms_ = Buffer(gpu, ledger_, "frame", sizeof(FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
     write_uniforms(scene.camera);
     executor_ = std::make_unique<GraphExecutor>(gpu, ledger_, std::move(graph), width, height, uniforms_, *scene_);

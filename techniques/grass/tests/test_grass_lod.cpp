@@ -196,3 +196,19 @@ TEST_CASE("grass.lod: culling the near band's copies to geometry_none changes no
     CHECK(draw.instanceCount >= 1);
     CHECK(draw.instanceCount < 9);
 }
+
+TEST_CASE("grass.lod: with MSAA, where nothing is drawn the frame shows the scene's background") {
+    // Its multisampled target is cleared in the first band's pass and resolved in the last: the
+    // clear must be the background, as in grass.geometry's single pass.
+    Scene scene = field_scene();
+    scene.background = glm::vec3(0.45f, 0.6f, 0.85f);
+    Values values = lod_values(1.5, 2.5, 3.0, 4.0);
+    values["samples"] = 4LL;
+    values["coverage"] = std::string("alpha_to_coverage");
+    for (const bool lod : {true, false}) {
+        CAPTURE(lod);
+        const Image image = lod ? render(scene, "grass.lod", values) : render(scene, "grass.geometry", {{"samples", 4LL}});
+        const float* sky = image.at(80, 1);  // the top row looks 16 degrees above the horizon
+        for (int c = 0; c < 3; ++c) CHECK(sky[c] == doctest::Approx(scene.background[c]).epsilon(1e-3));
+    }
+}
