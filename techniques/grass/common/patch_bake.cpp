@@ -60,6 +60,12 @@ shader::PatchBake ortho_bake(const Bounds& bounds, BakeView view, bool tiled) {
     return bake;
 }
 
+float bake_section_start(const Bounds& frame, int axis, uint32_t k, uint32_t n, bool tiled) {
+    if (k == 0 && !tiled) return -1e30f;
+    if (k == n && !tiled) return 1e30f;
+    return frame.min[axis] + (frame.max[axis] - frame.min[axis]) / float(n) * float(k);
+}
+
 const GeneratedPopulation* first_grass(std::span<const GeneratedPopulation> populations) {
     for (const GeneratedPopulation& p : populations)
         if (p.kind == kGrassPopulationKind) return &p;

@@ -7,6 +7,7 @@
 
 #include "../shaders/patch_bake.h"
 
+#include <cstdint>
 #include <span>
 
 namespace canopy::grass {
@@ -30,6 +31,12 @@ Bounds cell_frame(const Bounds& bounds);
 // The camera framing bake_frame(bounds) (patch space), or, `tiled`, cell_frame(bounds) with the
 // patch's 8 neighbours drawn too.
 shader::PatchBake ortho_bake(const Bounds& bounds, BakeView view, bool tiled = false);
+
+// Where section k of n along `axis` (0 x, 2 z) of the baked frame begins; k = n is where the last
+// ends. Tiled, the sections split the cell exactly: what lies beyond is a neighbouring copy's,
+// which that cell's own slices show. Alone, the outer sections reach past the frame (+-1e30), so a
+// blade on its edge belongs to one of them.
+float bake_section_start(const Bounds& frame, int axis, uint32_t k, uint32_t n, bool tiled);
 
 // What a bake frames: cell_frame(bounds) when tiled, else bake_frame(bounds).
 inline Bounds baked_frame(const Bounds& bounds, bool tiled) { return tiled ? cell_frame(bounds) : bake_frame(bounds); }

@@ -52,15 +52,6 @@ std::vector<SliceBake> slice_bakes(uint32_t n, const std::string& prefix) {
     return bakes;
 }
 
-// Where section k of n begins along `axis` of the frame. Baked with its neighbours, the sections
-// end at the cell's sides: what lies beyond is a neighbouring cell's, drawn by its own slices.
-// Alone, the outer sections reach past the frame, so a blade on its edge belongs to one of them.
-float section_start(const Bounds& f, int axis, uint32_t k, uint32_t n, bool tiled) {
-    if (k == 0 && !tiled) return -1e30f;
-    if (k == n && !tiled) return 1e30f;
-    return f.min[axis] + (f.max[axis] - f.min[axis]) * float(k) / float(n);
-}
-
 // The camera of one bake: looking along -axis for the front side, along +axis for the back (the
 // same image coordinates, depth reversed), keeping the slice's section.
 shader::PatchBake slice_camera(const Bounds& bounds, const SliceBake& b, uint32_t n, bool tiled) {
@@ -68,7 +59,7 @@ shader::PatchBake slice_camera(const Bounds& bounds, const SliceBake& b, uint32_
     const Bounds f = baked_frame(bounds, tiled);
     const int axis = b.axis == 0 ? 0 : 2;
     shader::PatchBake bake = ortho_bake(bounds, b.axis == 0 ? BakeView::along_x : BakeView::along_z, tiled);
-    const float lo = section_start(f, axis, b.section, n, tiled), hi = section_start(f, axis, b.section + 1, n, tiled);
+    const float lo = bake_section_start(f, axis, b.section, n, tiled), hi = bake_section_start(f, axis, b.section + 1, n, tiled);
     bake.section = glm::vec4(lo, hi, 0.0f, 0.0f);
     if (b.side == 1) {
         bake.view_proj[axis][2] = -bake.view_proj[axis][2];

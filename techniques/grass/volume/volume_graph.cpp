@@ -59,12 +59,8 @@ shader::PatchBake slice_camera(const Bounds& bounds, const SliceBake& slice, uin
     const Bounds f = baked_frame(bounds, tiled);
     shader::PatchBake bake = ortho_bake(bounds, slice.view, tiled);
     const int axis = slice.view == BakeView::along_x ? 0 : 2;
-    const float width = (f.max[axis] - f.min[axis]) / float(n);
-    // Alone, the outer sections reach past the frame, so a blade on its edge belongs to one of
-    // them. Tiled, they end at the cell's sides: what lies beyond is a neighbouring copy's, which
-    // that cell's own slices show (else its blades would show twice, in front of the cell).
-    bake.section.x = slice.section == 0 && !tiled ? -1e30f : f.min[axis] + width * float(slice.section);
-    bake.section.y = slice.section + 1 == n && !tiled ? 1e30f : f.min[axis] + width * float(slice.section + 1);
+    bake.section.x = bake_section_start(f, axis, slice.section, n, tiled);
+    bake.section.y = bake_section_start(f, axis, slice.section + 1, n, tiled);
     return bake;
 }
 
