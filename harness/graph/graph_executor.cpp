@@ -125,6 +125,14 @@ public:
         for (const std::string& b : vertex_buffers) buffers.push_back(ex_.resources_->buffer(b).handle());
         ex_.scene_.draw_over_population(commands_, binding().layout, name, buffers, vertex_count);
     }
+    void draw_over_population_indirect(const std::string& name, std::span<const std::string> vertex_buffers,
+                                       const std::string& copies, const std::string& arguments) override {
+        std::vector<VkBuffer> buffers;
+        for (const std::string& b : vertex_buffers) buffers.push_back(ex_.resources_->buffer(b).handle());
+        ex_.scene_.draw_over_population_indirect(commands_, binding().layout, name, buffers,
+                                                 ex_.resources_->buffer(copies).handle(),
+                                                 ex_.resources_->buffer(arguments).handle());
+    }
     void draw(std::span<const std::string> vertex_buffers, uint32_t vertex_count, uint32_t instance_count) override {
         bind_vertex_buffers(vertex_buffers);
         vkCmdDraw(commands_, vertex_count, instance_count, 0, 0);

@@ -61,6 +61,11 @@ public:
     // (VertexLayout::population_copies); pushes DrawConstants like draw_population.
     virtual void draw_over_population(const std::string& name, std::span<const std::string> vertex_buffers,
                                       uint32_t vertex_count) = 0;
+    // The same geometry drawn over the copies in the technique's buffer `copies` (PopulationInstance
+    // records, e.g. a cull's survivors), its vertex and instance counts read from the technique's
+    // buffer `arguments` (one VkDrawIndirectCommand a GPU pass wrote): no readback.
+    virtual void draw_over_population_indirect(const std::string& name, std::span<const std::string> vertex_buffers,
+                                               const std::string& copies, const std::string& arguments) = 0;
     // Geometry the technique owns: vertex buffers bound in the pipeline's binding order.
     virtual void draw(std::span<const std::string> vertex_buffers, uint32_t vertex_count, uint32_t instance_count) = 0;
     virtual void draw_indexed(std::span<const std::string> vertex_buffers, const std::string& index_buffer,

@@ -149,6 +149,20 @@ void GpuScene::draw_over_population(VkCommandBuffer commands, VkPipelineLayout l
     vkCmdDraw(commands, vertex_count, d.instance_count, 0, 0);
 }
 
+void GpuScene::draw_over_population_indirect(VkCommandBuffer commands, VkPipelineLayout layout,
+                                             const std::string& name, std::span<const VkBuffer> vertex_buffers,
+                                             VkBuffer copies, VkBuffer arguments) const {
+    const PopulationDraw& d = population_draw(name);
+    if (d.instance_count == 0) return;
+    std::vector<VkBuffer> buffers(vertex_buffers.begin(), vertex_buffers.end());
+    buffers.push_back(copies);
+    const std::vector<VkDeviceSize> offsets(buffers.size(), 0);
+    vkCmdBindVertexBuffers(commands, 0, uint32_t(buffers.size()), buffers.data(), offsets.data());
+    vkCmdPushConstants(commands, layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+                       sizeof(DrawConstants), &d.draw.constants);
+    vkCmdDrawIndirect(commands, arguments, 0, 1, sizeof(VkDrawIndirectCommand));
+}
+
 const GpuScene::PopulationDraw& GpuScene::population_draw(const std::string& name) const {
     for (size_t i = 0; i < populations_.size(); ++i)
         if (populations_[i].name == name) return population_draws_[i];

@@ -56,6 +56,11 @@ public:
     // drawn once per copy of population `name`, its PopulationInstance records at binding n.
     void draw_over_population(VkCommandBuffer commands, VkPipelineLayout layout, const std::string& name,
                               std::span<const VkBuffer> vertex_buffers, uint32_t vertex_count) const;
+    // PassContext::draw_over_population_indirect: `copies` at binding n, one VkDrawIndirectCommand
+    // in `arguments`.
+    void draw_over_population_indirect(VkCommandBuffer commands, VkPipelineLayout layout, const std::string& name,
+                                       std::span<const VkBuffer> vertex_buffers, VkBuffer copies,
+                                       VkBuffer arguments) const;
 
 private:
     struct PopulationDraw {

@@ -6,66 +6,104 @@
 
 #include "../shaders/grass_culling.h"
 
+#include "shaders/grass/grass_cull_comp.h"
+
 #include <algorithm>
+#include <array>
+#include <fmt/format.h>
 
 namespace canopy::grass {
 
-void declare_grass_cull(FrameGraph& g, std::span<const uint32_t> cull_spirv) {
-    using namespace cull_names;
-    g.buffers.push_back({.name = kCull, .bytes = sizeof(shader::GrassCull), .usage = kUniformBuffer, .persistent = true});
-    g.buffers.push_back({.name = kCopies, .bytes_per_copy = sizeof(PopulationInstance), .usage = kStorageBuffer,
+void declare_grass_cull(FrameGraph& g, const std::vector<CullBand>& bands) {
+    g.buffers.push_back({.name = kCullCopies, .bytes_per_copy = sizeof(PopulationInstance), .usage = kStorageBuffer,
                          .persistent = true});
-    g.buffers.push_back({.name = kSurvivors, .bytes_per_copy = sizeof(PopulationInstance),
-                         .usage = kStorageBuffer | kVertexBuffer});
-    g.buffers.push_back({.name = kArguments, .bytes = sizeof(VkDrawIndexedIndirectCommand),
-                         .usage = kStorageBuffer | kIndirectBuffer});
-
     PassDecl setup{.name = "cull_setup", .kind = PassKind::copy, .phase = Phase::load};
-    setup.uses = {use(kCull, Use::transfer_write), use(kCopies, Use::transfer_write)};
+    setup.uses = {use(kCullCopies, Use::transfer_write)};
     setup.settings = "the first grass population's copies";
-    setup.record = [](PassContext& pc) {
+    for (const CullBand& band : bands) {
+        const CullNames names(band.prefix);
+        g.buffers.push_back({.name = names.block, .bytes = sizeof(shader::GrassCull), .usage = kUniformBuffer,
+                             .persistent = true});
+        g.buffers.push_back({.name = names.survivors, .bytes_per_copy = sizeof(PopulationInstance),
+                             .usage = kStorageBuffer | kVertexBuffer});
+        g.buffers.push_back({.name = names.arguments, .bytes = sizeof(VkDrawIndexedIndirectCommand),
+                             .usage = kStorageBuffer | kIndirectBuffer});
+        setup.uses.push_back(use(names.block, Use::transfer_write));
+    }
+    setup.record = [bands](PassContext& pc) {
         const GeneratedPopulation* grass = first_grass(pc.populations());
-        shader::GrassCull cull{};
-        if (grass && !grass->instances.empty()) {
-            const Bounds bounds = prototype_bounds(grass);
-            const VkDrawIndexedIndirectCommand draw = pc.population_draw_arguments(grass->name);
-            cull.box_min = glm::vec4(bounds.min, 0.0f);
-            cull.box_max = glm::vec4(bounds.max, 0.0f);
-            cull.draw = glm::uvec4(draw.indexCount, draw.firstIndex, uint32_t(draw.vertexOffset), draw.instanceCount);
-            pc.upload(kCopies, grass->instances.data(), grass->instances.size() * sizeof(PopulationInstance));
+        const bool any = grass && !grass->instances.empty();
+        if (any) pc.upload(kCullCopies, grass->instances.data(), grass->instances.size() * sizeof(PopulationInstance));
+        for (const CullBand& band : bands) {
+            shader::GrassCull cull{};
+            if (any) {
+                const Bounds bounds = prototype_bounds(grass);
+                cull.box_min = glm::vec4(bounds.min, 0.0f);
+                cull.box_max = glm::vec4(bounds.max, 0.0f);
+                if (band.vertex_count == 0) {
+                    const VkDrawIndexedIndirectCommand draw = pc.population_draw_arguments(grass->name);
+                    cull.draw = glm::uvec4(draw.indexCount, draw.firstIndex, uint32_t(draw.vertexOffset), draw.instanceCount);
+                } else {
+                    // (vertex count, 0, 0): the record's first words read as a VkDrawIndirectCommand.
+                    cull.draw = glm::uvec4(band.vertex_count, 0u, 0u, uint32_t(grass->instances.size()));
+                }
+                cull.distances = glm::vec4(band.min_distance, band.max_distance, 0.0f, 0.0f);
+            }
+            pc.upload(CullNames(band.prefix).block, &cull, sizeof(cull));
         }
-        pc.upload(kCull, &cull, sizeof(cull));
     };
     g.passes.push_back(std::move(setup));
 
-    PassDecl cull{.name = "cull", .kind = PassKind::compute};
-    cull.uses = {use(graph_names::kFrameUniforms, Use::uniform, 0), use(kCull, Use::uniform, 1),
-                 use(kCopies, Use::storage_read, 2), use(kSurvivors, Use::storage_write, 3),
-                 use(kArguments, Use::storage_write, 4)};
-    cull.settings = "frustum and distance, one invocation per copy";
-    cull.record = [spirv = cull_spirv](PassContext& pc) {  // the generated SPIR-V is static
-        const GeneratedPopulation* grass = first_grass(pc.populations());
-        // The count restarts at 0 by a fill before the dispatch, not by a barrier inside a workgroup.
-        pc.fill(kArguments, 0);
-        const uint32_t copies = grass ? uint32_t(grass->instances.size()) : 0;
-        pc.dispatch(pc.compute_pipeline(spirv), std::max(1u, (copies + 63) / 64), 1, 1);
-    };
-    g.passes.push_back(std::move(cull));
+    for (const CullBand& band : bands) {
+        const CullNames names(band.prefix);
+        PassDecl cull{.name = names.pass, .kind = PassKind::compute};
+        cull.uses = {use(graph_names::kFrameUniforms, Use::uniform, 0), use(names.block, Use::uniform, 1),
+                     use(kCullCopies, Use::storage_read, 2), use(names.survivors, Use::storage_write, 3),
+                     use(names.arguments, Use::storage_write, 4)};
+        cull.settings = band.max_distance > 0.0f || band.min_distance > 0.0f
+                            ? fmt::format("frustum, boxes within {}-{}, one invocation per copy", band.min_distance,
+                                          band.max_distance > 0.0f ? fmt::format("{}", band.max_distance) : "any")
+                            : "frustum, one invocation per copy";
+        cull.record = [arguments = names.arguments](PassContext& pc) {
+            const GeneratedPopulation* grass = first_grass(pc.populations());
+            // The count restarts at 0 by a fill before the dispatch, not by a barrier inside a workgroup.
+            pc.fill(arguments, 0);
+            const uint32_t copies = grass ? uint32_t(grass->instances.size()) : 0;
+            pc.dispatch(pc.compute_pipeline(grass_cull_comp), std::max(1u, (copies + 63) / 64), 1, 1);
+        };
+        g.passes.push_back(std::move(cull));
+    }
 }
 
-void use_cull_survivors(PassDecl& pass) {
-    pass.uses.push_back(use(cull_names::kSurvivors, Use::vertex));
-    pass.uses.push_back(use(cull_names::kArguments, Use::indirect));
+void use_cull_survivors(PassDecl& pass, const std::string& prefix) {
+    const CullNames names(prefix);
+    pass.uses.push_back(use(names.survivors, Use::vertex));
+    pass.uses.push_back(use(names.arguments, Use::indirect));
 }
 
-void draw_populations_culled(PassContext& pc) {
+void draw_populations_culled(PassContext& pc, const std::string& prefix) {
+    const CullNames names(prefix);
     const GeneratedPopulation* first = first_grass(pc.populations());
     for (const GeneratedPopulation& population : pc.populations()) {
         // The cull covers the first grass population; others are drawn whole.
         if (&population == first)
-            pc.draw_population_indirect(population.name, cull_names::kSurvivors, cull_names::kArguments);
+            pc.draw_population_indirect(population.name, names.survivors, names.arguments);
         else
             pc.draw_population(population.name);
+    }
+}
+
+void record_copies_culled(PassContext& pc, const RasterState& over, const std::string& vertex_buffer,
+                          uint32_t vertex_count, const std::string& prefix) {
+    const CullNames names(prefix);
+    pc.bind(pc.raster_pipeline(over));
+    const std::array<std::string, 1> buffers{vertex_buffer};
+    const GeneratedPopulation* first = first_grass(pc.populations());
+    for (const GeneratedPopulation& population : pc.populations()) {
+        if (&population == first)
+            pc.draw_over_population_indirect(population.name, buffers, names.survivors, names.arguments);
+        else
+            pc.draw_over_population(population.name, buffers, vertex_count);
     }
 }
 

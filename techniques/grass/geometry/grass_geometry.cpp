@@ -12,7 +12,6 @@
 
 #include "shaders/grass/grass_blades_frag.h"
 #include "shaders/grass/grass_blades_vert.h"
-#include "shaders/grass/grass_cull_comp.h"
 
 #include <fmt/format.h>
 
@@ -52,7 +51,9 @@ public:
         g.report["coverage"] = to_coverage ? "alpha-to-coverage" : "alpha-test";
         g.report["samples"] = std::to_string(samples);
         g.report["culling"] = culled ? (max_distance > 0.0f ? fmt::format("gpu, within {}", max_distance) : "gpu") : "none";
-        if (culled) grass::declare_grass_cull(g, grass_cull_comp);
+        // Read only by the cull: without it, the report (and the pass's settings) say the value was unused.
+        if (!culled && max_distance > 0.0f) g.report["culling"] = fmt::format("none (max_distance {} unused)", max_distance);
+        if (culled) grass::declare_grass_cull(g, {{.max_distance = max_distance}});
 
         const std::array<float, 4> background{0.0f, 0.0f, 0.0f, 1.0f};
         PassDecl blades{.name = "blades", .kind = PassKind::raster};

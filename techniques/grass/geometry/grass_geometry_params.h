@@ -12,7 +12,7 @@
            "how the blade outline cuts: a hard alpha test, or a smooth alpha turned into sample coverage")  \
     PLAN(choice, culling, ("none", {"none", "gpu"}),                                                        \
          "none: every cell's copy is drawn; gpu: a compute pass keeps the copies whose box may be seen (and within max_distance) and writes the draw's instance count") \
-    SHADER(real, max_distance, (0.0, 0.0, 1e6),                                                                \
+    PLAN(real, max_distance, (0.0, 0.0, 1e6),                                                                  \
          "culling = gpu: copies whose box lies farther than this from the eye are not drawn (world units; 0: no limit)")
 
 CANOPY_BEGIN_NAMESPACE

@@ -3,6 +3,7 @@
 #include "graph/pass_context.hpp"
 #include "render/frame_uniforms.hpp"
 
+#include "../common/grass_cull.hpp"
 #include "../common/grass_passes.hpp"
 #include "../common/grass_population.hpp"
 #include "../common/macro_passes.hpp"
@@ -100,6 +101,7 @@ PassDecl image_frame_pass(const ImageSettings& s, const RasterState& per_cell, b
     const std::optional<RasterState> objects = ground ? std::optional<RasterState>(ground_state()) : std::nullopt;
     if (macro > 0) {
         if (!objects) throw std::logic_error("image_frame_pass: macro-cells draw the ground in their pass");
+        if (s.culled_by) throw std::logic_error("image_frame_pass: macro-cells are not culled");
         frame.uses.push_back(use(macro_names::kField, Use::uniform, 3));
         frame.uses.push_back(use(macro_names::kCells, Use::storage_read, 4));
         frame.uses.push_back(use(macro_names::kMacros, Use::vertex));
@@ -114,10 +116,14 @@ PassDecl image_frame_pass(const ImageSettings& s, const RasterState& per_cell, b
     } else {
         RasterState slice = per_cell;
         slice.vertices = quad_layout();
-        frame.settings = "one quad per cell";
-        frame.record = [objects, slice, quad = names.quad](PassContext& pc) {
+        frame.settings = s.culled_by ? "one quad per cell the cull keeps" : "one quad per cell";
+        if (s.culled_by) use_cull_survivors(frame, *s.culled_by);
+        frame.record = [objects, slice, quad = names.quad, culled_by = s.culled_by](PassContext& pc) {
             if (objects) record_ground(pc, *objects);
-            record_copies(pc, slice, quad, 6);
+            if (culled_by)
+                record_copies_culled(pc, slice, quad, kImageCellVertices, *culled_by);
+            else
+                record_copies(pc, slice, quad, kImageCellVertices);
         };
     }
     return frame;

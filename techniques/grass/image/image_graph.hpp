@@ -7,6 +7,7 @@
 #include "graph/raster_state.hpp"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,7 +18,13 @@ struct ImageSettings {
     float slice_height = 0.1f;   // a fraction of the patch's tallest blade
     uint32_t macro_cells = 0;    // 0: a quad per cell; k: per k x k macro-cell
     std::string prefix;          // before every resource and pass name ("" for grass.image)
+    // The frame pass draws the copies the cull of this prefix kept (grass_cull.hpp), not all
+    // (per-cell quads only).
+    std::optional<std::string> culled_by;
 };
+
+// The vertices the frame pass draws per cell (a cull drawing them needs it).
+inline constexpr uint32_t kImageCellVertices = 6;
 
 // The bake's images and buffers and the load-phase passes that fill them.
 void declare_image_bake(FrameGraph& g, const ImageSettings& s);

@@ -16,12 +16,12 @@
 #include "../common/grass_passes.hpp"
 #include "../common/grass_population.hpp"
 #include "../image/image_graph.hpp"
+#include "../shaders/lod_selection.h"
 #include "../slices/slices_graph.hpp"
 #include "../volume/volume_graph.hpp"
 
 #include "shaders/grass/grass_lod_blades_frag.h"
 #include "shaders/grass/grass_lod_blades_vert.h"
-#include "shaders/grass/grass_lod_cull_comp.h"
 #include "shaders/grass/grass_lod_image_frag.h"
 #include "shaders/grass/grass_lod_image_vert.h"
 #include "shaders/grass/grass_lod_slices_frag.h"
@@ -85,18 +85,22 @@ public:
         const auto block = shader::GrassLodParams::from(params);
         const uint32_t samples = uint32_t(params.integer("samples"));
         const bool to_coverage = block.coverage == shader::GRASS_COVERAGE_ALPHA_TO_COVERAGE;
+        const bool gpu_culled = params.choice("culling") == "gpu";
         const grass::VolumeSettings volume{.slices = uint32_t(block.slices),
                                            .resolution = uint32_t(params.integer("resolution")),
                                            .height_resolution = uint32_t(params.integer("height_resolution")),
-                                           .prefix = "volume_"};
+                                           .prefix = "volume_",
+                                           .culled_by = gpu_culled ? std::optional<std::string>("middle_") : std::nullopt};
         const bool btf = params.choice("middle") == "slices";
         const grass::SlicesSettings slices{.slices = uint32_t(block.slices),
                                            .resolution = uint32_t(params.integer("resolution")),
                                            .height_resolution = uint32_t(params.integer("height_resolution")),
-                                           .prefix = "middle_"};
+                                           .prefix = "middle_",
+                                           .culled_by = gpu_culled ? std::optional<std::string>("middle_") : std::nullopt};
         const grass::ImageSettings image{.resolution = uint32_t(params.integer("image_resolution")),
                                          .slice_height = float(params.real("slice_height")),
-                                         .prefix = "image_"};
+                                         .prefix = "image_",
+                                         .culled_by = gpu_culled ? std::optional<std::string>("far_") : std::nullopt};
         FrameGraph g;
         g.needs.populations = {grass::kGrassPopulationKind};
         g.shader_params.set_block(block);
@@ -105,9 +109,22 @@ public:
                                         block.image_start, block.image_full);
         g.report["coverage"] = to_coverage ? "alpha-to-coverage" : "alpha-test";
         g.report["samples"] = std::to_string(samples);
-        const bool culled = params.choice("culling") == "gpu";
-        g.report["culling"] = culled ? "gpu, near band within geometry_none" : "none";
-        if (culled) grass::declare_grass_cull(g, grass_lod_cull_comp);
+        const bool culled = gpu_culled;
+        g.report["culling"] = culled ? "gpu, each band's copies within its distances" : "none";
+        if (culled) {
+            // One cull per band, to the distances outside which its share of a cell is nothing.
+            const auto band = [&](int representation, std::string prefix, uint32_t vertices) {
+                const shader::vec2 d = shader::lod_band_distances(representation, block.geometry_full, block.geometry_none,
+                                                                  block.image_start, block.image_full);
+                return grass::CullBand{.prefix = std::move(prefix), .min_distance = d.x,
+                                       .max_distance = d.y >= shader::LOD_NO_DISTANCE ? 0.0f : d.y,
+                                       .vertex_count = vertices};
+            };
+            grass::declare_grass_cull(
+                g, {band(shader::GRASS_LOD_GEOMETRY, "", 0),
+                    band(shader::GRASS_LOD_VOLUME, "middle_", btf ? grass::slices_cell_vertices(slices) : grass::kVolumeCellVertices),
+                    band(shader::GRASS_LOD_IMAGE, "far_", grass::kImageCellVertices)});
+        }
         if (samples > 1) {
             g.images.push_back({.name = "msaa_color", .format = kColorFormat, .extent = ImageExtent::screen(),
                                 .samples = samples});

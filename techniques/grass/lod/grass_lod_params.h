@@ -18,7 +18,7 @@
            "distance from which a cell is all image (maxBTF; Lemme's 8-slice level 1 ends at 80 m)")       \
     PLAN(integer, samples, (4, 1, 4), "MSAA samples of every band's pass: 1 or 4 (lavapipe's)")             \
     PLAN(choice, culling, ("gpu", {"none", "gpu"}),                                                         \
-         "gpu: a compute pass keeps for the near band only the copies whose box may be seen within geometry_none (grass.geometry's cull; the image is the same); none: every copy's blades go through the vertex stage") \
+         "gpu: a compute pass per band keeps the copies whose box may be seen within the distances where that band draws anything (near to geometry_none, middle from geometry_full to image_full, far from image_start; grass.geometry's cull; the image is the same); none: every band draws every copy") \
     SHADER(choice, coverage, ("alpha_to_coverage", {"alpha_test", "alpha_to_coverage"}),                    \
            "how the near band's blade outline cuts (grass.geometry's coverage)")                          \
     PLAN(choice, middle, ("volume", {"volume", "slices"}),                                                    \

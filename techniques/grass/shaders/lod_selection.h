@@ -118,6 +118,18 @@ CANOPY_FN vec2 lod_band(int representation, vec2 cuts) {
     return vec2(cuts.y, 1.0f);
 }
 
+// The distances of a cell's centre beyond which a representation's band is empty, whatever the
+// thresholds (lo, hi; hi = LOD_NO_DISTANCE: none): the geometry's to geometry_none, the volume's
+// from geometry_full to image_full, the image's from image_start (c2 < 1 only past image_start).
+// grass.lod culls each band's copies to these, so no pass draws a cell whose share is nothing.
+CANOPY_CONST float LOD_NO_DISTANCE = 3.0e38f;
+CANOPY_FN vec2 lod_band_distances(int representation, float geometry_full, float geometry_none, float image_start,
+                                  float image_full) {
+    if (representation == GRASS_LOD_GEOMETRY) return vec2(0.0f, geometry_none);
+    if (representation == GRASS_LOD_VOLUME) return vec2(geometry_full, image_full);
+    return vec2(image_start, LOD_NO_DISTANCE);
+}
+
 CANOPY_END_NAMESPACE
 
 #endif

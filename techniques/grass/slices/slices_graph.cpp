@@ -3,6 +3,7 @@
 #include "graph/pass_context.hpp"
 #include "render/frame_uniforms.hpp"
 
+#include "../common/grass_cull.hpp"
 #include "../common/grass_passes.hpp"
 #include "../common/grass_population.hpp"
 #include "../common/patch_bake.hpp"
@@ -173,11 +174,16 @@ PassDecl slices_frame_pass(const SlicesSettings& s, const RasterState& per_cell,
     const std::optional<RasterState> objects = ground ? std::optional<RasterState>(ground_state()) : std::nullopt;
     RasterState slices = per_cell;
     slices.vertices = quad_layout();
-    const uint32_t vertices = 6 * (2 * s.slices + 1);
-    frame.settings = fmt::format("{} vertical and 1 horizontal quads per cell", 2 * s.slices);
-    frame.record = [objects, slices, vertices, quads = names.quads](PassContext& pc) {
+    const uint32_t vertices = slices_cell_vertices(s);
+    frame.settings = fmt::format("{} vertical and 1 horizontal quads per cell{}", 2 * s.slices,
+                                 s.culled_by ? " the cull keeps" : "");
+    if (s.culled_by) use_cull_survivors(frame, *s.culled_by);
+    frame.record = [objects, slices, vertices, quads = names.quads, culled_by = s.culled_by](PassContext& pc) {
         if (objects) record_ground(pc, *objects);
-        record_copies(pc, slices, quads, vertices);
+        if (culled_by)
+            record_copies_culled(pc, slices, quads, vertices, *culled_by);
+        else
+            record_copies(pc, slices, quads, vertices);
     };
     return frame;
 }

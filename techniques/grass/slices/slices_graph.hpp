@@ -8,6 +8,7 @@
 #include "graph/raster_state.hpp"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,7 +21,12 @@ struct SlicesSettings {
     float slice_height = 0.1f;        // the horizontal slice's height, a fraction of the tallest blade
     bool neighbours = true;           // bake the patch with its 8 neighbours, cut to the cell
     std::string prefix;               // before every resource and pass name ("" for grass.slices)
+    // The frame pass draws the copies the cull of this prefix kept (grass_cull.hpp), not all.
+    std::optional<std::string> culled_by;
 };
+
+// The vertices the frame pass draws per cell: 2n vertical quads and the horizontal one.
+inline uint32_t slices_cell_vertices(const SlicesSettings& s) { return 6 * (2 * s.slices + 1); }
 
 // The slices' images, the quads that show them and the load-phase passes that bake them: one pass
 // per vertical slice and side (front: seen from +axis; back: from -axis) and one for the

@@ -173,28 +173,40 @@ TEST_CASE("grass.lod: a field in all three bands renders finite, covering as the
     CHECK(max_difference(lod, image) > 0.1f);
 }
 
-TEST_CASE("grass.lod: culling the near band's copies to geometry_none changes no pixel and drops the far cells") {
+TEST_CASE("grass.lod: culling each band's copies to its distances changes no pixel and drops cells from every band") {
     const Scene scene = field_scene();
-    // Cells 1-5 m away (centres): blades to 1.5-2.5 m.
-    Values values = lod_values(1.5, 2.5, 3.0, 4.0);
-    values["culling"] = std::string("none");
-    const Image whole = render(scene, "grass.lod", values);
-    values["culling"] = std::string("gpu");
     const Technique* t = TechniqueRegistry::instance().find("grass.lod");
     REQUIRE(t);
-    FrameRenderer renderer(test::gpu(), scene, build_scene_meshes(scene), 160, 96,
-                           t->graph(ParamSet::resolve(t->params(), values, {}, {}, "grass.lod")));
-    renderer.render();
-    CHECK(max_difference(renderer.read_color(), whole) <= 1e-5f);
-    CHECK(grass::test::grass_pixels(whole) > 1000);
-    // The survivors: the cells whose box comes within 2.5 m of the eye, fewer than the 9.
-    const std::vector<std::byte> bytes = renderer.read_buffer("draw_arguments");
-    REQUIRE(bytes.size() >= sizeof(VkDrawIndexedIndirectCommand));
-    VkDrawIndexedIndirectCommand draw;
-    std::memcpy(&draw, bytes.data(), sizeof(draw));
-    CAPTURE(draw.instanceCount);
-    CHECK(draw.instanceCount >= 1);
-    CHECK(draw.instanceCount < 9);
+    for (const std::string middle : {"volume", "slices"}) {
+        CAPTURE(middle);
+        // Cells' centres 2.2-4.6 m away, their boxes' points 1.7-5 m: blades to 2-2.6 m, the middle band
+        // 2-3.4 m, the image from 3 m; the first row is too near for the image, the last too far
+        // for the middle band and the blades.
+        Values values = lod_values(2.0, 2.6, 3.0, 3.4);
+        values["middle"] = middle;
+        values["culling"] = std::string("none");
+        const Image whole = render(scene, "grass.lod", values);
+        values["culling"] = std::string("gpu");
+        FrameRenderer renderer(test::gpu(), scene, build_scene_meshes(scene), 160, 96,
+                               t->graph(ParamSet::resolve(t->params(), values, {}, {}, "grass.lod")));
+        renderer.render();
+        CHECK(max_difference(renderer.read_color(), whole) <= 1e-5f);
+        CHECK(grass::test::grass_pixels(whole) > 1000);
+        // Each band's survivors: some of the 9 cells, not all.
+        uint32_t total = 0;
+        for (const std::string arguments : {"draw_arguments", "middle_draw_arguments", "far_draw_arguments"}) {
+            CAPTURE(arguments);
+            const std::vector<std::byte> bytes = renderer.read_buffer(arguments);
+            REQUIRE(bytes.size() >= sizeof(VkDrawIndexedIndirectCommand));
+            VkDrawIndexedIndirectCommand draw;
+            std::memcpy(&draw, bytes.data(), sizeof(draw));
+            CAPTURE(draw.instanceCount);
+            CHECK(draw.instanceCount >= 1);
+            CHECK(draw.instanceCount < 9);
+            total += draw.instanceCount;
+        }
+        CHECK(total < 27);
+    }
 }
 
 TEST_CASE("grass.lod: with MSAA, where nothing is drawn the frame shows the scene's background") {

@@ -176,3 +176,35 @@ TEST_CASE("grass.lod's bands: all blades near, all volume between the transition
         for (float th : thresholds())
             REQUIRE(shader::grass_blade_in_band(th, ld, shader::vec2(0.0f, 1.0f)) == shader::grass_blade_drawn(th, ld));
 }
+
+TEST_CASE("grass.lod's bands: outside its cull distances a representation's band is empty (the cull drops nothing drawn)") {
+    struct Bands {
+        float geometry_full, geometry_none, image_start, image_full;
+    };
+    const std::vector<Bands> settings{{5, 20, 50, 80}, {5, 20, 20, 40}, {10, 10, 30, 30}, {0, 0, 0, 0}, {2, 2.5f, 3, 4}};
+    for (const Bands& b : settings)
+        for (int r : {shader::GRASS_LOD_GEOMETRY, shader::GRASS_LOD_VOLUME, shader::GRASS_LOD_IMAGE}) {
+            CAPTURE(b.geometry_full);
+            CAPTURE(b.image_start);
+            CAPTURE(r);
+            const shader::vec2 range =
+                shader::lod_band_distances(r, b.geometry_full, b.geometry_none, b.image_start, b.image_full);
+            REQUIRE(range.x <= range.y);
+            int inside_nonempty = 0;
+            for (float d = 0.0f; d <= 120.0f; d += 0.01f) {
+                const shader::vec2 band =
+                    shader::lod_band(r, shader::lod_cuts(d, b.geometry_full, b.geometry_none, b.image_start, b.image_full));
+                const bool empty = !(band.y > band.x);
+                if (d < range.x || d > range.y) {
+                    if (!empty) {
+                        CAPTURE(d);
+                        REQUIRE(empty);
+                    }
+                } else {
+                    inside_nonempty += empty ? 0 : 1;
+                }
+            }
+            // The ranges are not wider than they need be: where one has room, its band is drawn there.
+            if (range.y > range.x + 0.1f && range.x < 119.0f) CHECK(inside_nonempty > 0);
+        }
+}

@@ -3,6 +3,7 @@
 #include "graph/pass_context.hpp"
 #include "render/frame_uniforms.hpp"
 
+#include "../common/grass_cull.hpp"
 #include "../common/grass_passes.hpp"
 #include "../common/grass_population.hpp"
 #include "../common/macro_passes.hpp"
@@ -34,7 +35,7 @@ struct Names {
           box(p + "volume_box") {}
 };
 
-constexpr uint32_t kCuboidVertices = 36;
+constexpr uint32_t kCuboidVertices = kVolumeCellVertices;
 
 // Layers 0 .. n-1 hold the slices along x (planes x = const, baked looking along x), layers
 // n .. 2n-1 those along z: what grass_volume_fragment.glsl reads.
@@ -161,6 +162,7 @@ PassDecl volume_frame_pass(const VolumeSettings& s, const RasterState& per_cell,
     const std::optional<RasterState> objects = ground ? std::optional<RasterState>(ground_state()) : std::nullopt;
     if (macro > 0) {
         if (!objects) throw std::logic_error("volume_frame_pass: macro-cells draw the ground in their pass");
+        if (s.culled_by) throw std::logic_error("volume_frame_pass: macro-cells are not culled");
         frame.uses.push_back(use(macro_names::kField, Use::uniform, 3));
         frame.uses.push_back(use(macro_names::kCells, Use::storage_read, 4));
         frame.uses.push_back(use(macro_names::kMacros, Use::vertex));
@@ -176,10 +178,15 @@ PassDecl volume_frame_pass(const VolumeSettings& s, const RasterState& per_cell,
         frame.uses.insert(frame.uses.begin() + 3, use(names.box, Use::uniform, 3));
         RasterState volume = per_cell;
         volume.vertices = quad_layout();
-        frame.settings = "one cuboid per cell, its exit faces drawn";
-        frame.record = [objects, volume, cuboid = names.cuboid](PassContext& pc) {
+        frame.settings = s.culled_by ? "one cuboid per cell the cull keeps, its exit faces drawn"
+                                     : "one cuboid per cell, its exit faces drawn";
+        if (s.culled_by) use_cull_survivors(frame, *s.culled_by);
+        frame.record = [objects, volume, cuboid = names.cuboid, culled_by = s.culled_by](PassContext& pc) {
             if (objects) record_ground(pc, *objects);
-            record_copies(pc, volume, cuboid, kCuboidVertices);
+            if (culled_by)
+                record_copies_culled(pc, volume, cuboid, kCuboidVertices, *culled_by);
+            else
+                record_copies(pc, volume, cuboid, kCuboidVertices);
         };
     }
     return frame;

@@ -7,6 +7,7 @@
 #include "graph/raster_state.hpp"
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -19,7 +20,13 @@ struct VolumeSettings {
     uint32_t height_resolution = 64;  // texels up its height
     uint32_t macro_cells = 0;         // 0: a cuboid per cell; k: per k x k macro-cell
     std::string prefix;               // before every resource and pass name ("" for grass.volume)
+    // The frame pass draws the copies the cull of this prefix kept (grass_cull.hpp), not all
+    // (per-cell cuboids only).
+    std::optional<std::string> culled_by;
 };
+
+// The vertices the frame pass draws per cell: a cuboid's 12 triangles.
+inline constexpr uint32_t kVolumeCellVertices = 36;
 
 // The slices' images and buffers and the load-phase passes that bake them.
 void declare_volume_bake(FrameGraph& g, const VolumeSettings& s);

@@ -1,9 +1,12 @@
-// The GPU cull's body (common/grass_cull.hpp): one invocation per copy of the first grass
-// population; a copy that may be seen (grass_culling.h) within GRASS_CULL_MAX_DISTANCE (defined by
-// the including shader from its technique's parameters) is appended to the survivors, and the
-// draw's instance count grows by one (atomically). The arguments buffer was zeroed by a fill in
-// this pass before the dispatch; invocation 0 writes the draw's other fields, which no other
-// invocation touches. Include after frame_uniforms.glsl.
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// The grass GPU cull (common/grass_cull.hpp), grass.geometry's and each of grass.lod's bands': one
+// invocation per copy of the first grass population; a copy that may be seen within its block's
+// distances (grass_culling.h) is appended to the survivors, and the draw's instance count grows by
+// one (atomically). The arguments buffer was zeroed by a fill in this pass before the dispatch;
+// invocation 0 writes the draw's other fields, which no other invocation touches.
+#define FRAME_BINDING 0
+#include "frame_uniforms.glsl"
 #include "grass_culling.h"
 
 layout(local_size_x = 64) in;
@@ -35,7 +38,7 @@ void main() {
     }
     if (i >= cull.draw.w) return;
     if (!grass_cell_visible(frame.view_proj, frame.camera_position.xyz, copies[i].model, cull.box_min.xyz,
-                            cull.box_max.xyz, GRASS_CULL_MAX_DISTANCE))
+                            cull.box_max.xyz, cull.distances.x, cull.distances.y))
         return;
     uint slot = atomicAdd(arguments.instance_count, 1u);
     survivors[slot] = copies[i];
