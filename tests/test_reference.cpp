@@ -874,3 +874,18 @@ TEST_CASE("performance: 640x360 spheres reference and shadow-ray throughput" * d
                         bench.reference_rays_per_second * 1e-6, bench.bare_rays_per_second * 1e-6, bench.ratio));
     CHECK(bench.ratio >= 0.8);
 }
+
+TEST_CASE("reference: a directional light's shadow rays are finite segments reaching past the scene's bounds") {
+    Scene scene;
+    Light sun;
+    sun.type = LightType::directional;
+    sun.direction = {0.0f, -1.0f, 0.0f};
+    scene.lights.push_back(sun);
+    std::vector<PreparedLight> lights = prepare_lights(scene, 16, 1);
+    REQUIRE(lights.size() == 1);
+    CHECK(std::isinf(lights[0].shadow_reach));
+    limit_shadow_reach(lights, 7.5f);
+    CHECK(std::isfinite(lights[0].shadow_reach));
+    CHECK(lights[0].shadow_reach >= 15.0f);  // any two points of the scene lie within it
+    CHECK(lights[0].shadow_reach <= 15.1f);
+}

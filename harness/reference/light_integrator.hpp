@@ -61,7 +61,7 @@ LightEstimate integrate_light(const PreparedLight& light, const SurfacePoint& su
         if (light.type == LightType::directional) {
             irradiance = directional_irradiance(n, light.direction, light.power);
             direction = -light.direction;
-            t_far = std::numeric_limits<float>::infinity();
+            t_far = light.shadow_reach;
         } else {
             irradiance = point_irradiance(LIGHT_SPOT, p, n, light.position, light.direction, light.power,
                                           light.cos_half_angle);

@@ -81,6 +81,12 @@ void check_light_representable(const Light& light) {
                "use a spot light for a point emitter");
 }
 
+void limit_shadow_reach(std::vector<PreparedLight>& lights, float scene_radius) {
+    const float reach = 2.0f * scene_radius * 1.001f + 1e-3f;
+    for (PreparedLight& light : lights)
+        if (std::isfinite(reach) && reach > 0.0f) light.shadow_reach = reach;
+}
+
 std::vector<PreparedLight> prepare_lights(const Scene& scene, int area_samples, uint64_t seed) {
     std::vector<PreparedLight> prepared;
     prepared.reserve(scene.lights.size());

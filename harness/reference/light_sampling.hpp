@@ -16,6 +16,7 @@
 #include "scene/scene.hpp"
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace canopy {
@@ -30,6 +31,10 @@ struct PreparedLight {
     float sphere_radius = 0.0f;               // sphere
     bool casts_shadows = true;
     int sample_count = 1;                     // shadow rays per shading point
+    // Directional: how far a shadow ray goes. Nothing occludes beyond the scene's bounds, and a
+    // finite segment is what Embree is given: with tfar = inf, rtcOccluded16 was seen to loop
+    // forever, now and then, on one valid ray of a grass field (results/grass/speed-accuracy).
+    float shadow_reach = std::numeric_limits<float>::infinity();
     StratifiedPatterns patterns;              // area lights only
 };
 
@@ -40,6 +45,9 @@ void check_light_representable(const Light& light);
 // Checks and prepares every light of the scene, in scene order. `area_samples` is the number of
 // shadow rays per shading point for rect and sphere lights (point-like lights use one).
 std::vector<PreparedLight> prepare_lights(const Scene& scene, int area_samples, uint64_t seed);
+// Sets every light's shadow_reach for a scene whose geometry lies within a sphere of
+// `scene_radius` (EmbreeScene::extent): twice that and a margin for the rays' origin offset.
+void limit_shadow_reach(std::vector<PreparedLight>& lights, float scene_radius);
 
 // A packet's worth of samples towards an area light, structure-of-arrays so it vectorises.
 // Zeroed on construction, so no lane is ever left uninitialised (sample_area_light fills all 16).

@@ -21,6 +21,7 @@ PixelIntegrator::PixelIntegrator(const Scene& scene, const EmbreeScene& embree, 
       pixel_samples_(std::max(settings.pixel_samples, 1)),
       seed_(settings.seed) {
     check_camera_representable(scene);
+    limit_shadow_reach(lights_, embree.extent());
     camera_forward_ = glm::normalize(scene.camera.target - scene.camera.position);
     if (const Light* shadow_light = scene.shadow_light()) shadow_light_ = int(shadow_light - scene.lights.data());
 }

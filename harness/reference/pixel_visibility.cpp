@@ -31,7 +31,8 @@ PixelVisibilityRender render_pixel_visibility(const Scene& scene, const EmbreeSc
             fmt::format("render_pixel_visibility: light_samples ({}) must be >= 1", settings.light_samples));
     check_camera_representable(scene);
     const auto start = std::chrono::steady_clock::now();
-    const std::vector<PreparedLight> lights = prepare_lights(scene, settings.light_samples, settings.seed);
+    std::vector<PreparedLight> lights = prepare_lights(scene, settings.light_samples, settings.seed);
+    limit_shadow_reach(lights, embree.extent());
     const Light* shadow_light = scene.shadow_light();
     const PreparedLight* light = shadow_light ? &lights[size_t(shadow_light - scene.lights.data())] : nullptr;
     const Camera& camera = scene.camera;
