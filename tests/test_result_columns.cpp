@@ -132,3 +132,52 @@ TEST_CASE("results.md's table: the columns the list shows there, in its order") 
     CHECK(table[3].find("cull 1.250, lit 1.250") != std::string::npos);
     CHECK(table[3].find("96x64") != std::string::npos);
 }
+
+TEST_CASE("dominated_by: a case another beats significantly in time with no more FLIP, within a scene") {
+    RunRecord run;
+    run.frames_per_sample = 1;
+    const auto make = [&](const std::string& id, double ratio, double low, double high, double flip,
+                          const std::string& scene = "field") {
+        CaseResult c = timed_case(id, {"lit"}, {});
+        c.scene = scene;
+        c.ok = true;
+        c.technique = "grass." + id;
+        c.params_shown = "-";
+        c.group_baseline = id == "baseline";
+        if (!c.group_baseline) {
+            c.ratio.per_round = {ratio};
+            c.ratio.estimate.value = ratio;
+            c.ratio.estimate.ci = {low, high};
+        }
+        ImageMetrics m{};
+        m.flip_mean = flip;
+        c.image_error = m;
+        run.cases.push_back(c);
+    };
+    make("baseline", 1, 1, 1, 0.10);
+    make("fast", 0.5, 0.45, 0.55, 0.05);            // beats the baseline in both
+    make("overlapping", 0.52, 0.40, 0.60, 0.20);    // slower than "fast" only within the intervals: kept
+    make("slow", 2.0, 1.9, 2.1, 0.30);              // beaten by the baseline (the first that beats it)
+    make("slow_but_exact", 2.0, 1.9, 2.1, 0.01);    // the least error: kept
+    make("elsewhere", 3.0, 2.9, 3.1, 0.50, "other");  // another scene: nothing to compare with
+    const ResultColumn* column = nullptr;
+    for (const ResultColumn& c : result_columns())
+        if (c.name == "dominated_by") column = &c;
+    REQUIRE(column);
+    const auto csv = column->csv(run);
+    REQUIRE(csv.headers == std::vector<std::string>{"dominated_by"});
+    const auto cell = [&](size_t i) { return csv.cells(run.cases[i])[0]; };
+    CHECK(cell(0) == "\"fast\"");
+    CHECK(cell(1).empty());
+    CHECK(cell(2).empty());
+    CHECK(cell(3) == "\"baseline\"");
+    CHECK(cell(4).empty());
+    CHECK(cell(5).empty());
+    const auto markdown = column->markdown(run);
+    REQUIRE(markdown.headers.size() == 1);
+    CHECK(markdown.cells(run.cases[0])[0] == "grass.fast");
+    CHECK(markdown.cells(run.cases[1])[0] == "-");
+    // A failed case neither dominates nor is dominated.
+    run.cases[1].ok = false;
+    CHECK(column->csv(run).cells(run.cases[0])[0].empty());
+}

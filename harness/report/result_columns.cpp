@@ -6,6 +6,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
+#include <optional>
 #include <set>
 
 namespace canopy {
@@ -173,6 +175,61 @@ ResultColumn metric_family() {
     return column;
 }
 
+// Pareto dominance within a scene and resolution, on time and whole-image error: a case is
+// dominated by another that is significantly faster (its ratio's 95 % interval lies wholly below
+// this case's) and has no more FLIP. Conservative: a case as fast as another within the
+// intervals is never marked, however much more error it has. Both cases must be ok, timed
+// against a baseline and compared with a reference.
+struct TimeAndError {
+    Interval time;
+    double flip = 0;
+};
+std::optional<TimeAndError> time_and_error(const CaseResult& c) {
+    if (!c.ok || !c.image_error || !std::isfinite(c.image_error->flip_mean)) return std::nullopt;
+    if (c.ratio.measured()) return TimeAndError{c.ratio.estimate.ci, c.image_error->flip_mean};
+    if (c.group_baseline) return TimeAndError{Interval{1.0, 1.0}, c.image_error->flip_mean};
+    return std::nullopt;
+}
+
+// The first case that dominates `c`, or nullptr.
+const CaseResult* dominating_case(const RunRecord& run, const CaseResult& c) {
+    const std::optional<TimeAndError> mine = time_and_error(c);
+    if (!mine) return nullptr;
+    for (const CaseResult& other : run.cases) {
+        if (&other == &c || other.scene != c.scene || other.resolution.width != c.resolution.width ||
+            other.resolution.height != c.resolution.height)
+            continue;
+        const std::optional<TimeAndError> theirs = time_and_error(other);
+        if (theirs && theirs->time.high < mine->time.low && theirs->flip <= mine->flip) return &other;
+    }
+    return nullptr;
+}
+
+std::string case_label(const CaseResult& c) {
+    return c.params_shown.empty() || c.params_shown == "-" ? c.technique : c.technique + " " + c.params_shown;
+}
+
+ResultColumn dominance_column() {
+    ResultColumn column;
+    column.name = "dominated_by";
+    column.csv = [](const RunRecord& run) {
+        return CsvBound{{"dominated_by"}, [&run](const CaseResult& c) {
+                            const CaseResult* by = dominating_case(run, c);
+                            return Cells{by ? quoted(by->id) : ""};
+                        }};
+    };
+    column.markdown = [](const RunRecord& run) {
+        bool measured = false;
+        for (const CaseResult& c : run.cases) measured = measured || c.image_error.has_value();
+        if (!measured) return MarkdownBound{{}, [](const CaseResult&) { return Cells{}; }};
+        return MarkdownBound{{{"dominated by", false}}, [&run](const CaseResult& c) {
+                                 const CaseResult* by = dominating_case(run, c);
+                                 return Cells{by ? case_label(*by) : "-"};
+                             }};
+    };
+    return column;
+}
+
 std::vector<ResultColumn> make_columns() {
     using R = const RunRecord&;
     using C = const CaseResult&;
@@ -258,6 +315,7 @@ std::vector<ResultColumn> make_columns() {
     columns.push_back(csv_only("triangles", [](R, C c) { return std::to_string(c.triangles); }));
     columns.push_back(primitives_column());
     columns.push_back(csv_only("shadow_sampler", [](R, C c) { return quoted(c.shadow_sampler); }));
+    columns.push_back(dominance_column());
     columns.push_back(csv_only("nonfinite_pixels", [](R, C c) { return std::to_string(c.nonfinite_pixels); }));
     columns.push_back(metric_family());
     columns.push_back(markdown_only("status", {{"status", false}},
