@@ -94,8 +94,9 @@ void draw_populations_culled(PassContext& pc, const std::string& prefix) {
 }
 
 void record_copies_culled(PassContext& pc, const RasterState& over, const std::string& vertex_buffer,
-                          uint32_t vertex_count, const std::string& prefix) {
-    const CullNames names(prefix);
+                          uint32_t vertex_count, const std::optional<std::string>& culled_by) {
+    if (!culled_by) return record_copies(pc, over, vertex_buffer, vertex_count);
+    const CullNames names(*culled_by);
     pc.bind(pc.raster_pipeline(over));
     const std::array<std::string, 1> buffers{vertex_buffer};
     const GeneratedPopulation* first = first_grass(pc.populations());

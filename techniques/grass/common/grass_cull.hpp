@@ -47,9 +47,9 @@ void use_cull_survivors(PassDecl& pass, const std::string& prefix = "");
 // cull `prefix` indirectly, the others whole.
 void draw_populations_culled(PassContext& pc, const std::string& prefix = "");
 
-// record_copies (grass_passes.hpp) with the first grass population's copies those the cull
-// `prefix` kept; the others whole.
+// record_copies (grass_passes.hpp), the first grass population's copies being those the cull
+// `culled_by` kept (the others whole); without a cull, record_copies itself.
 void record_copies_culled(PassContext& pc, const RasterState& over, const std::string& vertex_buffer,
-                          uint32_t vertex_count, const std::string& prefix);
+                          uint32_t vertex_count, const std::optional<std::string>& culled_by);
 
 }  // namespace canopy::grass

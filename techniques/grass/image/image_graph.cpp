@@ -120,10 +120,7 @@ PassDecl image_frame_pass(const ImageSettings& s, const RasterState& per_cell, b
         if (s.culled_by) use_cull_survivors(frame, *s.culled_by);
         frame.record = [objects, slice, quad = names.quad, culled_by = s.culled_by](PassContext& pc) {
             if (objects) record_ground(pc, *objects);
-            if (culled_by)
-                record_copies_culled(pc, slice, quad, kImageCellVertices, *culled_by);
-            else
-                record_copies(pc, slice, quad, kImageCellVertices);
+            record_copies_culled(pc, slice, quad, kImageCellVertices, culled_by);
         };
     }
     return frame;

@@ -180,10 +180,7 @@ PassDecl slices_frame_pass(const SlicesSettings& s, const RasterState& per_cell,
     if (s.culled_by) use_cull_survivors(frame, *s.culled_by);
     frame.record = [objects, slices, vertices, quads = names.quads, culled_by = s.culled_by](PassContext& pc) {
         if (objects) record_ground(pc, *objects);
-        if (culled_by)
-            record_copies_culled(pc, slices, quads, vertices, *culled_by);
-        else
-            record_copies(pc, slices, quads, vertices);
+        record_copies_culled(pc, slices, quads, vertices, culled_by);
     };
     return frame;
 }

@@ -183,10 +183,7 @@ PassDecl volume_frame_pass(const VolumeSettings& s, const RasterState& per_cell,
         if (s.culled_by) use_cull_survivors(frame, *s.culled_by);
         frame.record = [objects, volume, cuboid = names.cuboid, culled_by = s.culled_by](PassContext& pc) {
             if (objects) record_ground(pc, *objects);
-            if (culled_by)
-                record_copies_culled(pc, volume, cuboid, kCuboidVertices, *culled_by);
-            else
-                record_copies(pc, volume, cuboid, kCuboidVertices);
+            record_copies_culled(pc, volume, cuboid, kCuboidVertices, culled_by);
         };
     }
     return frame;
