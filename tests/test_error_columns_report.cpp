@@ -37,6 +37,9 @@ CaseResult error_case(const std::string& technique, ErrorColumns columns) {
     m.visibility_rmse = 0.0555;
     m.visibility_penumbra_rmse = 0.0666;
     m.visibility_excluded = 0.00077;
+    m.coverage_mae = 0.0701;
+    m.coverage_tile_mae = 0.0702;
+    m.coverage_total_error = 0.0703;
     m.columns = columns;
     c.image_error = m;
     return c;
@@ -45,7 +48,7 @@ CaseResult error_case(const std::string& technique, ErrorColumns columns) {
 RunRecord two_families() {
     RunRecord run;
     run.cases.push_back(error_case("shadow.hard", {.visibility = true, .shadow_regions = true}));
-    run.cases.push_back(error_case("grass.cards", {}));  // a family that changes the primary hits
+    run.cases.push_back(error_case("grass.cards", {.coverage = true}));  // a family that changes the primary hits
     return run;
 }
 
@@ -70,9 +73,10 @@ TEST_CASE("CSV: the visibility columns, full precision, n/a where not declared")
     CHECK(rows[0].find(",penumbra_rmse,visibility_mae,visibility_rmse,visibility_penumbra_rmse,visibility_excluded,") !=
           std::string::npos);
     CHECK(rows[1].find(",0.0333,0.0444,0.0555,0.0666,0.00077,") != std::string::npos);
-    CHECK(count(rows[1], "n/a") == 0);
-    // The whole-image columns are meaningful for every technique; the 3 + 4 others are not here.
+    CHECK(count(rows[1], "n/a") == 3);  // the coverage columns
+    // The whole-image columns are meaningful for every technique; the 3 + 4 shadow ones are not here.
     CHECK(rows[2].find(",0.0123,38.2,") != std::string::npos);
+    CHECK(rows[2].find(",0.0701,0.0702,0.0703,") != std::string::npos);
     CHECK(count(rows[2], ",n/a") == 7);
 }
 
@@ -84,17 +88,41 @@ TEST_CASE("Markdown and console: V columns beside the whole-image ones, n/a wher
         CHECK_MESSAGE(table[0].find(column) != std::string::npos, column);
     CHECK(table[2].find("0.0555") != std::string::npos);
     CHECK(table[2].find("0.077") != std::string::npos);  // percent
-    CHECK(count(table[2], "n/a") == 0);
+    CHECK(count(table[2], "n/a") == 3);
     CHECK(count(table[3], "n/a") == 7);
     CHECK(table[3].find("0.0456") != std::string::npos);  // FLIP stays
+    CHECK(table[3].find("0.0702") != std::string::npos);  // coverage over tiles
+    CHECK(table[3].find("7.03") != std::string::npos);    // coverage total, percent
 
     const std::string console = console_table(run);
     CHECK(console.find("V RMSE") != std::string::npos);
-    CHECK(count(console, "n/a") == 2);  // penumbra RMSE and V RMSE of the second row
+    CHECK(count(console, "n/a") == 3);  // the first row's coverage; penumbra RMSE and V RMSE of the second
+    CHECK(console.find("0.0702") != std::string::npos);
     CHECK(console.find("0.0555") != std::string::npos);
 
     const std::string report = markdown_report(run);
     CHECK(report.find("How wrong the technique's shadow is") != std::string::npos);
+}
+
+TEST_CASE("Markdown and console: a run of one family shows only the groups it declares") {
+    RunRecord grass;
+    grass.cases.push_back(error_case("grass.cards", {.coverage = true}));
+    const std::string markdown = markdown_report(grass), console = console_table(grass);
+    for (const std::string& text : {markdown_table(grass), console}) {
+        CHECK(text.find("cov tile MAE") != std::string::npos);
+        CHECK(text.find("V RMSE") == std::string::npos);
+        CHECK(text.find("penumbra RMSE") == std::string::npos);
+        CHECK(text.find("n/a") == std::string::npos);
+    }
+    CHECK(markdown.find("How wrong the technique's shadow is") == std::string::npos);
+    CHECK(markdown.find("Where the blades are") != std::string::npos);
+    // The CSV keeps every column, so its header does not depend on the run.
+    CHECK(csv_report(grass).find(",visibility_rmse,") != std::string::npos);
+
+    RunRecord shadow;
+    shadow.cases.push_back(error_case("shadow.hard", {.visibility = true, .shadow_regions = true}));
+    CHECK(markdown_report(shadow).find("cov tile MAE") == std::string::npos);
+    CHECK(markdown_report(shadow).find("Where the blades are") == std::string::npos);
 }
 
 TEST_CASE("paper claims may name the visibility metrics; an undeclared column judges nothing") {

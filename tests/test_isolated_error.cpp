@@ -44,7 +44,7 @@ Render render(const Scene& scene, const std::vector<TriangleMesh>& meshes, const
 
 ImageMetrics errors(const Render& r, const ReferenceEntry& reference, const std::string& technique) {
     const PixelVisibilityPair pair{r.visibility, reference.pixel_visibility.visibility};
-    return compute_metrics(r.image, reference.images.radiance, &pair,
+    return compute_metrics(r.image, reference.images.radiance, &pair, nullptr,
                            TechniqueRegistry::instance().find(technique)->error_columns());
 }
 

@@ -64,7 +64,7 @@ std::string cell_under(const std::string& table, const std::string& column, size
 // A distinct, easily found value per registered metric, and a count per registered count.
 ImageMetrics distinct_metrics() {
     ImageMetrics m{};
-    m.columns = {.visibility = true, .shadow_regions = true};
+    m.columns = {.visibility = true, .shadow_regions = true, .coverage = true};  // every group shows (no one family declares all)
     size_t i = 0;
     for (const MetricInfo& metric : registered_metrics()) m.*metric.value = 0.1 + 0.001 * double(++i);
     long long n = 100;
@@ -270,10 +270,14 @@ TEST_CASE("a metric added to the list reaches them too, with no other change") {
     CHECK_FALSE(json.at("cases").at(0).at("image_error").contains("rmse"));
     CHECK(csv_report(run).find(",nonfinite_pixels,blade_coverage_error,psnr_db,device,") != std::string::npos);
     CHECK(paper_report(one_row_paper(""), run).find("| blades | 101 |") != std::string::npos);
-    // Undeclared group: n/a in tables, no verdict.
+    // Undeclared group: no column where no case declares it, n/a beside a case that does, no verdict.
     RunRecord undeclared = run;
     undeclared.cases[0].image_error->columns = {};
-    CHECK(cell_under(markdown_table(undeclared), "blade cov") == "n/a");
+    CHECK(cell_under(markdown_table(undeclared), "blade cov") == "");
+    RunRecord mixed = undeclared;
+    mixed.cases.insert(mixed.cases.begin(), run.cases[0]);
+    mixed.cases[1].id += "_other";
+    CHECK(markdown_table(mixed).find(" n/a |") != std::string::npos);
     CHECK(judge_claims(one_row_paper("blade_coverage"), undeclared).at(0).outcome == "not measured");
     // A name not in the list is refused with the list's names.
     try {

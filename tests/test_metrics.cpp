@@ -152,7 +152,7 @@ TEST_CASE("PSNR uses peak 1.0 even when values exceed 1 (unlike OIIO's own PSNR)
 
 TEST_CASE("identical images: RMSE 0, PSNR inf (printed \"inf\"), SSIM 1, FLIP 0") {
     const Image image = textured(32, 24);
-    const ImageMetrics metrics = compute_metrics(image, image, nullptr, {});
+    const ImageMetrics metrics = compute_metrics(image, image, nullptr, nullptr, {});
     CHECK(metrics.mae == 0.0);
     CHECK(metrics.rmse == 0.0);
     CHECK(std::isinf(metrics.psnr));
@@ -500,7 +500,7 @@ TEST_CASE("NaN/Inf test pixels are counted and every other metric uses the finit
     test.at(20, 10)[1] = std::numeric_limits<float>::infinity();
     test.at(5, 5)[3] = std::numeric_limits<float>::quiet_NaN();  // alpha counts as a channel too
 
-    const ImageMetrics metrics = compute_metrics(test, reference, nullptr, {});
+    const ImageMetrics metrics = compute_metrics(test, reference, nullptr, nullptr, {});
     CHECK(metrics.nonfinite_pixels == 3);
     // The 381 remaining pixels all have error exactly 1/16: not diluted, not NaN, not inf.
     CHECK(metrics.mae == doctest::Approx(0.0625).epsilon(1e-9));
@@ -521,7 +521,7 @@ TEST_CASE("NaN/Inf test pixels are counted and every other metric uses the finit
 TEST_CASE("an all-NaN test image leaves nothing to measure") {
     const Image reference = filled(12, 12, 0.5f, 0.5f, 0.5f);
     const float nan = std::numeric_limits<float>::quiet_NaN();
-    const ImageMetrics metrics = compute_metrics(filled(12, 12, nan, nan, nan), reference, nullptr, {});
+    const ImageMetrics metrics = compute_metrics(filled(12, 12, nan, nan, nan), reference, nullptr, nullptr, {});
     CHECK(metrics.nonfinite_pixels == 144);
     CHECK(std::isnan(metrics.mae));
     CHECK(std::isnan(metrics.psnr));
@@ -530,7 +530,7 @@ TEST_CASE("an all-NaN test image leaves nothing to measure") {
 }
 
 TEST_CASE("mismatched sizes are rejected") {
-    CHECK_THROWS_AS(compute_metrics(filled(4, 4, 0, 0, 0), filled(4, 5, 0, 0, 0), nullptr, {}), std::invalid_argument);
+    CHECK_THROWS_AS(compute_metrics(filled(4, 4, 0, 0, 0), filled(4, 5, 0, 0, 0), nullptr, nullptr, {}), std::invalid_argument);
     CHECK_THROWS_AS(compute_pixel_error(Image(), Image()), std::invalid_argument);
 }
 

@@ -222,6 +222,20 @@ TEST_CASE("results.json reads back exactly: every field, NaN, infinity, every di
     CHECK(std::get<long long>(back.cases[0].params[1].second) == 3);
     CHECK(std::get<double>(back.cases[0].params[3].second) == 1.0);
     CHECK(identity_differences(back.identity, identity()).empty());
+
+    // A file written before a group of columns existed (here coverage) reads it as undeclared.
+    nlohmann::json older = a;
+    older["cases"][0]["image_error"]["columns"].erase("coverage");
+    older["cases"][0]["image_error"].erase("coverage_mae");
+    write_json_report(dir / "results.json", run);
+    {
+        std::ofstream out(dir / "results.json");
+        out << older.dump();
+    }
+    const RunRecord old_back = read_json_report(dir / "results.json");
+    CHECK_FALSE(old_back.cases[0].image_error->columns.coverage);
+    CHECK(old_back.cases[0].image_error->columns.visibility);
+    CHECK(std::isnan(old_back.cases[0].image_error->coverage_mae));
 }
 
 TEST_CASE("results.json of another version or no results.json at all are refused with the reason") {

@@ -173,14 +173,14 @@ TEST_CASE("compute_metrics: visibility and shadow-region columns only where the 
         }
     const PixelVisibilityPair pair{technique_v, reference_v};
 
-    const ImageMetrics none = compute_metrics(image, truth, &pair, ErrorColumns{});
+    const ImageMetrics none = compute_metrics(image, truth, &pair, nullptr, ErrorColumns{});
     CHECK(none.rmse > 0.0);
     CHECK(std::isnan(none.visibility_rmse));
     CHECK(std::isnan(none.light_bleeding));
     CHECK(none.columns == ErrorColumns{});
 
     const ErrorColumns shadow{.visibility = true, .shadow_regions = true};
-    const ImageMetrics all = compute_metrics(image, truth, &pair, shadow);
+    const ImageMetrics all = compute_metrics(image, truth, &pair, nullptr, shadow);
     CHECK(all.columns == shadow);
     CHECK(all.visibility_rmse == doctest::Approx(std::sqrt(8.0 / 64.0)));
     CHECK(all.visibility_pixels == 64);
@@ -191,7 +191,7 @@ TEST_CASE("compute_metrics: visibility and shadow-region columns only where the 
     CHECK(all.light_bleeding == doctest::Approx(0.0));
     CHECK(all.over_darkening == doctest::Approx(8 * 0.7 / 32.0).epsilon(1e-5));
 
-    const ImageMetrics without = compute_metrics(image, truth, nullptr, shadow);
+    const ImageMetrics without = compute_metrics(image, truth, nullptr, nullptr, shadow);
     CHECK(std::isnan(without.visibility_rmse));
     CHECK(without.rmse == all.rmse);
 }

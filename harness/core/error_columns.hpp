@@ -16,6 +16,14 @@ struct ErrorColumns {
     bool visibility = false;
     // Luminance errors over the reference's umbra, lit and penumbra pixels.
     bool shadow_regions = false;
+    // The technique's population coverage per pixel (its colour target's alpha: the fraction of the
+    // pixel its blades cover) against the reference's fraction of pixel samples that hit the
+    // population (metrics/coverage_error.hpp). For a family that changes the primary hits (grass
+    // representations). A family's alpha carries visibility or coverage, so not both.
+    bool coverage = false;
+
+    // Whether the declaration can be kept: visibility and coverage both read the colour alpha.
+    bool consistent() const { return !(coverage && visibility); }
 
     bool operator==(const ErrorColumns&) const = default;
 };

@@ -18,6 +18,9 @@ void TechniqueRegistry::add(std::unique_ptr<Technique> technique) {
     if (!technique) throw std::logic_error("TechniqueRegistry::add: null technique");
     const std::string name = technique->name();
     if (find(name)) throw std::logic_error(fmt::format("technique '{}' is registered twice", name));
+    if (!technique->error_columns().consistent())
+        throw std::logic_error(fmt::format("technique '{}' declares visibility and coverage columns: its colour "
+                                           "target's alpha can carry only one (core/error_columns.hpp)", name));
     techniques_.push_back(std::move(technique));
 }
 

@@ -248,6 +248,10 @@ GpuContext::GpuContext(const std::string& selector, Validation validation) {
     // Prefilter passes write any moment format through one unformatted image2D.
     enable.features.shaderStorageImageWriteWithoutFormat = supported.features.shaderStorageImageWriteWithoutFormat;
     storage_write_without_format_ = supported.features.shaderStorageImageWriteWithoutFormat;
+    // Alpha-to-coverage stores 1 in the covered samples, so a resolved alpha is the covered share
+    // of the pixel (the grass family's coverage) rather than alpha times it.
+    enable.features.alphaToOne = supported.features.alphaToOne;
+    alpha_to_one_ = supported.features.alphaToOne;
 
     float priority = 1.0f;
     VkDeviceQueueCreateInfo queue_info{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};

@@ -66,6 +66,7 @@ public:
     bool storage_write_without_format() const { return storage_write_without_format_; }
     bool draw_indirect_count() const { return draw_indirect_count_; }
     bool pipeline_statistics() const { return pipeline_statistics_; }  // primitive counts (PrimitiveCounter)
+    bool alpha_to_one() const { return alpha_to_one_; }  // alpha-to-coverage pipelines store alpha 1
 
     uint32_t memory_type(uint32_t type_bits, VkMemoryPropertyFlags wanted) const;
     VkFormatFeatureFlags2 format_features(VkFormat format) const;  // optimal tiling
@@ -90,6 +91,7 @@ private:
     bool storage_write_without_format_ = false;
     bool draw_indirect_count_ = false;
     bool pipeline_statistics_ = false;
+    bool alpha_to_one_ = false;
     VkPhysicalDeviceMemoryProperties memory_{};
 };
 

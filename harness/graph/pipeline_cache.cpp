@@ -129,6 +129,9 @@ VkPipeline PipelineCache::raster(const RasterState& s, const AttachmentFormats& 
     VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
     multisample.rasterizationSamples = VkSampleCountFlagBits(targets.samples);
     multisample.alphaToCoverageEnable = s.alpha_to_coverage ? VK_TRUE : VK_FALSE;
+    // The covered samples store alpha 1: the resolved alpha is then the pixel's covered share
+    // (raster_state.hpp). Without the feature it is alpha times that share.
+    multisample.alphaToOneEnable = s.alpha_to_coverage && gpu_.alpha_to_one() ? VK_TRUE : VK_FALSE;
     VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
     depth.depthTestEnable = s.depth_test && targets.depth != VK_FORMAT_UNDEFINED;
     depth.depthWriteEnable = s.depth_write && targets.depth != VK_FORMAT_UNDEFINED;

@@ -56,7 +56,9 @@ struct RasterState {
     bool depth_write = true;
     VkCompareOp depth_compare = VK_COMPARE_OP_LESS;
     Blend blend = Blend::none;       // the same for every colour attachment
-    bool alpha_to_coverage = false;  // needs a multisampled pass to mean more than an alpha test
+    // Needs a multisampled pass to mean more than an alpha test; the covered samples store alpha 1
+    // where the device has alphaToOne (GpuContext::alpha_to_one), as lavapipe and NVIDIA do.
+    bool alpha_to_coverage = false;
 };
 
 }  // namespace canopy

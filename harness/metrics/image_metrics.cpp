@@ -1,6 +1,7 @@
 #include "metrics/image_metrics.hpp"
 
 #include "metrics/comparable_pair.hpp"
+#include "metrics/coverage_error.hpp"
 #include "metrics/pixel_error.hpp"
 #include "metrics/shadow_error.hpp"
 #include "metrics/ssim.hpp"
@@ -14,7 +15,7 @@
 namespace canopy {
 
 ImageMetrics compute_metrics(const Image& test, const Image& reference, const PixelVisibilityPair* visibility,
-                             ErrorColumns columns, const MetricOptions& options, std::vector<float>* flip_map_out) {
+                             const CoveragePair* coverage, ErrorColumns columns, const MetricOptions& options, std::vector<float>* flip_map_out) {
     require_same_size(test, reference, "compute_metrics");
 
     ImageMetrics metrics{};
@@ -43,6 +44,17 @@ ImageMetrics compute_metrics(const Image& test, const Image& reference, const Pi
     metrics.visibility_mae = metrics.visibility_rmse = metrics.visibility_penumbra_rmse = nan;
     metrics.visibility_pixels = metrics.visibility_penumbra_pixels = 0;
     metrics.visibility_excluded = nan;
+    metrics.coverage_mae = metrics.coverage_tile_mae = metrics.coverage_total_error = nan;
+    metrics.coverage_pixels = 0;
+    if (coverage && columns.coverage) {
+        require_same_size(coverage->technique, test, "compute_metrics (technique coverage)");
+        require_same_size(coverage->reference, test, "compute_metrics (reference coverage)");
+        const CoverageError error = compute_coverage_error(coverage->technique, coverage->reference);
+        metrics.coverage_mae = error.mae;
+        metrics.coverage_tile_mae = error.tile_mae;
+        metrics.coverage_total_error = error.total_error;
+        metrics.coverage_pixels = error.pixels;
+    }
     if (!visibility || !(columns.visibility || columns.shadow_regions)) return metrics;
 
     require_same_size(visibility->technique, test, "compute_metrics (technique visibility)");

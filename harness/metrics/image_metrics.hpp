@@ -43,6 +43,11 @@ struct ImageMetrics {
     long long visibility_pixels, visibility_penumbra_pixels;
     double visibility_excluded;  // fraction of the pixels the light reaches left out (pixel_classes.hpp)
 
+    // Population coverage (coverage_error.hpp): the technique's against the reference's, per
+    // pixel, per 8x8 tile and over the image; NaN (and count 0) when not computed or nothing is covered.
+    double coverage_mae, coverage_tile_mae, coverage_total_error;
+    long long coverage_pixels;
+
     // The groups above that mean something for the technique (its family's declaration); a report
     // shows the others as "n/a". They are NaN.
     ErrorColumns columns;
@@ -60,12 +65,20 @@ struct PixelVisibilityPair {
     const Image& reference;
 };
 
-// `visibility` may be null: no shadow-region or visibility metrics. `columns`: which of those the
-// technique declares meaningful; only those are computed. When flip_map_out is given it receives
+// Population coverage (core/pixel_visibility.hpp kCoverage, channel B of each): the technique's
+// pixel-visibility image and the reference's ReferenceImages::visibility.
+struct CoveragePair {
+    const Image& technique;
+    const Image& reference;
+};
+
+// `visibility` may be null: no shadow-region or visibility metrics; `coverage` may be null: no
+// coverage metrics. `columns`: which of those the technique declares meaningful; only those are
+// computed. When flip_map_out is given it receives
 // the per-pixel FLIP map (for flip_heatmap) so it need not be computed twice.
 // Throws std::invalid_argument on mismatched or empty images.
 ImageMetrics compute_metrics(const Image& test, const Image& reference, const PixelVisibilityPair* visibility,
-                             ErrorColumns columns, const MetricOptions& options = {},
+                             const CoveragePair* coverage, ErrorColumns columns, const MetricOptions& options = {},
                              std::vector<float>* flip_map_out = nullptr);
 
 // A metric value for reports: "inf", "-inf", "nan", or up to 6 significant digits.

@@ -16,6 +16,8 @@ const MetricGroupInfo kGroups[] = {
      "luminance over the reference's umbra, lit or penumbra pixels"},
     {MetricGroup::visibility, "visibility", &ErrorColumns::visibility,
      "the technique's shadow alone, at the same pixel centres as the reference"},
+    {MetricGroup::coverage, "coverage", &ErrorColumns::coverage,
+     "the population's coverage of each pixel against the reference's (grass: the blades a representation shows)"},
 };
 
 // Compare tolerances: chosen from measurement (README, "Catching regressions"): the quick suite
@@ -87,6 +89,21 @@ const MetricInfo kMetrics[] = {
      .group = MetricGroup::visibility, .value = &ImageMetrics::visibility_excluded, .tolerance = {0.0, 1e-4},
      .shown = shown_in_markdown, .percent = true,
      .doc = "of the pixels the light reaches in the reference, the fraction the raster did not see or light"},
+    {.name = "coverage_mae", .claim = "coverage_mae", .column = "cov MAE", .title = "coverage MAE",
+     .unit = "fraction of a pixel", .better = Better::lower, .group = MetricGroup::coverage,
+     .value = &ImageMetrics::coverage_mae, .tolerance = kRendered, .shown = shown_in_markdown,
+     .doc = "mean abs(c_technique - c_reference) of the population coverage over covered pixels (aliasing included)"},
+    {.name = "coverage_tile_mae", .claim = "coverage_tile_mae", .column = "cov tile MAE",
+     .title = "coverage MAE over 8x8 tiles", .unit = "fraction of a pixel", .better = Better::lower,
+     .group = MetricGroup::coverage, .value = &ImageMetrics::coverage_tile_mae, .tolerance = kRendered,
+     .shown = shown_in_markdown | shown_in_console | shown_in_paper_tables,
+     .doc = "mean over 8x8-pixel tiles with coverage of abs(mean c_technique - mean c_reference): "
+            "where the grass is, with pixel-scale aliasing averaged out"},
+    {.name = "coverage_total_error", .claim = "coverage_total_error", .column = "cov total %",
+     .title = "coverage gained or lost over the image", .unit = "fraction of the true coverage",
+     .better = Better::lower, .group = MetricGroup::coverage, .value = &ImageMetrics::coverage_total_error,
+     .tolerance = kRendered, .shown = shown_in_markdown | shown_in_paper_tables, .percent = true,
+     .doc = "abs(sum c_technique - sum c_reference) / sum c_reference"},
 };
 
 const MetricCountInfo kCounts[] = {
@@ -102,6 +119,8 @@ const MetricCountInfo kCounts[] = {
      "pixel centres the visibility comparison took"},
     {"visibility_penumbra_pixels", "", MetricGroup::visibility, &ImageMetrics::visibility_penumbra_pixels,
      "of those, the ones in the reference's penumbra"},
+    {"coverage_pixels", "", MetricGroup::coverage, &ImageMetrics::coverage_pixels,
+     "pixels the technique or the reference covers with the population"},
 };
 
 std::span<const MetricInfo> g_metrics = kMetrics;

@@ -20,9 +20,9 @@ namespace canopy {
 enum class Better { lower, higher };
 const char* to_string(Better better);  // "lower", "higher"
 
-// The groups of ErrorColumns: a technique's family declares which of the last two mean something
+// The groups of ErrorColumns: a technique's family declares which of the last three mean something
 // for it; a report prints "n/a" for a metric of an undeclared group.
-enum class MetricGroup { whole_image, shadow_regions, visibility };
+enum class MetricGroup { whole_image, shadow_regions, visibility, coverage };
 
 struct MetricGroupInfo {
     MetricGroup group;

@@ -18,6 +18,7 @@ struct PixelEstimate {
     glm::vec3 variance{0.0f};     // of the radiance estimate (the pixel mean)
     float visible_fraction = 0.0f;  // shadow light, mean over the samples that see a surface facing it
     float facing = 0.0f;            // 1 when every sample sees a surface facing the shadow light
+    float population_coverage = 0.0f;  // fraction of the samples whose primary hit is a population's copy
 };
 
 class PixelIntegrator {
@@ -34,6 +35,7 @@ private:
         glm::vec3 radiance{0.0f};
         glm::vec3 light_variance{0.0f};  // variance of `radiance` from light sampling alone
         bool facing = false;
+        bool population = false;  // the primary hit is a population's copy
         float visible_fraction = 0.0f;
     };
     template <class Tracer>
@@ -57,7 +59,7 @@ PixelEstimate PixelIntegrator::integrate(int x, int y, Tracer& tracer) const {
     const uint32_t pattern = uint32_t(random_key(seed_, 0x9a11u, pixel));
     glm::dvec3 sum(0.0), sum_squares(0.0), light_variance(0.0);
     float visible_sum = 0.0f;
-    int facing_count = 0;
+    int facing_count = 0, population_count = 0;
     for (int sample = 0; sample < pixel_samples_; ++sample) {
         const glm::vec2 jitter = cmj_sample(uint32_t(sample), uint32_t(pixel_samples_), pattern);
         const Ray ray = primary_ray(camera_, width_, height_, float(x) + jitter.x, float(y) + jitter.y);
@@ -66,6 +68,7 @@ PixelEstimate PixelIntegrator::integrate(int x, int y, Tracer& tracer) const {
         sum += radiance;
         sum_squares += radiance * radiance;
         light_variance += glm::dvec3(result.light_variance);
+        if (result.population) ++population_count;
         if (result.facing) {
             ++facing_count;
             visible_sum += result.visible_fraction;
@@ -83,6 +86,7 @@ PixelEstimate PixelIntegrator::integrate(int x, int y, Tracer& tracer) const {
     estimate.variance = glm::vec3(glm::max(between, within) / count);
     estimate.visible_fraction = facing_count > 0 ? visible_sum / float(facing_count) : 0.0f;
     estimate.facing = facing_count == pixel_samples_ ? 1.0f : 0.0f;
+    estimate.population_coverage = float(population_count) / float(pixel_samples_);
     return estimate;
 }
 
@@ -94,6 +98,7 @@ PixelIntegrator::SubpixelResult PixelIntegrator::shade(const Ray& ray, uint64_t 
         result.radiance = background_;
         return result;
     }
+    result.population = embree_.geometry(hit->geometry).population >= 0;
     const SurfacePoint& surface = hit->surface;
     const glm::vec3 normal = surface.normal;
 

@@ -17,7 +17,7 @@ namespace canopy {
 
 // Bump whenever the reference's shading, sampling or image definitions change, so that stale
 // cached images are never reused.
-inline constexpr int kReferenceShadingVersion = 2;
+inline constexpr int kReferenceShadingVersion = 3;  // 3: visibility B = population coverage
 // Likewise for the pixel-centre visibility (pixel_visibility.hpp).
 inline constexpr int kPixelVisibilityVersion = 1;
 

@@ -57,7 +57,7 @@ ReferenceImages render_reference(const Scene& scene, const EmbreeScene& embree, 
         radiance[3] = variance[3] = 1.0f;
         visibility[0] = pixel.visible_fraction;
         visibility[1] = pixel.facing;
-        visibility[2] = 0.0f;
+        visibility[2] = pixel.population_coverage;
         visibility[3] = 1.0f;
     });
 

@@ -38,7 +38,9 @@ struct ReferenceImages {
     // R: fraction of the shadow light visible from the surface seen at the pixel (unoccluded and
     //    above its horizon), mean over the pixel's samples that see a surface facing the light;
     // G: 1 when every sample of the pixel sees a surface facing the shadow light (n.l > 0 towards
-    //    its centre), else 0 (background, back-facing, silhouettes). B = 0, A = 1.
+    //    its centre), else 0 (background, back-facing, silhouettes);
+    // B: the population coverage, the fraction of the pixel's samples whose primary hit is a copy of
+    //    one of the scene's populations (a grass blade), what ErrorColumns::coverage compares. A = 1.
     // With no shadow-casting light, R = G = 0.
     Image visibility;
     double seconds = 0;  // wall time (including the BVH build when given meshes)

@@ -214,8 +214,8 @@ FrameTiming FrameRenderer::render_frame(const FrameState& state, bool count_prim
 
 namespace {
 
-// The colour target's texels as the image users see: alpha holds the technique's visibility
-// (read_pixel_visibility), the image is opaque.
+// The colour target's texels as the image users see: alpha holds the technique's visibility or
+// its population coverage (read_pixel_visibility), the image is opaque.
 Image opaque_color(Image image) {
     for (size_t i = 3; i < image.pixels.size(); i += 4) image.pixels[i] = 1.0f;
     return image;
@@ -231,6 +231,7 @@ Image pixel_visibility_image(const Image& rgba, const Image& depth, double n, do
         const float z = depth.pixels[4 * i];
         const bool drawn = z < 1.0f;
         p[pv::kVisibility] = rgba.pixels[4 * i + 3];
+        p[pv::kCoverage] = rgba.pixels[4 * i + 3];  // the same alpha, read as the family declares it
         p[pv::kViewDepth] = drawn ? float(f * n / (f - double(z) * (f - n))) : 0.0f;
         p[pv::kSurface] = drawn ? 1.0f : 0.0f;
     }

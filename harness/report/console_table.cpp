@@ -22,13 +22,10 @@ std::string shortened(const std::string& text, size_t width) {
 }  // namespace
 
 std::string console_table(const RunRecord& run) {
-    const bool errors = std::any_of(run.cases.begin(), run.cases.end(), [](const CaseResult& c) { return c.image_error.has_value(); });
     const bool failures = std::any_of(run.cases.begin(), run.cases.end(), [](const CaseResult& c) { return !c.ok; });
     std::vector<std::string> header = {"technique", "parameters", "GPU ms", "ratio [95% CI]"};
     std::vector<bool> right = {false, false, true, true};
-    std::vector<const MetricInfo*> metrics;  // the registered metrics the compact table shows
-    for (const MetricInfo& metric : registered_metrics())
-        if (errors && metric.shown_in(shown_in_console)) metrics.push_back(&metric);
+    const std::vector<const MetricInfo*> metrics = shown_metrics(run, shown_in_console);
     for (const MetricInfo* metric : metrics) {
         header.emplace_back(metric->column);
         right.push_back(true);

@@ -62,7 +62,8 @@ ImageMetrics read_error(const json& j) {
     m.max_x = j.at("max_error_pixel").at(0).get<int>();
     m.max_y = j.at("max_error_pixel").at(1).get<int>();
     for (const MetricGroupInfo& group : metric_groups())
-        if (group.declared) m.columns.*group.declared = j.at("columns").at(std::string(group.key)).get<bool>();
+        // A group newer than the file was not declared by it (its metrics read as NaN above).
+        if (group.declared) m.columns.*group.declared = j.at("columns").value(std::string(group.key), false);
     return m;
 }
 

@@ -79,13 +79,26 @@ std::string markdown_report(const RunRecord& run) {
            "intervals is never counted as beating it). "
            "Errors are against the ray-traced reference. How far the image is from the truth: RMSE, PSNR (peak 1), "
            "SSIM and FLIP over the whole image, in linear radiance (they include aliasing at silhouettes and "
-           "shading, which no shadow technique changes). How wrong the technique's shadow is: V RMSE, V MAE and V "
-           "penumbra RMSE compare the visibility the technique gave the light with the reference's (1024 light "
-           "samples) at the same pixel centres, so silhouettes and shading cancel (V excluded %: pixels the light "
-           "reaches left out because the raster saw another surface there); bleeding = mean excess luminance over "
-           "pixels in full umbra, over-dark = mean missing luminance over fully lit pixels, penumbra RMSE = "
-           "luminance RMSE over pixels with 0 < V < 1, the classes from the reference's pixel-centre V, off "
-           "silhouettes. n/a: the technique's family declares the column meaningless for it. "
+           "shading, which no shadow technique changes). ";
+    const auto declared = [&](bool ErrorColumns::*group) {
+        return std::any_of(run.cases.begin(), run.cases.end(),
+                           [&](const CaseResult& c) { return c.image_error && c.image_error->columns.*group; });
+    };
+    if (declared(&ErrorColumns::visibility) || declared(&ErrorColumns::shadow_regions))
+        out += "How wrong the technique's shadow is: V RMSE, V MAE and V "
+               "penumbra RMSE compare the visibility the technique gave the light with the reference's (1024 light "
+               "samples) at the same pixel centres, so silhouettes and shading cancel (V excluded %: pixels the light "
+               "reaches left out because the raster saw another surface there); bleeding = mean excess luminance over "
+               "pixels in full umbra, over-dark = mean missing luminance over fully lit pixels, penumbra RMSE = "
+               "luminance RMSE over pixels with 0 < V < 1, the classes from the reference's pixel-centre V, off "
+               "silhouettes. ";
+    if (declared(&ErrorColumns::coverage))
+        out += "Where the blades are: cov MAE, cov tile MAE and cov total % compare the share of each pixel the "
+               "population (the grass) covers in the technique (its colour target's alpha) with the share of the "
+               "reference's pixel samples that hit it, per pixel (which includes the aliasing of a one-sample "
+               "raster), per 8x8-pixel tile (where aliasing averages out) and over the image (grass gained or "
+               "lost, as a percentage of the true coverage). ";
+    out += "n/a: the technique's family declares the column meaningless for it. "
            "The papers define no error metric: these columns are canopy's. On lavapipe a GPU time is "
            "CPU time on a shared machine: compare ratios measured in one run, not absolute times across runs.\n";
     return out;

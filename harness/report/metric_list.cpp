@@ -33,7 +33,7 @@ std::string metric_list() {
     std::string counts;
     for (const MetricCountInfo& c : registered_metric_counts()) counts += fmt::format("{}{} ({})", counts.empty() ? "" : "; ", c.name, c.doc);
     out += counts + ".\n";
-    out += "Groups: a technique's family declares which of shadow_regions and visibility mean something for it "
+    out += "Groups: a technique's family declares which of shadow_regions, visibility and coverage mean something for it "
            "(core/error_columns.hpp); reports print n/a for the others. A [paper] claim may also compare `time` "
            "(the GPU median; lower is better) and use relation = \"better\" for the metric's better direction.\n";
     return out;

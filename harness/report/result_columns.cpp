@@ -140,8 +140,8 @@ ResultColumn pass_family(std::string name, std::vector<TimingSeries> CaseResult:
 }
 
 // Every registered error metric (metrics/metric_registry.hpp): full precision in the CSV ("n/a"
-// where the technique does not declare its group meaningful); in results.md those it shows, when
-// the run measured errors.
+// where the technique does not declare its group meaningful); in results.md those it shows whose
+// group some case declares.
 ResultColumn metric_family() {
     ResultColumn column;
     column.name = "error metrics";
@@ -159,10 +159,7 @@ ResultColumn metric_family() {
         return bound;
     };
     column.markdown = [](const RunRecord& run) {
-        std::vector<const MetricInfo*> shown;
-        const bool errors = std::any_of(run.cases.begin(), run.cases.end(), [](const CaseResult& c) { return c.image_error.has_value(); });
-        for (const MetricInfo& metric : registered_metrics())
-            if (errors && metric.shown_in(shown_in_markdown)) shown.push_back(&metric);
+        const std::vector<const MetricInfo*> shown = shown_metrics(run, shown_in_markdown);
         MarkdownBound bound;
         for (const MetricInfo* metric : shown) bound.headers.push_back({std::string(metric->column), true});
         bound.cells = [shown](const CaseResult& c) {

@@ -68,6 +68,18 @@ std::string ratio_number(double ratio) {
                                                                          : fmt::format("{:.2g}", ratio);
 }
 
+std::vector<const MetricInfo*> shown_metrics(const RunRecord& run, MetricShown where) {
+    std::vector<const MetricInfo*> shown;
+    for (const MetricInfo& metric : registered_metrics()) {
+        if (!metric.shown_in(where)) continue;
+        const bool declared = std::any_of(run.cases.begin(), run.cases.end(), [&](const CaseResult& c) {
+            return c.image_error && group_declared(metric.group, c.image_error->columns);
+        });
+        if (declared) shown.push_back(&metric);
+    }
+    return shown;
+}
+
 std::string ratio_cell(const Estimate& ratio) {
     if (ratio.count == 0 || std::isnan(ratio.value)) return "-";
     return fmt::format("{} [{}, {}]", ratio_number(ratio.value), ratio_number(ratio.ci.low), ratio_number(ratio.ci.high));

@@ -3,6 +3,7 @@
 
 #include "metrics/metric_registry.hpp"
 #include "run/block_bootstrap.hpp"
+#include "run/case_result.hpp"
 
 #include <string>
 #include <vector>
@@ -19,6 +20,10 @@ std::string metric_cell(double value);
 std::string metric_cell(double value, bool meaningful);
 // A registered metric's cell: "n/a" outside the technique's declared groups, percent where it says so.
 std::string table_cell(const MetricInfo& metric, const ImageMetrics& m);
+
+// The registered metrics a table of `run` shows (`where`): none when no case measured errors, and
+// of the others only those whose group some case declares (a grass run shows no shadow columns).
+std::vector<const MetricInfo*> shown_metrics(const RunRecord& run, MetricShown where);
 
 // A time ratio and its 95 % interval, "1.93 [1.88, 1.99]"; "-" when not measured.
 std::string ratio_cell(const Estimate& ratio);

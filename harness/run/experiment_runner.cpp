@@ -365,7 +365,10 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
                         // The pixel-centre visibility of the technique and of the reference: the
                         // technique-isolated error and the shadow regions (metrics/pixel_classes.hpp).
                         const PixelVisibilityPair pixel_visibility{visibility, reference->pixel_visibility.visibility};
-                        result.image_error = compute_metrics(image, truth, &pixel_visibility,
+                        // The population coverage: the technique's alpha against the reference's
+                        // pixel samples (metrics/coverage_error.hpp).
+                        const CoveragePair coverage{visibility, reference->images.visibility};
+                        result.image_error = compute_metrics(image, truth, &pixel_visibility, &coverage,
                                                              input.cases[k].technique->error_columns(), {}, &flip_map);
                         if (pngs) {
                             const auto record = std::find_if(run.references.begin(), run.references.end(),

@@ -7,6 +7,7 @@
 #include "render/frame_uniforms.hpp"
 
 #include "grass_billboard_params.h"
+#include "../common/grass_family.hpp"
 #include "../common/grass_passes.hpp"
 #include "../common/patch_bake.hpp"
 #include "../common/grass_population.hpp"
@@ -58,7 +59,7 @@ public:
     }
     std::string paper() const override { return "the classic baseline of Lemme 2012 ch. 2 and Boulanger 2008 §2"; }
     std::vector<ParamSpec> params() const override { return shader::GrassBillboardParams::specs(); }
-    ErrorColumns error_columns() const override { return {}; }
+    ErrorColumns error_columns() const override { return grass::kGrassErrorColumns; }
 
     FrameGraph graph(const ParamSet& params) const override {
         const uint32_t resolution = uint32_t(params.integer("resolution"));
@@ -110,7 +111,7 @@ public:
         frame.push_constant_bytes = sizeof(DrawConstants);
         frame.uses = {use(graph_names::kFrameUniforms, Use::uniform, 0), use(names::kImage, Use::sampled, 1),
                       use(names::kQuads, Use::vertex),
-                      cleared(graph_names::kColor, Use::color_attachment, {0.0f, 0.0f, 0.0f, 1.0f}),
+                      cleared(graph_names::kColor, Use::color_attachment, grass::kUncoveredClear),
                       cleared(graph_names::kDepth, Use::depth_attachment, kFarDepth)};
         const RasterState ground = grass::ground_state();
         RasterState quads;

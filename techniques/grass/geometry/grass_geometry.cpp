@@ -7,6 +7,7 @@
 
 #include "grass_geometry_params.h"
 #include "../common/grass_cull.hpp"
+#include "../common/grass_family.hpp"
 #include "../common/grass_passes.hpp"
 #include "../common/grass_population.hpp"
 
@@ -33,7 +34,7 @@ public:
     }
     std::string paper() const override { return "Lemme 2012 ch. 4 and 6; Boulanger 2008 §4.2"; }
     std::vector<ParamSpec> params() const override { return shader::GrassGeometryParams::specs(); }
-    ErrorColumns error_columns() const override { return {}; }  // image errors only: no lit pass of canopy's
+    ErrorColumns error_columns() const override { return grass::kGrassErrorColumns; }
 
     std::optional<ParamConflict> conflict(const ParamSet& params) const override {
         return grass::blade_samples_conflict(params);
@@ -55,7 +56,7 @@ public:
         if (!culled && max_distance > 0.0f) g.report["culling"] = fmt::format("none (max_distance {} unused)", max_distance);
         if (culled) grass::declare_grass_cull(g, {{.max_distance = max_distance}});
 
-        const std::array<float, 4> background{0.0f, 0.0f, 0.0f, 1.0f};
+        const std::array<float, 4> background = grass::kUncoveredClear;
         PassDecl blades{.name = "blades", .kind = PassKind::raster};
         blades.push_constant_bytes = sizeof(DrawConstants);
         blades.uses = {use(graph_names::kFrameUniforms, Use::uniform, 0)};

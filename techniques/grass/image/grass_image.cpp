@@ -6,6 +6,7 @@
 
 #include "grass_image_params.h"
 #include "image_graph.hpp"
+#include "../common/grass_family.hpp"
 #include "../common/grass_passes.hpp"
 #include "../common/grass_population.hpp"
 
@@ -28,7 +29,7 @@ public:
     }
     std::string paper() const override { return "Lemme 2012 §4.2 and §5.3; Boulanger 2008 §4.2 (the far slice)"; }
     std::vector<ParamSpec> params() const override { return shader::GrassImageParams::specs(); }
-    ErrorColumns error_columns() const override { return {}; }
+    ErrorColumns error_columns() const override { return grass::kGrassErrorColumns; }
 
     FrameGraph graph(const ParamSet& params) const override {
         const grass::ImageSettings settings{.resolution = uint32_t(params.integer("resolution")),
@@ -45,7 +46,7 @@ public:
         per_cell.fragment_spirv = grass_image_frag;
         g.passes.push_back(grass::image_frame_pass(
             settings, per_cell, true,
-            {cleared(graph_names::kColor, Use::color_attachment, {0.0f, 0.0f, 0.0f, 1.0f}),
+            {cleared(graph_names::kColor, Use::color_attachment, grass::kUncoveredClear),
              cleared(graph_names::kDepth, Use::depth_attachment, kFarDepth)}));
         return g;
     }

@@ -13,6 +13,7 @@
 
 #include "grass_lod_params.h"
 #include "../common/grass_cull.hpp"
+#include "../common/grass_family.hpp"
 #include "../common/grass_passes.hpp"
 #include "../common/grass_population.hpp"
 #include "../image/image_graph.hpp"
@@ -43,7 +44,7 @@ using grass::use;
 // The three passes' attachments: the first clears, the others load; with MSAA they render into
 // multisampled targets kept between the passes, and the last resolves into the camera's colour.
 std::vector<ResourceUse> band_attachments(uint32_t samples, bool first, bool last) {
-    const std::array<float, 4> background{0.0f, 0.0f, 0.0f, 1.0f};
+    const std::array<float, 4> background = grass::kUncoveredClear;
     const std::string color = samples > 1 ? "msaa_color" : graph_names::kColor;
     const std::string depth = samples > 1 ? "msaa_depth" : graph_names::kDepth;
     std::vector<ResourceUse> uses;
@@ -68,7 +69,7 @@ public:
         return "Boulanger 2008 §4.2.5 (eq 4.3-4.6, Algorithm 1); Lemme 2012 §5.4 (eq 5.22-5.26)";
     }
     std::vector<ParamSpec> params() const override { return shader::GrassLodParams::specs(); }
-    ErrorColumns error_columns() const override { return {}; }
+    ErrorColumns error_columns() const override { return grass::kGrassErrorColumns; }
 
     std::optional<ParamConflict> conflict(const ParamSet& params) const override {
         if (auto c = grass::blade_samples_conflict(params)) return c;

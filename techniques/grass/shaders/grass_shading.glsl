@@ -11,6 +11,8 @@ vec4 grass_lit_output(vec3 albedo, vec3 world_position, vec3 world_normal, float
     vec3 n = camera_side_normal(world_normal, world_position);
     vec3 irradiance = scene_light_irradiance(world_position, n);
     if (transmission > 0.0) irradiance += transmission * scene_light_irradiance(world_position, -n);
-    // Alpha carries the outline's coverage for alpha-to-coverage; the harness shows images with A = 1.
+    // Alpha carries the outline's coverage for alpha-to-coverage (the pipeline's alpha-to-one then
+    // stores 1 in the covered samples) and the population coverage the harness compares
+    // (common/grass_family.hpp); the harness shows images with A = 1.
     return vec4(lambert_radiance(albedo, irradiance, 1.0, frame.ambient.rgb), alpha);
 }

@@ -10,6 +10,7 @@
 
 #include "grass_slices_params.h"
 #include "slices_graph.hpp"
+#include "../common/grass_family.hpp"
 #include "../common/grass_passes.hpp"
 #include "../common/grass_population.hpp"
 
@@ -32,7 +33,7 @@ public:
     }
     std::string paper() const override { return "Boulanger 2008 §4.2.3, eq 4.2 and App. A (spherical barycentric interpolation)"; }
     std::vector<ParamSpec> params() const override { return shader::GrassSlicesParams::specs(); }
-    ErrorColumns error_columns() const override { return {}; }
+    ErrorColumns error_columns() const override { return grass::kGrassErrorColumns; }
 
     FrameGraph graph(const ParamSet& params) const override {
         const auto block = shader::GrassSlicesParams::from(params);
@@ -51,7 +52,7 @@ public:
         per_cell.fragment_spirv = grass_slices_frag;
         g.passes.push_back(grass::slices_frame_pass(
             settings, per_cell, true,
-            {cleared(graph_names::kColor, Use::color_attachment, {0.0f, 0.0f, 0.0f, 1.0f}),
+            {cleared(graph_names::kColor, Use::color_attachment, grass::kUncoveredClear),
              cleared(graph_names::kDepth, Use::depth_attachment, kFarDepth)}));
         return g;
     }

@@ -8,6 +8,7 @@
 
 #include "grass_volume_params.h"
 #include "volume_graph.hpp"
+#include "../common/grass_family.hpp"
 #include "../common/grass_passes.hpp"
 #include "../common/grass_population.hpp"
 
@@ -30,7 +31,7 @@ public:
     }
     std::string paper() const override { return "Lemme 2012 §4.2.1 and §5.2 (eq 5.2-5.21), after Habel et al. 2007"; }
     std::vector<ParamSpec> params() const override { return shader::GrassVolumeParams::specs(); }
-    ErrorColumns error_columns() const override { return {}; }
+    ErrorColumns error_columns() const override { return grass::kGrassErrorColumns; }
 
     FrameGraph graph(const ParamSet& params) const override {
         const auto block = shader::GrassVolumeParams::from(params);
@@ -50,7 +51,7 @@ public:
         per_cell.fragment_spirv = grass_volume_frag;
         g.passes.push_back(grass::volume_frame_pass(
             settings, per_cell, true,
-            {cleared(graph_names::kColor, Use::color_attachment, {0.0f, 0.0f, 0.0f, 1.0f}),
+            {cleared(graph_names::kColor, Use::color_attachment, grass::kUncoveredClear),
              cleared(graph_names::kDepth, Use::depth_attachment, kFarDepth)}));
         return g;
     }
