@@ -55,6 +55,7 @@ CameraPose read_pose(TomlReader& reader, const std::vector<Scene>& scenes) {
 CameraPath read_camera_path(TomlReader& section, const std::vector<Scene>& scenes) {
     CameraPath path;
     const long long frames = section.get_int("frames", 0);
+    path.popping = section.get_bool("popping", false);
     std::vector<TomlReader> poses = section.get_tables("pose", "[[camera_path.pose]]");
     section.finish();
     if (!section.has("frames"))

@@ -46,6 +46,7 @@ ImageMetrics compute_metrics(const Image& test, const Image& reference, const Pi
     metrics.visibility_excluded = nan;
     metrics.coverage_mae = metrics.coverage_tile_mae = metrics.coverage_total_error = nan;
     metrics.coverage_pixels = 0;
+    metrics.popping_mean = metrics.popping_max = nan;
     if (coverage && columns.coverage) {
         require_same_size(coverage->technique, test, "compute_metrics (technique coverage)");
         require_same_size(coverage->reference, test, "compute_metrics (reference coverage)");

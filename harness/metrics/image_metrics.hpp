@@ -48,6 +48,10 @@ struct ImageMetrics {
     double coverage_mae, coverage_tile_mae, coverage_total_error;
     long long coverage_pixels;
 
+    // Popping along the camera path (popping.hpp), set by the runner from one more traversal when
+    // [camera_path] popping = true; NaN otherwise (compute_metrics leaves it so).
+    double popping_mean, popping_max;
+
     // The groups above that mean something for the technique (its family's declaration); a report
     // shows the others as "n/a". They are NaN.
     ErrorColumns columns;

@@ -104,6 +104,16 @@ const MetricInfo kMetrics[] = {
      .better = Better::lower, .group = MetricGroup::coverage, .value = &ImageMetrics::coverage_total_error,
      .tolerance = kRendered, .shown = shown_in_markdown | shown_in_paper_tables, .percent = true,
      .doc = "abs(sum c_technique - sum c_reference) / sum c_reference"},
+    {.name = "popping_mean", .claim = "popping", .column = "popping", .title = "popping along the camera path",
+     .unit = "luminance", .better = Better::lower, .group = MetricGroup::whole_image,
+     .value = &ImageMetrics::popping_mean, .tolerance = kRendered,
+     .shown = shown_in_markdown | shown_in_console | shown_in_paper_tables, .only_when_measured = true,
+     .doc = "mean over consecutive path frames of mean abs(change of the technique's luminance - change of the "
+            "reference's): what the technique changes that the scene does not ([camera_path] popping = true)"},
+    {.name = "popping_max", .claim = "popping_max", .column = "popping max", .title = "worst popping between two frames",
+     .unit = "luminance", .better = Better::lower, .group = MetricGroup::whole_image,
+     .value = &ImageMetrics::popping_max, .tolerance = kRendered, .shown = shown_in_markdown,
+     .only_when_measured = true, .doc = "the same for the pair of consecutive path frames where it is largest"},
 };
 
 const MetricCountInfo kCounts[] = {

@@ -61,6 +61,9 @@ struct MetricInfo {
     CompareTolerance tolerance;
     unsigned shown = shown_in_json_and_csv;  // MetricShown flags
     bool percent = false;                    // tables show 100 x the value (a fraction of pixels)
+    // Tables show the column only when some case measured it (a finite value): a metric that
+    // needs an experiment setting (popping: [camera_path] popping = true).
+    bool only_when_measured = false;
     // results.json writes a non-finite value as null; a metric that may be legitimately +infinite
     // (PSNR of identical images) records that in this boolean key beside it.
     std::string_view infinite_key = {};

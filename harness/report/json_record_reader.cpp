@@ -211,6 +211,7 @@ RunRecord read_json_report(const std::filesystem::path& file) {
             const json& path = j.at("camera_path");
             CameraPath p;
             p.frames = path.at("frames").get<int>();
+            p.popping = path.value("popping", false);  // false in a file older than the key
             for (const json& pose : path.at("poses")) {
                 const auto v = [&](const char* key) {
                     const auto a = pose.at(key).get<std::vector<float>>();

@@ -123,7 +123,7 @@ nlohmann::json camera_path_json(const std::optional<CameraPath>& path) {
         poses.push_back({{"position", {p.position.x, p.position.y, p.position.z}},
                          {"target", {p.target.x, p.target.y, p.target.z}},
                          {"fov", p.fov_y_degrees}});
-    return {{"frames", path->frames}, {"poses", poses}};
+    return {{"frames", path->frames}, {"poses", poses}, {"popping", path->popping}};
 }
 
 // The load phase: each pass's GPU time, in order, and the phase's totals.

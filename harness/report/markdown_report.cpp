@@ -98,6 +98,13 @@ std::string markdown_report(const RunRecord& run) {
                "reference's pixel samples that hit it, per pixel (which includes the aliasing of a one-sample "
                "raster), per 8x8-pixel tile (where aliasing averages out) and over the image (grass gained or "
                "lost, as a percentage of the true coverage). ";
+    if (std::any_of(run.cases.begin(), run.cases.end(),
+                    [](const CaseResult& c) { return c.image_error && std::isfinite(c.image_error->popping_mean); }))
+        out += "popping: along the camera path (one more traversal, untimed, the reference ray-traced at every "
+               "frame), the mean over consecutive frames of the mean |change of the technique's luminance - change "
+               "of the reference's|: what the technique changes that the scene does not (LoD switches, temporal "
+               "aliasing, and the reference's re-drawn sample noise, which every technique shares); popping max: "
+               "the worst pair of frames. ";
     out += "n/a: the technique's family declares the column meaningless for it. "
            "The papers define no error metric: these columns are canopy's. On lavapipe a GPU time is "
            "CPU time on a shared machine: compare ratios measured in one run, not absolute times across runs.\n";

@@ -73,7 +73,8 @@ std::vector<const MetricInfo*> shown_metrics(const RunRecord& run, MetricShown w
     for (const MetricInfo& metric : registered_metrics()) {
         if (!metric.shown_in(where)) continue;
         const bool declared = std::any_of(run.cases.begin(), run.cases.end(), [&](const CaseResult& c) {
-            return c.image_error && group_declared(metric.group, c.image_error->columns);
+            return c.image_error && group_declared(metric.group, c.image_error->columns) &&
+                   (!metric.only_when_measured || std::isfinite((*c.image_error).*metric.value));
         });
         if (declared) shown.push_back(&metric);
     }

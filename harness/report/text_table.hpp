@@ -22,7 +22,8 @@ std::string metric_cell(double value, bool meaningful);
 std::string table_cell(const MetricInfo& metric, const ImageMetrics& m);
 
 // The registered metrics a table of `run` shows (`where`): none when no case measured errors, and
-// of the others only those whose group some case declares (a grass run shows no shadow columns).
+// of the others only those whose group some case declares (a grass run shows no shadow columns)
+// and, for a metric `only_when_measured`, that some case measured.
 std::vector<const MetricInfo*> shown_metrics(const RunRecord& run, MetricShown where);
 
 // A time ratio and its 95 % interval, "1.93 [1.88, 1.99]"; "-" when not measured.

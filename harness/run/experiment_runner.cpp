@@ -4,6 +4,7 @@
 #include "metrics/colour_bar.hpp"
 #include "metrics/comparable_pair.hpp"
 #include "metrics/error_maps.hpp"
+#include "metrics/popping.hpp"
 #include "report/csv_report.hpp"
 #include "report/gbench_report.hpp"
 #include "report/image_files.hpp"
@@ -324,6 +325,24 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
                 }
             }
 
+            // Popping: the reference at every frame of the path (cached like any other), before
+            // the group is measured so no case waits on it.
+            std::vector<const Image*> path_references;
+            if (reference && settings.camera_path && settings.camera_path->popping) {
+                const CameraPath& path = *settings.camera_path;
+                for (int k = 0; k < path.frames && !interrupt_requested(); ++k) {
+                    Scene at = scene;
+                    at.camera = path.at(scene.camera, k);
+                    path_references.push_back(&references.get(
+                        at, prepared.meshes[planned.scene_index], resolution.width, resolution.height,
+                        [&](double fraction) {
+                            if (options.show_progress)
+                                progress.reference_progress(first, planned.name, (double(k) + fraction) / double(path.frames));
+                        }).images.radiance);
+                }
+                if (interrupt_requested()) break;
+            }
+
             // The group's time leaves its reference out: Progress estimates the time left from case
             // times and reference times separately (a reference is obtained once per scene and size).
             const auto start = std::chrono::steady_clock::now();
@@ -387,6 +406,13 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
                 }
                 test_hooks::case_images_written(groups_measured);
             };
+            if (!path_references.empty())
+                callbacks.path_rendered = [&](size_t, CaseResult& result, std::vector<Image>&& frames) {
+                    if (!result.image_error) return;
+                    const PoppingError popping = compute_popping(frames, path_references);
+                    result.image_error->popping_mean = popping.mean;
+                    result.image_error->popping_max = popping.max;
+                };
             std::optional<MeasuredGroup> measured = measure_group(gpu, input, settings, options.chunk_limits, callbacks);
             if (!measured || interrupt_requested()) break;  // this group did not finish: keep only the finished ones
             ++groups_measured;

@@ -325,8 +325,16 @@ void finish(LiveCase& live, size_t chunk_index, const MeasurementChunk& chunk, c
         live.result.ratio.estimate = median_with_ci(live.ratios, bootstrap_seed(live.result.id));
     }
     Image image, visibility;
+    std::vector<Image> path_images;
     if (live.renderer && !live.failed) {
         try {
+            // Popping: one more traversal, untimed, in order (a technique keeping state across
+            // frames sees the path as it was measured), every frame read back.
+            if (live.path && live.path->popping && callbacks.path_rendered)
+                for (int k = 0; k < live.path->frames; ++k) {
+                    live.render(live.path->at(live.camera, k));
+                    path_images.push_back(live.renderer->read_color());
+                }
             // The reference is ray-traced from the scene's camera: after a path, one more frame
             // there (untimed), so the error measures the technique and not the camera's move.
             if (live.path) live.render(live.camera);
@@ -341,6 +349,7 @@ void finish(LiveCase& live, size_t chunk_index, const MeasurementChunk& chunk, c
         }
     }
     if (callbacks.case_measured) callbacks.case_measured(live.index, live.result, std::move(image), std::move(visibility));
+    if (!path_images.empty() && !live.failed) callbacks.path_rendered(live.index, live.result, std::move(path_images));
 }
 
 }  // namespace

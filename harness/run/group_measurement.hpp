@@ -62,6 +62,9 @@ struct GroupCallbacks {
     // (FrameRenderer::read_pixel_visibility; both empty when it failed before rendering). Called in
     // group order within a chunk; the callee may set `result`'s image and error fields.
     std::function<void(size_t index, CaseResult& result, Image&& image, Image&& visibility)> case_measured;
+    // With [camera_path] popping = true: after case_measured, the case's frames of one more
+    // traversal (untimed, in path order; not called for a failed case, or when this is unset).
+    std::function<void(size_t index, CaseResult& result, std::vector<Image>&& frames)> path_rendered;
     // Case `index` is about to render `state` (warm-up, measured and the final untimed frame):
     // which frame of the run it is and where the camera is, for tests and tools that trace it.
     std::function<void(size_t index, const FrameState& state)> frame_rendered;

@@ -18,6 +18,9 @@ struct CameraPose {
 struct CameraPath {
     int frames = 0;                 // frames of one traversal; one timing sample renders them all
     std::vector<CameraPose> poses;  // at least two: the first at frame 0, the last at frame frames - 1
+    // After the measurement each case renders one more traversal (untimed) and the reference is
+    // ray-traced at every frame of it: the popping metrics (metrics/popping.hpp).
+    bool popping = false;
 
     // The camera of traversal frame `frame` (taken modulo `frames`): `base` (the scene's camera:
     // its up vector and clip planes) with the interpolated position, target and field of view.
