@@ -333,12 +333,12 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
                 for (int k = 0; k < path.frames && !interrupt_requested(); ++k) {
                     Scene at = scene;
                     at.camera = path.at(scene.camera, k);
-                    path_references.push_back(&references.get(
+                    path_references.push_back(&references.images(
                         at, prepared.meshes[planned.scene_index], resolution.width, resolution.height,
                         [&](double fraction) {
                             if (options.show_progress)
                                 progress.reference_progress(first, planned.name, (double(k) + fraction) / double(path.frames));
-                        }).images.radiance);
+                        }).radiance);
                 }
                 if (interrupt_requested()) break;
             }

@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cstdlib>
+#include <optional>
 
 namespace canopy {
 
@@ -62,6 +63,20 @@ const ReferenceEntry& ReferenceProvider::get(const Scene& scene, const std::vect
         }
     }
     return entries_.emplace(key, std::move(entry)).first->second;
+}
+
+const ReferenceImages& ReferenceProvider::images(const Scene& scene, const std::vector<TriangleMesh>& meshes, int width,
+                                                 int height, const std::function<void(double)>& progress) {
+    const std::string key = reference_cache_key(scene, meshes, width, height, settings_);
+    if (auto it = entries_.find(key); it != entries_.end()) return it->second.images;
+    if (auto it = images_.find(key); it != images_.end()) return it->second;
+    std::optional<ReferenceImages> cached;
+    if (!cache_dir_.empty()) cached = load_cached_reference(cache_dir_, key);
+    if (!cached) {
+        cached = render_reference(scene, meshes, width, height, settings_, progress);
+        if (!cache_dir_.empty()) store_reference(cache_dir_, key, *cached);
+    }
+    return images_.emplace(key, std::move(*cached)).first->second;
 }
 
 std::filesystem::path default_reference_cache_dir() {

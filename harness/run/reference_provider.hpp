@@ -35,6 +35,11 @@ public:
     const ReferenceEntry& get(const Scene& scene, const std::vector<TriangleMesh>& meshes, int width, int height,
                               const std::function<void(double)>& progress = {},
                               const std::function<void(bool from_cache)>& started = {});
+    // The reference images alone, without the pixel-centre visibility (which would cost its 1024
+    // light samples a pixel for area lights): e.g. one per frame of a camera path for popping.
+    // Shares the cache and get()'s entries.
+    const ReferenceImages& images(const Scene& scene, const std::vector<TriangleMesh>& meshes, int width, int height,
+                                  const std::function<void(double)>& progress = {});
     const ReferenceSettings& settings() const { return settings_; }
     const PixelVisibilitySettings& pixel_visibility_settings() const { return pixel_visibility_settings_; }
 
@@ -43,6 +48,7 @@ private:
     ReferenceSettings settings_;
     PixelVisibilitySettings pixel_visibility_settings_;
     std::map<std::string, ReferenceEntry> entries_;  // by cache key
+    std::map<std::string, ReferenceImages> images_;  // images() not also in entries_, by cache key
 };
 
 // Default cache folder: $CANOPY_CACHE_DIR, else results/cache/reference in the working directory.
