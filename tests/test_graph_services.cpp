@@ -235,6 +235,7 @@ FrameGraph services_graph() {
          .usage = kIndirectBuffer | kStorageBuffer},
         {.name = "cull_count", .bytes = 4, .usage = kIndirectBuffer | kStorageBuffer},
         {.name = "cpu_rect", .bytes = sizeof(RectInstance), .usage = kVertexBuffer, .host_visible = true},
+        {.name = "cpu_rect_draw", .bytes = sizeof(VkDrawIndirectCommand), .usage = kIndirectBuffer, .host_visible = true},
         {.name = "frame_counter", .bytes = 8, .usage = kStorageBuffer, .persistent = true},
         {.name = "busy_sink", .bytes = 4 * kBusyInvocations, .usage = kStorageBuffer},
     };
@@ -297,11 +298,19 @@ FrameGraph services_graph() {
     g.passes.push_back(PassDecl{
         .name = "place_cpu_rect",
         .kind = PassKind::cpu,
-        .uses = {use("cpu_rect", Use::transfer_write)},
+        .uses = {use("cpu_rect", Use::transfer_write), use("cpu_rect_draw", Use::transfer_write)},
         .run =
             [](CpuPassContext& cc) {
                 const RectInstance rect = cpu_rect(cc.frame().frame_index);
                 cc.upload("cpu_rect", &rect, sizeof(rect));
+                // Its draw's counts, chosen here and read by the GPU (draw_indirect): 6 corners, once.
+                const VkDrawIndirectCommand draw{6, 1, 0, 0};
+                cc.upload("cpu_rect_draw", &draw, sizeof(draw));
+                cc.count("rect_left", rect.rect[0]);
+                cc.count("rect_left", 0.5);  // a name counted twice adds up
+                // Where the marker's first corner lands through the frame's view_proj, in pixels.
+                const glm::vec4 clip = cc.view_proj() * glm::vec4(kMarker[0], 1.0f);
+                cc.count("marker_x", (clip.x / clip.w * 0.5 + 0.5) * double(kWidth));
             },
     });
     g.passes.push_back(PassDecl{
@@ -375,7 +384,7 @@ FrameGraph services_graph() {
         .name = "camera_view",
         .kind = PassKind::raster,
         .uses = {use(graph_names::kFrameUniforms, Use::uniform, 0), use("marker", Use::vertex),
-                 use("quad_corners", Use::vertex), use("cpu_rect", Use::vertex),
+                 use("quad_corners", Use::vertex), use("cpu_rect", Use::vertex), use("cpu_rect_draw", Use::indirect),
                  attachment(graph_names::kColor, Use::color_attachment, {0, 0, 0, 0}),
                  attachment(graph_names::kDepth, Use::depth_attachment, {1, 0, 0, 0})},
         .record =
@@ -385,7 +394,7 @@ FrameGraph services_graph() {
                 pc.draw(marker_vertices, 3, 1);
                 pc.bind(pc.raster_pipeline(rect));
                 const std::array<std::string, 2> rect_vertices{"quad_corners", "cpu_rect"};
-                pc.draw(rect_vertices, 6, 1);
+                pc.draw_indirect(rect_vertices, "cpu_rect_draw");
             },
     });
     g.passes.push_back(PassDecl{
@@ -618,9 +627,16 @@ TEST_CASE("graph services: a CPU pass's per-frame upload, a persistent counter a
     std::vector<glm::vec2> centroids;
     for (const FrameResult& f : run.frames) {
         CAPTURE(f.index);
-        // The CPU pass uploaded this frame's rectangle, and only it.
-        CHECK(f.timing.uploaded_bytes == sizeof(RectInstance));
+        // The CPU pass uploaded this frame's rectangle and its draw, and only them.
+        CHECK(f.timing.uploaded_bytes == sizeof(RectInstance) + sizeof(VkDrawIndirectCommand));
         const RectInstance rect = cpu_rect(f.index);
+        // Its counts: this frame's, named as counted, and its view_proj the frame's.
+        REQUIRE(f.timing.counters.size() == 2);
+        CHECK(f.timing.counters[0].first == "rect_left");
+        CHECK(f.timing.counters[0].second == double(rect.rect[0]) + 0.5);
+        CHECK(f.timing.counters[1].first == "marker_x");
+        CHECK(f.timing.counters[1].second ==
+              doctest::Approx(project_to_pixel(f.camera, int(kWidth), int(kHeight), kMarker[0]).x).epsilon(1e-5));
         int rect_wrong = 0;
         for (int y = 0; y < int(kCpuBandBottom); ++y)
             for (int x = 0; x < f.color.width; ++x)

@@ -181,3 +181,34 @@ TEST_CASE("dominated_by: a case another beats significantly in time with no more
     run.cases[1].ok = false;
     CHECK(column->csv(run).cells(run.cases[0])[0].empty());
 }
+
+TEST_CASE("counters: a CSV column per name the run holds, and one results.md column when any case counted") {
+    RunRecord run = run_of_two();
+    run.cases[1].counters = {{"near_cells", 104}, {"far_macro_cells", 2.5}, {"field_cells", 202160}};
+    const auto rows = lines(csv_report(run));
+    REQUIRE(rows.size() == 3);
+    const std::vector<std::string> header = split(rows[0], ','), a = split(rows[1], ','), b = split(rows[2], ',');
+    const auto column = [&](const std::string& name) {
+        for (size_t i = 0; i < header.size(); ++i)
+            if (header[i] == name) return i;
+        FAIL("no column " << name);
+        return size_t(0);
+    };
+    CHECK(b[column("counter_near_cells")] == "104");
+    CHECK(b[column("counter_far_macro_cells")] == "2.5");
+    CHECK(a[column("counter_near_cells")].empty());  // case a counted nothing
+    const auto table = lines(markdown_table(run));
+    CHECK(table[0].find("counts") != std::string::npos);
+    CHECK(table[3].find("near_cells 104, far_macro_cells 2.5, field_cells 202k") != std::string::npos);
+    const auto cell = [](const std::string& row, size_t column) {
+        std::vector<std::string> cells = split(row, '|');
+        std::string c = cells.at(column);
+        return c.substr(c.find_first_not_of(' '), c.find_last_not_of(' ') - c.find_first_not_of(' ') + 1);
+    };
+    const std::vector<std::string> headers = split(table[0], '|');
+    size_t counts = 0;
+    while (counts < headers.size() && headers[counts].find("counts") == std::string::npos) ++counts;
+    CHECK(cell(table[2], counts) == "-");
+    // Without counts, no column.
+    CHECK(lines(markdown_table(run_of_two()))[0].find("counts") == std::string::npos);
+}

@@ -188,6 +188,7 @@ std::string describe(const FrameGraph& graph) {
     if (n.light_view_resolution) out += fmt::format("needs light-view {}\n", *n.light_view_resolution);
     if (n.area_light) out += "needs area-light\n";
     for (const std::string& kind : n.populations) out += fmt::format("renders population {}\n", kind);
+    if (!n.populations.empty() && !n.population_copies_on_gpu) out += "keeps population copies on the CPU\n";
     return out;
 }
 

@@ -139,6 +139,11 @@ struct GraphNeeds {
     bool area_light = false;  // refuses scenes whose shadow light has no size
     // Population kinds (scene/population.hpp) the technique renders; a scene holding another is refused.
     std::vector<std::string> populations;
+    // Whether those populations' copies (PopulationInstance records) are uploaded to the GPU. A
+    // technique that draws copies only from buffers of its own (a CPU cull writing each frame's
+    // selection) says false: the copies then stay on the CPU (PassContext::populations), and the
+    // services that read the scene's copies (draw_population, draw_over_population) refuse them.
+    bool population_copies_on_gpu = true;
 };
 
 struct FrameGraph {

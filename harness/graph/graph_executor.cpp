@@ -4,6 +4,7 @@
 #include "gpu/samplers.hpp"
 #include "render/frame_uniforms.hpp"
 #include "render/gpu_scene.hpp"
+#include "scene/camera.hpp"
 
 #include <fmt/format.h>
 
@@ -88,8 +89,18 @@ public:
 
     void start_pass(size_t index) { pass_ = index; }
     uint64_t uploaded_bytes() const { return uploaded_; }
+    const std::vector<std::pair<std::string, double>>& counters() const { return counters_; }
 
     const FrameState& frame() const override { return state_; }
+    glm::mat4 view_proj() const override { return view_projection(state_.camera, ex_.width_, ex_.height_); }
+    void count(const std::string& name, double value) override {
+        for (auto& [n, v] : counters_)
+            if (n == name) {
+                v += value;
+                return;
+            }
+        counters_.emplace_back(name, value);
+    }
 
     VkPipeline raster_pipeline(const RasterState& state) override {
         const PassBinding& b = binding();
@@ -142,6 +153,10 @@ public:
         bind_vertex_buffers(vertex_buffers);
         vkCmdBindIndexBuffer(commands_, ex_.resources_->buffer(index_buffer).handle(), 0, VK_INDEX_TYPE_UINT32);
         vkCmdDrawIndexed(commands_, index_count, instance_count, 0, 0, 0);
+    }
+    void draw_indirect(std::span<const std::string> vertex_buffers, const std::string& arguments) override {
+        bind_vertex_buffers(vertex_buffers);
+        vkCmdDrawIndirect(commands_, ex_.resources_->buffer(arguments).handle(), 0, 1, sizeof(VkDrawIndirectCommand));
     }
     void draw_indexed_indirect_count(std::span<const std::string> vertex_buffers, const std::string& index_buffer,
                                      const std::string& arguments, const std::string& count, uint32_t max_draws) override {
@@ -250,11 +265,12 @@ private:
     const FrameState& state_;
     size_t pass_ = 0;
     uint64_t uploaded_ = 0;
+    std::vector<std::pair<std::string, double>> counters_;
 };
 
 GraphExecutor::GraphExecutor(const GpuContext& gpu, MemoryLedger& ledger, FrameGraph graph, uint32_t width,
                              uint32_t height, const Buffer& frame_uniforms, const GpuScene& scene)
-    : gpu_(gpu), graph_(std::move(graph)), scene_(scene) {
+    : gpu_(gpu), graph_(std::move(graph)), scene_(scene), width_(width), height_(height) {
     if (std::string problem = validate(graph_); !problem.empty())
         throw std::logic_error("malformed frame graph: " + problem);
     uint64_t copies = 0;
@@ -599,6 +615,7 @@ PhaseTiming GraphExecutor::run(Phase phase_id, const FrameState& state, bool cou
         timing.pass_gpu_ms.pop_back();
     }
     timing.uploaded_bytes = context.uploaded_bytes();
+    timing.counters = context.counters();
     if (counting) timing.primitives = primitive_counter_->read();
     return timing;
 }

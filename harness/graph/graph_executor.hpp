@@ -30,6 +30,7 @@ struct PhaseTiming {
     double record_cpu_ms = 0;  // CPU: recording the commands, CPU passes excluded
     uint64_t uploaded_bytes = 0;
     std::optional<PrimitiveCounts> primitives;  // when asked for and the device counts them
+    std::vector<std::pair<std::string, double>> counters;  // CpuPassContext::count, in first-counted order
 };
 
 class GraphExecutor {
@@ -75,6 +76,7 @@ private:
     const GpuContext& gpu_;
     FrameGraph graph_;
     const GpuScene& scene_;
+    uint32_t width_ = 0, height_ = 0;  // the camera target's
     std::unique_ptr<GraphResources> resources_;
     std::unique_ptr<PipelineCache> pipelines_;
     std::vector<std::unique_ptr<PassBinding>> bindings_;  // per pass

@@ -8,6 +8,7 @@
 #include "graph/raster_state.hpp"
 #include "scene/generated_population.hpp"
 
+#include <glm/glm.hpp>
 #include <vulkan/vulkan.h>
 
 #include <cstddef>
@@ -70,6 +71,9 @@ public:
     virtual void draw(std::span<const std::string> vertex_buffers, uint32_t vertex_count, uint32_t instance_count) = 0;
     virtual void draw_indexed(std::span<const std::string> vertex_buffers, const std::string& index_buffer,
                               uint32_t index_count, uint32_t instance_count) = 0;
+    // The same, its vertex and instance counts read from the technique's buffer `arguments` (one
+    // VkDrawIndirectCommand a CPU or GPU pass wrote this frame): a count a CPU pass chose, say.
+    virtual void draw_indirect(std::span<const std::string> vertex_buffers, const std::string& arguments) = 0;
     // Draws whose arguments (VkDrawIndexedIndirectCommand records) and count a GPU pass wrote:
     // no CPU readback.
     virtual void draw_indexed_indirect_count(std::span<const std::string> vertex_buffers, const std::string& index_buffer,
@@ -105,8 +109,17 @@ class CpuPassContext {
 public:
     virtual ~CpuPassContext() = default;
     virtual const FrameState& frame() const = 0;
+    // The frame's world -> clip matrix, exactly the frame uniforms' view_proj (view_projection in
+    // scene/camera.hpp), so a CPU cull for the GPU sees the frustum the shaders draw into.
+    virtual glm::mat4 view_proj() const = 0;
+    // A named count of this frame (cells a CPU cull kept, say), reported per case beside the
+    // triangles, from the first warm-up frame (CaseResult::counters); a name counted twice in one
+    // frame adds up.
+    virtual void count(const std::string& name, double value) = 0;
     // As PassContext::populations: e.g. for a CPU cull of the copies.
     virtual std::span<const GeneratedPopulation> populations() const = 0;
+    // As PassContext::population_draw_arguments: the record a CPU cull writes its count into.
+    virtual VkDrawIndexedIndirectCommand population_draw_arguments(const std::string& name) const = 0;
     // Writes into a host-visible buffer (BufferDecl::host_visible); counted in the uploaded bytes.
     virtual void upload(const std::string& buffer, const void* bytes, size_t size, size_t offset = 0) = 0;
     // Reads a host-visible buffer as the GPU left it.

@@ -134,7 +134,8 @@ FrameRenderer::FrameRenderer(const GpuContext& gpu, const Scene& scene, const st
       light_view_resolution_(graph.needs.light_view_resolution),
       shader_params_(graph.shader_params) {
     if (auto reason = unsupported_reason(gpu, scene, graph)) throw GpuError(*reason);
-    scene_ = std::make_unique<GpuScene>(gpu, ledger_, scene, meshes, graph.needs.populations);
+    scene_ = std::make_unique<GpuScene>(gpu, ledger_, scene, meshes, graph.needs.populations,
+                                        graph.needs.population_copies_on_gpu);
     if (light_view_resolution_)
         light_view_ = compute_light_view(*scene.shadow_light(), scene_bounds(scene, meshes), *light_view_resolution_);
     // A multisampled target that some pass resolves into the camera target clears to the background
@@ -167,7 +168,7 @@ void FrameRenderer::write_uniforms(const Camera& camera) {
     const Scene& scene = scene_description_;
     FrameUniforms u{};
     u.view = view_matrix(camera);
-    u.view_proj = projection_matrix(camera, float(width_) / float(height_)) * u.view;
+    u.view_proj = view_projection(camera, width_, height_);
     u.inverse_view_proj = glm::inverse(u.view_proj);
     u.camera_position = glm::vec4(camera.position, 1.0f);
     const float focal_pixels = 0.5f * float(height_) / std::tan(0.5f * glm::radians(camera.fov_y_degrees));
@@ -208,8 +209,8 @@ FrameTiming FrameRenderer::render_frame(const FrameState& state, bool count_prim
     write_uniforms(state.camera);
     const PhaseTiming t = executor_->run_frame(state, count_primitives);
     next_frame_ = state.frame_index + 1;
-    return FrameTiming{t.pass_gpu_ms, t.gpu_ms, t.wall_ms, t.pass_cpu_ms, t.record_cpu_ms, t.uploaded_bytes,
-                       t.primitives};
+    return FrameTiming{t.pass_gpu_ms, t.gpu_ms,         t.wall_ms,   t.pass_cpu_ms,
+                       t.record_cpu_ms, t.uploaded_bytes, t.primitives, t.counters};
 }
 
 namespace {

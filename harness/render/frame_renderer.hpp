@@ -25,6 +25,7 @@ struct FrameTiming {
     double record_cpu_ms = 0;         // CPU: recording the frame's commands (CPU passes excluded)
     uint64_t uploaded_bytes = 0;      // moved from the CPU into buffers by the frame's passes
     std::optional<PrimitiveCounts> primitives;  // triangles submitted and rasterised, when counted
+    std::vector<std::pair<std::string, double>> counters;  // the CPU passes' named counts (CpuPassContext::count)
 };
 
 struct MemoryUse {

@@ -10,7 +10,8 @@
 namespace canopy {
 
 GpuScene::GpuScene(const GpuContext& gpu, MemoryLedger& ledger, const Scene& scene,
-                   const std::vector<TriangleMesh>& meshes, const std::vector<std::string>& population_kinds)
+                   const std::vector<TriangleMesh>& meshes, const std::vector<std::string>& population_kinds,
+                   bool copies_on_gpu)
     : populations_(generate_populations(scene, meshes, population_kinds)) {
     std::vector<Vertex> all_vertices;
     std::vector<uint32_t> all_indices;
@@ -56,7 +57,7 @@ GpuScene::GpuScene(const GpuContext& gpu, MemoryLedger& ledger, const Scene& sce
         all_vertices.insert(all_vertices.end(), population.prototype.vertices.begin(), population.prototype.vertices.end());
         all_vertex_data.resize(all_vertices.size());
         all_indices.insert(all_indices.end(), population.prototype.indices.begin(), population.prototype.indices.end());
-        if (draw.draw.index_count > 0 && draw.instance_count > 0)
+        if (copies_on_gpu && draw.draw.index_count > 0 && draw.instance_count > 0)
             draw.instances = upload_buffer(gpu, ledger, "scene", population.instances.data(),
                                            population.instances.size() * sizeof(PopulationInstance),
                                            VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
@@ -95,7 +96,7 @@ void GpuScene::draw(VkCommandBuffer commands, VkPipelineLayout layout, bool cast
 
 void GpuScene::draw_population(VkCommandBuffer commands, VkPipelineLayout layout, const std::string& name,
                                uint32_t max_copies) const {
-    const PopulationDraw& d = population_draw(name);
+    const PopulationDraw& d = population_draw_with_copies(name);
     draw_instances(commands, layout, d, std::min(d.instance_count, max_copies));
 }
 
@@ -108,7 +109,9 @@ void GpuScene::draw_prototype(VkCommandBuffer commands, VkPipelineLayout layout,
 void GpuScene::draw_instances(VkCommandBuffer commands, VkPipelineLayout layout, const PopulationDraw& d,
                               uint32_t copies) const {
     if (d.draw.index_count == 0 || copies == 0) return;
-    const std::array<VkBuffer, 3> buffers{vertices_.handle(), d.instances.handle(), vertex_data_.handle()};
+    // Without copies on the GPU (draw_prototype only), the vertices stand in at the copies' binding.
+    const VkBuffer instances = d.instances.handle() ? d.instances.handle() : vertices_.handle();
+    const std::array<VkBuffer, 3> buffers{vertices_.handle(), instances, vertex_data_.handle()};
     const std::array<VkDeviceSize, 3> offsets{0, 0, 0};
     vkCmdBindVertexBuffers(commands, 0, 3, buffers.data(), offsets.data());
     vkCmdBindIndexBuffer(commands, indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
@@ -138,8 +141,8 @@ void GpuScene::draw_population_indirect(VkCommandBuffer commands, VkPipelineLayo
 
 void GpuScene::draw_over_population(VkCommandBuffer commands, VkPipelineLayout layout, const std::string& name,
                                     std::span<const VkBuffer> vertex_buffers, uint32_t vertex_count) const {
-    const PopulationDraw& d = population_draw(name);
-    if (d.instance_count == 0 || vertex_count == 0 || !d.instances.handle()) return;
+    const PopulationDraw& d = population_draw_with_copies(name);
+    if (d.instance_count == 0 || vertex_count == 0) return;
     std::vector<VkBuffer> buffers(vertex_buffers.begin(), vertex_buffers.end());
     buffers.push_back(d.instances.handle());
     const std::vector<VkDeviceSize> offsets(buffers.size(), 0);
@@ -161,6 +164,16 @@ void GpuScene::draw_over_population_indirect(VkCommandBuffer commands, VkPipelin
     vkCmdPushConstants(commands, layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                        sizeof(DrawConstants), &d.draw.constants);
     vkCmdDrawIndirect(commands, arguments, 0, 1, sizeof(VkDrawIndirectCommand));
+}
+
+const GpuScene::PopulationDraw& GpuScene::population_draw_with_copies(const std::string& name) const {
+    const PopulationDraw& d = population_draw(name);
+    if (d.instance_count > 0 && d.draw.index_count > 0 && !d.instances.handle())
+        throw std::logic_error(fmt::format("population '{}': its copies are not on the GPU (the technique declares "
+                                           "needs.population_copies_on_gpu = false); draw them from a buffer of its own "
+                                           "(draw_population_indirect, draw_over_population_indirect)",
+                                           name));
+    return d;
 }
 
 const GpuScene::PopulationDraw& GpuScene::population_draw(const std::string& name) const {

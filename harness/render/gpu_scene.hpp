@@ -27,9 +27,10 @@ struct SceneDraw {
 
 class GpuScene {
 public:
-    // `population_kinds`: the kinds the technique renders; only their populations are uploaded.
+    // `population_kinds`: the kinds the technique renders; only their populations are uploaded,
+    // and their copies only with `copies_on_gpu` (GraphNeeds::population_copies_on_gpu).
     GpuScene(const GpuContext& gpu, MemoryLedger& ledger, const Scene& scene, const std::vector<TriangleMesh>& meshes,
-             const std::vector<std::string>& population_kinds = {});
+             const std::vector<std::string>& population_kinds = {}, bool copies_on_gpu = true);
 
     // Binds the buffers and draws every instance (only shadow casters when `casters_only`).
     void draw(VkCommandBuffer commands, VkPipelineLayout layout, bool casters_only) const;
@@ -44,8 +45,8 @@ public:
     // `max_copies`: only the first copies (e.g. one, to bake the prototype).
     void draw_population(VkCommandBuffer commands, VkPipelineLayout layout, const std::string& name,
                          uint32_t max_copies = UINT32_MAX) const;
-    // The prototype alone, `instances` times (PassContext::draw_prototype): the copies' buffer is
-    // bound but must not be read.
+    // The prototype alone, `instances` times (PassContext::draw_prototype): the copies' buffer (or,
+    // without copies on the GPU, the vertices) is bound but must not be read.
     void draw_prototype(VkCommandBuffer commands, VkPipelineLayout layout, const std::string& name,
                         uint32_t instances) const;
     // PassContext::population_draw_arguments and draw_population_indirect.
@@ -70,6 +71,8 @@ private:
     };
 
     const PopulationDraw& population_draw(const std::string& name) const;  // throws naming the populations there are
+    // population_draw(name), refused (std::logic_error) when its copies are not on the GPU.
+    const PopulationDraw& population_draw_with_copies(const std::string& name) const;
     void draw_instances(VkCommandBuffer commands, VkPipelineLayout layout, const PopulationDraw& d,
                         uint32_t instances) const;
 

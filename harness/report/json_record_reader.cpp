@@ -144,6 +144,9 @@ CaseResult read_case(const json& j) {
     if (j.contains("primitives") && !j.at("primitives").is_null())
         c.primitives = PrimitiveCounts{j.at("primitives").at("submitted").get<uint64_t>(),
                                        j.at("primitives").at("rasterised").get<uint64_t>()};
+    if (j.contains("counters"))  // absent in results.json written before CPU passes counted
+        for (const json& counter : j.at("counters"))
+            c.counters.emplace_back(counter.at("name").get<std::string>(), counter.at("value").get<double>());
     c.shadow_sampler = j.at("shadow_sampler").get<std::string>();
     c.nonfinite_pixels = j.at("nonfinite_pixels").get<long long>();
     if (!j.at("image_error").is_null()) c.image_error = read_error(j.at("image_error"));

@@ -133,6 +133,13 @@ nlohmann::json load_json(const CaseResult::LoadPhase& load) {
     return {{"passes", passes}, {"gpu_ms", load.gpu_ms}, {"wall_ms", load.wall_ms}, {"uploaded_bytes", load.uploaded_bytes}};
 }
 
+// The CPU passes' counts, in the order first counted (an array: JSON objects have no order).
+nlohmann::json counters_json(const std::vector<std::pair<std::string, double>>& counters) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const auto& [name, value] : counters) out.push_back({{"name", name}, {"value", value}});
+    return out;
+}
+
 nlohmann::json case_json(const CaseResult& c) {
     nlohmann::json params = nlohmann::json::object();
     for (const auto& [name, value] : c.params) params[name] = param_json(value);
@@ -166,6 +173,7 @@ nlohmann::json case_json(const CaseResult& c) {
             {"primitives", c.primitives ? nlohmann::json{{"submitted", c.primitives->submitted},
                                                          {"rasterised", c.primitives->rasterised}}
                                         : nlohmann::json(nullptr)},
+            {"counters", counters_json(c.counters)},
             {"shadow_sampler", c.shadow_sampler},
             {"nonfinite_pixels", c.nonfinite_pixels},
             {"image_error", c.image_error ? error_json(*c.image_error) : nlohmann::json(nullptr)},

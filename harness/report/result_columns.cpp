@@ -89,6 +89,52 @@ ResultColumn primitives_column() {
     return column;
 }
 
+// The CPU passes' counts (CaseResult::counters): "counter_<name>" per name the run holds, and one
+// results.md column ("near_cells 104, ...") when any case counted.
+ResultColumn counters_column() {
+    ResultColumn column;
+    column.name = "counters";
+    const auto names = [](const RunRecord& run) {
+        std::vector<std::string> seen;
+        for (const CaseResult& c : run.cases)
+            for (const auto& [name, value] : c.counters)
+                if (std::find(seen.begin(), seen.end(), name) == seen.end()) seen.push_back(name);
+        return seen;
+    };
+    const auto value_of = [](const CaseResult& c, const std::string& name) -> std::optional<double> {
+        for (const auto& [n, v] : c.counters)
+            if (n == name) return v;
+        return std::nullopt;
+    };
+    column.csv = [names, value_of](const RunRecord& run) {
+        const std::vector<std::string> counted = names(run);
+        CsvBound bound;
+        for (const std::string& name : counted) bound.headers.push_back("counter_" + name);
+        bound.cells = [counted, value_of](const CaseResult& c) {
+            Cells cells;
+            for (const std::string& name : counted) {
+                const std::optional<double> v = value_of(c, name);
+                cells.push_back(v ? full(*v) : "");
+            }
+            return cells;
+        };
+        return bound;
+    };
+    column.markdown = [names](const RunRecord& run) {
+        if (names(run).empty()) return MarkdownBound{{}, [](const CaseResult&) { return Cells{}; }};
+        return MarkdownBound{{{"counts", false}}, [](const CaseResult& c) {
+                                 std::string text;
+                                 for (const auto& [name, value] : c.counters) {
+                                     const bool whole = value >= 0 && value < 1e18 && value == std::floor(value);
+                                     text += fmt::format("{}{} {}", text.empty() ? "" : ", ", name,
+                                                         whole ? count_text(uint64_t(value)) : fmt::format("{:.3g}", value));
+                                 }
+                                 return Cells{text.empty() ? "-" : text};
+                             }};
+    };
+    return column;
+}
+
 // A column results.md shows and results.csv does not.
 ResultColumn markdown_only(std::string name, Headers headers, std::function<Cells(const CaseResult&)> cells) {
     ResultColumn column;
@@ -311,6 +357,7 @@ std::vector<ResultColumn> make_columns() {
     columns.push_back(csv_only("scene_memory_bytes", [](R, C c) { return std::to_string(c.memory.scene_bytes); }));
     columns.push_back(csv_only("triangles", [](R, C c) { return std::to_string(c.triangles); }));
     columns.push_back(primitives_column());
+    columns.push_back(counters_column());
     columns.push_back(csv_only("shadow_sampler", [](R, C c) { return quoted(c.shadow_sampler); }));
     columns.push_back(dominance_column());
     columns.push_back(csv_only("nonfinite_pixels", [](R, C c) { return std::to_string(c.nonfinite_pixels); }));

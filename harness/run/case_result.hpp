@@ -72,6 +72,9 @@ struct CaseResult {
     // The triangles the technique's frame submitted and rasterised (after clipping), counted in the
     // first warm-up frame (FrameRenderer::render_counting_primitives); empty when not counted.
     std::optional<PrimitiveCounts> primitives;
+    // What the technique's CPU passes counted in that same frame (CpuPassContext::count: the cells
+    // a CPU cull kept, say), in the order first counted; empty when it counts nothing.
+    std::vector<std::pair<std::string, double>> counters;
     std::string shadow_sampler;
     std::string image_exr, image_png;  // relative to the run folder
     std::string visibility_exr;        // the technique's pixel-centre visibility (core/pixel_visibility.hpp)

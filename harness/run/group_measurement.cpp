@@ -250,9 +250,11 @@ bool measure_chunk(std::vector<LiveCase*>& members, const MeasurementSettings& s
         for (int i = 0; i < settings.warmup_frames && !m->failed; ++i) {
             if (interrupt_requested()) return false;
             try {
-                // The first warm-up frame counts the triangles (untimed, so the count costs nothing).
+                // The first warm-up frame counts the triangles (untimed, so the count costs nothing)
+                // and keeps the CPU passes' counts.
                 const FrameTiming t = m->frame(i, i == 0);
                 if (t.primitives) m->result.primitives = t.primitives;
+                if (i == 0) m->result.counters = t.counters;
             } catch (const GpuError& e) {
                 m->fail(e.what());
             }

@@ -15,6 +15,10 @@ glm::mat4 projection_matrix(const Camera& camera, float aspect) {
     return proj;
 }
 
+glm::mat4 view_projection(const Camera& camera, uint32_t width, uint32_t height) {
+    return projection_matrix(camera, float(width) / float(height)) * view_matrix(camera);
+}
+
 Ray primary_ray(const Camera& camera, int width, int height, float px, float py) {
     const glm::vec3 forward = glm::normalize(camera.target - camera.position);
     const glm::vec3 right = glm::normalize(glm::cross(forward, camera.up));
@@ -28,7 +32,7 @@ Ray primary_ray(const Camera& camera, int width, int height, float px, float py)
 }
 
 glm::vec2 project_to_pixel(const Camera& camera, int width, int height, const glm::vec3& p) {
-    const glm::vec4 clip = projection_matrix(camera, float(width) / float(height)) * view_matrix(camera) * glm::vec4(p, 1.0f);
+    const glm::vec4 clip = view_projection(camera, uint32_t(width), uint32_t(height)) * glm::vec4(p, 1.0f);
     const glm::vec2 ndc = glm::vec2(clip) / clip.w;
     return {(ndc.x * 0.5f + 0.5f) * float(width), (ndc.y * 0.5f + 0.5f) * float(height)};
 }

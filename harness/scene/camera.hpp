@@ -9,6 +9,9 @@ namespace canopy {
 glm::mat4 view_matrix(const Camera& camera);
 // Vulkan clip space (depth 0..1, y pointing down the image), so rasterised row 0 is the top.
 glm::mat4 projection_matrix(const Camera& camera, float aspect);
+// World -> clip for an image of `width` x `height`: the frame uniforms' view_proj, which CPU
+// passes that cull for the GPU must match exactly.
+glm::mat4 view_projection(const Camera& camera, uint32_t width, uint32_t height);
 
 struct Ray {
     glm::vec3 origin;
