@@ -1,0 +1,116 @@
+#include "quadtree_selection.hpp"
+
+#include "../shaders/grass_culling.h"
+#include "../shaders/lod_selection.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+
+namespace canopy::grass {
+
+namespace {
+
+// Distances are compared with this much slack (relative), so a cell the shaders place a rounding
+// error inside a band is never discarded: a node kept by mistake costs a draw of nothing.
+constexpr float kSlack = 1e-4f;
+
+class Traversal {
+public:
+    Traversal(const QuadtreeField& field, const std::vector<QuadtreeBand>& bands, glm::vec3 eye,
+              const glm::mat4& view_proj)
+        : field_(field), bands_(bands), eye_(eye), view_proj_(view_proj) {
+        // world = origin + cell_size * (field point), the field's cells one unit wide.
+        model_ = glm::mat4(field.cell_size);
+        model_[3] = glm::vec4(field.origin, 1.0f);
+        // A cell's box with its patch mirrored either way (cell_mirroring.h: p -> 1 - p).
+        const Bounds& b = field.patch_box;
+        lo_ = glm::vec3(std::min(b.min.x, 1.0f - b.max.x), b.min.y, std::min(b.min.z, 1.0f - b.max.z));
+        hi_ = glm::vec3(std::max(b.max.x, 1.0f - b.min.x), b.max.y, std::max(b.max.z, 1.0f - b.min.z));
+        out_.bands.resize(bands.size());
+    }
+
+    QuadtreeSelection run() {
+        if (field_.cells.x == 0 || field_.cells.y == 0 || bands_.empty()) return std::move(out_);
+        visit(quadtree_root_level(field_.cells), glm::uvec2(0), (1u << bands_.size()) - 1u);
+        return std::move(out_);
+    }
+
+private:
+    QuadtreeNode node_at(uint32_t level, glm::uvec2 index) const {
+        const uint32_t size = 1u << level;
+        const glm::uvec2 first = index * size;
+        return {first, glm::min(glm::uvec2(size), field_.cells - first)};
+    }
+
+    void visit(uint32_t level, glm::uvec2 index, uint32_t active) {
+        const QuadtreeNode node = node_at(level, index);
+        ++out_.nodes_visited;
+        const glm::vec3 lo(float(node.first.x) + lo_.x, lo_.y, float(node.first.y) + lo_.z);
+        const glm::vec3 hi(float(node.first.x + node.span.x - 1) + hi_.x, hi_.y, float(node.first.y + node.span.y - 1) + hi_.z);
+        if (!shader::grass_cell_visible(view_proj_, eye_, model_, lo, hi, 0.0f, 0.0f)) return;
+        const glm::vec2 d = node_centre_distances(field_, node, eye_);
+        const float slack = kSlack * std::max(1.0f, d.y);
+        uint32_t split = 0;
+        for (size_t b = 0; b < bands_.size(); ++b) {
+            if (!(active & (1u << b))) continue;
+            const QuadtreeBand& band = bands_[b];
+            const bool unbounded = band.max_distance >= shader::LOD_NO_DISTANCE;
+            const bool none = d.y < band.min_distance - slack || (!unbounded && d.x > band.max_distance + slack);
+            if (none) continue;  // discard
+            const bool whole = d.x >= band.min_distance && (unbounded || d.y <= band.max_distance);
+            if (level == 0 || (whole && std::max(node.span.x, node.span.y) <= band.max_macro))
+                out_.bands[b].push_back(node);  // draw
+            else
+                split |= 1u << b;
+        }
+        if (split == 0) return;
+        // The children that exist, nearest first.
+        std::array<std::pair<float, glm::uvec2>, 4> children;
+        size_t count = 0;
+        for (uint32_t c = 0; c < 4; ++c) {
+            const glm::uvec2 child = index * 2u + glm::uvec2(c & 1u, c >> 1);
+            const QuadtreeNode n = node_at(level - 1, child);
+            if (n.first.x >= field_.cells.x || n.first.y >= field_.cells.y) continue;
+            children[count++] = {node_centre_distances(field_, n, eye_).x, child};
+        }
+        for (size_t i = 1; i < count; ++i)  // insertion sort of at most 4
+            for (size_t j = i; j > 0 && children[j].first < children[j - 1].first; --j) std::swap(children[j], children[j - 1]);
+        for (size_t c = 0; c < count; ++c) visit(level - 1, children[c].second, split);
+    }
+
+    const QuadtreeField& field_;
+    const std::vector<QuadtreeBand>& bands_;
+    glm::vec3 eye_;
+    glm::mat4 view_proj_;
+    glm::mat4 model_;
+    glm::vec3 lo_, hi_;  // a cell's box, field units relative to its first corner
+    QuadtreeSelection out_;
+};
+
+}  // namespace
+
+uint32_t quadtree_root_level(glm::uvec2 cells) {
+    uint32_t level = 0;
+    while ((1u << level) < std::max(cells.x, cells.y)) ++level;
+    return level;
+}
+
+glm::vec2 node_centre_distances(const QuadtreeField& field, const QuadtreeNode& node, glm::vec3 eye) {
+    const glm::vec2 first = glm::vec2(node.first) + 0.5f, last = glm::vec2(node.first + node.span) - 0.5f;
+    const glm::vec3 lo = field.origin + field.cell_size * glm::vec3(first.x, 0.0f, first.y);
+    const glm::vec3 hi = field.origin + field.cell_size * glm::vec3(last.x, 0.0f, last.y);
+    const glm::vec3 nearest = glm::clamp(eye, lo, hi);
+    const glm::vec3 farthest(std::abs(eye.x - lo.x) > std::abs(eye.x - hi.x) ? lo.x : hi.x, lo.y,
+                             std::abs(eye.z - lo.z) > std::abs(eye.z - hi.z) ? lo.z : hi.z);
+    return {glm::length(eye - nearest), glm::length(eye - farthest)};
+}
+
+QuadtreeSelection select_cells(const QuadtreeField& field, const std::vector<QuadtreeBand>& bands, glm::vec3 eye,
+                               const glm::mat4& view_proj) {
+    if (bands.size() > 32) throw std::logic_error("select_cells: at most 32 bands");
+    return Traversal(field, bands, eye, view_proj).run();
+}
+
+}  // namespace canopy::grass

@@ -1,0 +1,72 @@
+// Lemme's quadtree over a field's cells (§6.1-6.2), traversed on the CPU every frame: which cells
+// each of grass.lod's distance bands draws, single cells or macro-cells, within the view frustum.
+//
+// The tree is implicit: a node of level l is the square of 2^l x 2^l cells whose first cell is a
+// multiple of 2^l (cut at the field's far edges), so the field's cells alone define it, it costs no
+// memory per cell (Lemme's nodes hold about 164 bytes each, L676), and its nodes are always square,
+// which is what Lemme builds bottom-up for (Fig 6.2). One traversal serves every band at once; a
+// band that has decided a node (drawn or discarded) no longer tests its children (Lemme's flags,
+// Fig 6.3). Per band and node, Lemme's lod tests:
+//   discard: no cell centre of the node lies within the band's distances (lod_band_distances);
+//   draw:    every cell centre of the node does, and the node is at most the band's largest
+//            macro-cell (a level-0 node, one cell, is drawn as soon as any part is in range);
+//   split:   otherwise.
+// So macro-cells grow with the distance from the band's edges, as in Lemme's Fig 6.5. A node whose
+// box lies outside the view frustum is dropped for every band (canopy tests the box against the
+// frustum, as the GPU cull does, where Lemme tests a bounding sphere against a sphere and a cone).
+// Children are visited nearest first, so each band's list runs roughly front to back.
+//
+// Pure CPU: tests check it against a brute-force pass over every cell.
+#pragma once
+
+#include "scene/geometry.hpp"
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace canopy::grass {
+
+// The field as the quadtree sees it.
+struct QuadtreeField {
+    glm::uvec2 cells{0, 0};
+    glm::vec3 origin{0.0f};  // the corner of cell (0, 0), world
+    float cell_size = 1.0f;
+    // The prototype's bounds, patch units: a node's box is the union of its cells' boxes, each
+    // cell's patch mirrored either way (so blades leaning out of a cell count where they lean).
+    Bounds patch_box{glm::vec3(0.0f), glm::vec3(1.0f)};
+};
+
+struct QuadtreeBand {
+    // The cell-centre distances within which the band may draw something (lod_band_distances);
+    // max_distance >= LOD_NO_DISTANCE: no upper limit.
+    float min_distance = 0.0f;
+    float max_distance = 0.0f;
+    uint32_t max_macro = 1;  // the widest node (cells a side) drawn as one macro-cell; 1: single cells
+};
+
+// A drawn node: its first cell and its span in cells (x, z), as the macro shaders read it.
+struct QuadtreeNode {
+    glm::uvec2 first{0, 0};
+    glm::uvec2 span{1, 1};
+    uint32_t cells() const { return span.x * span.y; }
+};
+
+struct QuadtreeSelection {
+    std::vector<std::vector<QuadtreeNode>> bands;  // per band, in traversal order
+    uint64_t nodes_visited = 0;                    // nodes tested (Lemme's traversal cost)
+};
+
+// The tree's root level: the least l with 2^l >= both of the field's sides.
+uint32_t quadtree_root_level(glm::uvec2 cells);
+
+// The eye's least and greatest distance to the centres of the node's cells (patch point
+// (0.5, 0, 0.5) of each, on the field's plane): a bound on what lod_cuts sees in its cells.
+glm::vec2 node_centre_distances(const QuadtreeField& field, const QuadtreeNode& node, glm::vec3 eye);
+
+// The traversal for one frame: `eye` and `view_proj` (world -> clip, frame.view_proj).
+QuadtreeSelection select_cells(const QuadtreeField& field, const std::vector<QuadtreeBand>& bands, glm::vec3 eye,
+                               const glm::mat4& view_proj);
+
+}  // namespace canopy::grass
