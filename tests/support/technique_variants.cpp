@@ -43,6 +43,8 @@ std::vector<TechniqueVariant> technique_variants(const std::string& family) {
         {"grass.slices", {{"slices", 1LL}, {"resolution", 32LL}, {"height_resolution", 8LL}, {"neighbours", false}}},
         {"grass.lod", {{"middle", std::string("slices")}, {"samples", 1LL}, {"coverage", std::string("alpha_test")},
                        {"slices", 2LL}, {"resolution", 32LL}, {"height_resolution", 8LL}, {"image_resolution", 32LL}}},
+        {"grass.lod", {{"culling", std::string("quadtree")}, {"slices", 2LL}, {"resolution", 32LL},
+                       {"height_resolution", 8LL}, {"image_resolution", 32LL}, {"middle_macro_max", 4LL}}},
     };
     for (const TechniqueVariant& v : extra)
         if (family.empty() || family_of(v.technique) == family) all.push_back(v);

@@ -88,6 +88,18 @@ std::vector<ParamSpec> grass_population_params() {
     return s;
 }
 
+GrassField grass_field_placement(const ParamSet& params) {
+    GrassField f;
+    f.cells = {uint32_t(params.integer("cells_x")), uint32_t(params.integer("cells_z"))};
+    f.cell_size = float(params.real("cell_size"));
+    const glm::vec2 extent = f.cell_size * glm::vec2(f.cells);
+    f.origin = glm::vec3(float(params.real("centre_x")) - 0.5f * extent.x, float(params.real("ground")),
+                         float(params.real("centre_z")) - 0.5f * extent.y);
+    f.mirror = params.boolean("mirror");
+    f.mirror_seed = uint32_t(params.integer("mirror_seed"));
+    return f;
+}
+
 GrassPopulationSpec grass_population_spec(const ParamSet& params) {
     GrassPopulationSpec spec;
     BladePatchParams& p = spec.patch;
@@ -112,14 +124,8 @@ GrassPopulationSpec grass_population_spec(const ParamSet& params) {
     p.thresholds.equalise = params.boolean("equalise");
     validate(p);  // min <= max
 
+    spec.field = grass_field_placement(params);
     GrassField& f = spec.field;
-    f.cells = {uint32_t(params.integer("cells_x")), uint32_t(params.integer("cells_z"))};
-    f.cell_size = float(params.real("cell_size"));
-    const glm::vec2 extent = f.cell_size * glm::vec2(f.cells);
-    f.origin = glm::vec3(float(params.real("centre_x")) - 0.5f * extent.x, float(params.real("ground")),
-                         float(params.real("centre_z")) - 0.5f * extent.y);
-    f.mirror = params.boolean("mirror");
-    f.mirror_seed = uint32_t(params.integer("mirror_seed"));
     const std::string& pattern = params.choice("density_map");
     const float low = float(params.real("density_low")), high = float(params.real("density"));
     if (pattern != "uniform" && low > high)

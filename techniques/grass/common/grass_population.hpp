@@ -26,6 +26,8 @@ struct GrassPopulationSpec {
     float transmission = 0.0f;  // Boulanger eq 4.1's gamma (FamilyPopulation::transmission)
 };
 GrassPopulationSpec grass_population_spec(const ParamSet& params);
+// Its field's cells, size, corner and mirror alone, without the density map (cheap: per frame).
+GrassField grass_field_placement(const ParamSet& params);
 
 // Copy c is cell (c % cells.x, c / cells.x). Its model matrix maps the patch's unit square onto
 // the cell, mirrored about the patch centre by the cell's signs; its data are the cell's corner

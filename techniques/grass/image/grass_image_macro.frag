@@ -1,30 +1,5 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// grass.image with macro-cells (Lemme §6.2, eq 6.6): each point of the macro-cell's quad shows its
-// own cell's copy of the tiled top view, mirrored by that cell's signs and cut by that cell's
-// densities, as the one-quad-per-cell path shows it; lit per pixel with the mirrored baked normal.
+// grass.image with macro-cells: the tiled top view per cell (shaders/grass_image_macro_fragment.glsl).
 #include "grass_image_params.h"
-#include "frame_uniforms.glsl"
-#include "grass_density.h"
-#include "grass_macro_cells.h"
-#include "grass_shading.glsl"
-
-layout(set = 0, binding = 1) uniform sampler2D slice_albedo;  // NEAREST: thresholds are not blended
-layout(set = 0, binding = 2) uniform sampler2D slice_normal;  // NEAREST
-layout(set = 0, binding = 3, std140) uniform FieldBlock { GrassMacroField field; };
-layout(set = 0, binding = 4, std430) readonly buffer CellBlock { GrassCell field_cells[]; };
-
-layout(location = 0) in vec3 world_position;
-layout(location = 1) in vec2 field_uv;
-layout(location = 2) flat in ivec4 macro_cells;
-layout(location = 0) out vec4 out_color;
-
-void main() {
-    ivec2 cell = grass_macro_cell(field_uv, macro_cells.xy, macro_cells.zw);
-    GrassCell c = field_cells[cell.y * field.cells.x + cell.x];
-    vec2 p = grass_macro_patch_point(field_uv, cell, c.signs.xy);  // the tiled bake frames the cell: uv = p
-    vec4 albedo = texture(slice_albedo, p);
-    if (!grass_blade_drawn(albedo.a, grass_root_density(c.densities, p))) discard;
-    vec3 n = grass_mirror_vector(texture(slice_normal, p).xyz, c.signs.xy);
-    out_color = grass_lit_output(albedo.rgb, world_position, n, 1.0, field.patch_top.y);
-}
+#include "grass_image_macro_fragment.glsl"

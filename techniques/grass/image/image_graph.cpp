@@ -51,7 +51,7 @@ std::array<QuadVertex, 6> slice_quad(const Bounds& bounds, float height, bool ti
 
 void declare_image_bake(FrameGraph& g, const ImageSettings& s) {
     const Names names(s.prefix);
-    const bool tiled = s.macro_cells > 0;
+    const bool tiled = s.macro_cells > 0 || s.selected_by.has_value();
     const float slice_height = s.slice_height;
     g.images.push_back({.name = names.albedo, .format = VK_FORMAT_R32G32B32A32_SFLOAT,
                         .extent = ImageExtent::square(s.resolution), .persistent = true});
@@ -60,7 +60,7 @@ void declare_image_bake(FrameGraph& g, const ImageSettings& s) {
     g.images.push_back({.name = names.bake_depth, .format = VK_FORMAT_D32_SFLOAT, .extent = ImageExtent::square(s.resolution)});
     g.buffers.push_back({.name = names.quad, .bytes = sizeof(QuadVertex) * 6, .usage = kVertexBuffer, .persistent = true});
     g.buffers.push_back({.name = names.camera, .bytes = sizeof(shader::PatchBake), .usage = kUniformBuffer});
-    if (tiled) {
+    if (s.macro_cells > 0) {  // a quadtree's bands share the field records it declares
         declare_macro_buffers(g);
         g.passes.push_back(macro_setup_pass(s.macro_cells));
     }
@@ -99,7 +99,18 @@ PassDecl image_frame_pass(const ImageSettings& s, const RasterState& per_cell, b
                   use(names.normal, Use::sampled, 2), use(names.quad, Use::vertex)};
     frame.uses.insert(frame.uses.end(), attachments.begin(), attachments.end());
     const std::optional<RasterState> objects = ground ? std::optional<RasterState>(ground_state()) : std::nullopt;
-    if (macro > 0) {
+    if (s.selected_by) {
+        use_quadtree_band(frame, *s.selected_by);
+        RasterState slice = per_cell;
+        slice.vertices = macro_layout();
+        frame.settings = fmt::format("one quad per cell or macro-cell (at most {} a side) the quadtree's {} band keeps",
+                                     s.selected_by->max_macro, s.selected_by->name);
+        frame.record = [objects, slice, band = *s.selected_by, quad = names.quad](PassContext& pc) {
+            if (objects) record_ground(pc, *objects);
+            pc.bind(pc.raster_pipeline(slice));
+            draw_quadtree_band(pc, band, quad);
+        };
+    } else if (macro > 0) {
         if (!objects) throw std::logic_error("image_frame_pass: macro-cells draw the ground in their pass");
         if (s.culled_by) throw std::logic_error("image_frame_pass: macro-cells are not culled");
         frame.uses.push_back(use(macro_names::kField, Use::uniform, 3));

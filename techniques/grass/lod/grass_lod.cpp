@@ -16,6 +16,7 @@
 #include "../common/grass_family.hpp"
 #include "../common/grass_passes.hpp"
 #include "../common/grass_population.hpp"
+#include "../common/quadtree_passes.hpp"
 #include "../image/image_graph.hpp"
 #include "../shaders/lod_selection.h"
 #include "../slices/slices_graph.hpp"
@@ -24,13 +25,19 @@
 #include "shaders/grass/grass_lod_blades_frag.h"
 #include "shaders/grass/grass_lod_blades_vert.h"
 #include "shaders/grass/grass_lod_image_frag.h"
+#include "shaders/grass/grass_lod_image_macro_frag.h"
+#include "shaders/grass/grass_lod_image_macro_vert.h"
 #include "shaders/grass/grass_lod_image_vert.h"
 #include "shaders/grass/grass_lod_slices_frag.h"
 #include "shaders/grass/grass_lod_slices_vert.h"
 #include "shaders/grass/grass_lod_volume_frag.h"
+#include "shaders/grass/grass_lod_volume_macro_frag.h"
+#include "shaders/grass/grass_lod_volume_macro_vert.h"
 #include "shaders/grass/grass_lod_volume_vert.h"
 
 #include <fmt/format.h>
+
+#include <algorithm>
 
 namespace canopy {
 namespace {
@@ -59,6 +66,11 @@ std::vector<ResourceUse> band_attachments(uint32_t samples, bool first, bool las
     return uses;
 }
 
+const std::vector<ParamSpec>& params_specs() {
+    static const std::vector<ParamSpec> specs = shader::GrassLodParams::specs();
+    return specs;
+}
+
 class GrassLod final : public Technique {
 public:
     std::string name() const override { return "grass.lod"; }
@@ -68,11 +80,15 @@ public:
     std::string paper() const override {
         return "Boulanger 2008 §4.2.5 (eq 4.3-4.6, Algorithm 1); Lemme 2012 §5.4 (eq 5.22-5.26)";
     }
-    std::vector<ParamSpec> params() const override { return shader::GrassLodParams::specs(); }
+    std::vector<ParamSpec> params() const override { return params_specs(); }
     ErrorColumns error_columns() const override { return grass::kGrassErrorColumns; }
 
     std::optional<ParamConflict> conflict(const ParamSet& params) const override {
         if (auto c = grass::blade_samples_conflict(params)) return c;
+        if (params.choice("culling") == "quadtree" && params.choice("middle") == "slices")
+            return ParamConflict{{"culling", "middle"},
+                                 "the quadtree draws the middle band as macro-cells, which the BTF slices do not have",
+                                 "culling = \"gpu\" with middle = \"slices\", or middle = \"volume\" with the quadtree"};
         const double d[4] = {params.real("geometry_full"), params.real("geometry_none"), params.real("image_start"),
                              params.real("image_full")};
         if (!(d[0] <= d[1] && d[1] <= d[2] && d[2] <= d[3]))
@@ -87,11 +103,31 @@ public:
         const uint32_t samples = uint32_t(params.integer("samples"));
         const bool to_coverage = block.coverage == shader::GRASS_COVERAGE_ALPHA_TO_COVERAGE;
         const bool gpu_culled = params.choice("culling") == "gpu";
+        const bool quadtree = params.choice("culling") == "quadtree";
+        // The quadtree's bands (Lemme §6.1-6.2): the blades' copies, the volume's and image's macro-cells.
+        const auto band_distances = [&](int representation) {
+            return shader::lod_band_distances(representation, block.geometry_full, block.geometry_none, block.image_start,
+                                              block.image_full);
+        };
+        const grass::QuadtreeBandDecl near_band{.name = "near",
+                                                .min_distance = band_distances(shader::GRASS_LOD_GEOMETRY).x,
+                                                .max_distance = band_distances(shader::GRASS_LOD_GEOMETRY).y};
+        const grass::QuadtreeBandDecl middle_band{.name = "middle",
+                                                  .min_distance = band_distances(shader::GRASS_LOD_VOLUME).x,
+                                                  .max_distance = band_distances(shader::GRASS_LOD_VOLUME).y,
+                                                  .vertex_count = grass::kVolumeCellVertices,
+                                                  .max_macro = uint32_t(params.integer("middle_macro_max"))};
+        const grass::QuadtreeBandDecl far_band{.name = "far",
+                                               .min_distance = band_distances(shader::GRASS_LOD_IMAGE).x,
+                                               .max_distance = band_distances(shader::GRASS_LOD_IMAGE).y,
+                                               .vertex_count = grass::kImageCellVertices,
+                                               .max_macro = uint32_t(params.integer("far_macro_max"))};
         const grass::VolumeSettings volume{.slices = uint32_t(block.slices),
                                            .resolution = uint32_t(params.integer("resolution")),
                                            .height_resolution = uint32_t(params.integer("height_resolution")),
                                            .prefix = "volume_",
-                                           .culled_by = gpu_culled ? std::optional<std::string>("middle_") : std::nullopt};
+                                           .culled_by = gpu_culled ? std::optional<std::string>("middle_") : std::nullopt,
+                                           .selected_by = quadtree ? std::optional(middle_band) : std::nullopt};
         const bool btf = params.choice("middle") == "slices";
         const grass::SlicesSettings slices{.slices = uint32_t(block.slices),
                                            .resolution = uint32_t(params.integer("resolution")),
@@ -101,7 +137,8 @@ public:
         const grass::ImageSettings image{.resolution = uint32_t(params.integer("image_resolution")),
                                          .slice_height = float(params.real("slice_height")),
                                          .prefix = "image_",
-                                         .culled_by = gpu_culled ? std::optional<std::string>("far_") : std::nullopt};
+                                         .culled_by = gpu_culled ? std::optional<std::string>("far_") : std::nullopt,
+                                         .selected_by = quadtree ? std::optional(far_band) : std::nullopt};
         FrameGraph g;
         g.needs.populations = {grass::kGrassPopulationKind};
         g.shader_params.set_block(block);
@@ -111,7 +148,26 @@ public:
         g.report["coverage"] = to_coverage ? "alpha-to-coverage" : "alpha-test";
         g.report["samples"] = std::to_string(samples);
         const bool culled = gpu_culled;
-        g.report["culling"] = culled ? "gpu, each band's copies within its distances" : "none";
+        g.report["culling"] = culled     ? "gpu, each band's copies within its distances"
+                              : quadtree ? fmt::format("quadtree, macro-cells up to {} (middle) and {} (far) cells a side, "
+                                                       "at most {} near cells",
+                                                       middle_band.max_macro, far_band.max_macro,
+                                                       params.integer("near_capacity"))
+                                         : "none";
+        if (!quadtree) {
+            // The quadtree's settings, when given without it: said, so a sweep over them shows why nothing moves.
+            std::string unused;
+            for (const char* name : {"middle_macro_max", "far_macro_max", "near_capacity"}) {
+                const ParamSpec& spec = *std::find_if(params_specs().begin(), params_specs().end(),
+                                                      [&](const ParamSpec& p) { return p.name == name; });
+                if (params.integer(name) != std::get<long long>(spec.default_value))
+                    unused += fmt::format("{}{} {}", unused.empty() ? "" : ", ", name, params.integer(name));
+            }
+            if (!unused.empty()) g.report["culling"] += " (" + unused + " unused: culling = \"quadtree\" only)";
+        }
+        if (quadtree)
+            grass::declare_quadtree(g, {near_band, middle_band, far_band}, uint32_t(params.integer("near_capacity")),
+                                    "near_capacity");
         if (culled) {
             // One cull per band, to the distances outside which its share of a cell is nothing.
             const auto band = [&](int representation, std::string prefix, uint32_t vertices) {
@@ -148,11 +204,14 @@ public:
         field.alpha_to_coverage = to_coverage && samples > 1;
         blades.settings = fmt::format("samples={} coverage={} culling={}", samples, g.report["coverage"], g.report["culling"]);
         if (culled) grass::use_cull_survivors(blades);
-        blades.record = [ground = grass::ground_state(), field, culled](PassContext& pc) {
+        if (quadtree) grass::use_quadtree_band(blades, near_band);
+        blades.record = [ground = grass::ground_state(), field, culled, quadtree, near_band](PassContext& pc) {
             grass::record_ground(pc, ground);
             pc.bind(pc.raster_pipeline(field));
             if (culled)
                 grass::draw_populations_culled(pc);
+            else if (quadtree)
+                grass::draw_quadtree_band(pc, near_band);
             else
                 for (const GeneratedPopulation& population : pc.populations()) pc.draw_population(population.name);
         };
@@ -160,13 +219,19 @@ public:
 
         // Middle: the volume's or the slices' band, then far: the image's.
         RasterState middle;
-        middle.vertex_spirv = btf ? std::span<const uint32_t>(grass_lod_slices_vert) : std::span<const uint32_t>(grass_lod_volume_vert);
-        middle.fragment_spirv = btf ? std::span<const uint32_t>(grass_lod_slices_frag) : std::span<const uint32_t>(grass_lod_volume_frag);
+        middle.vertex_spirv = btf        ? std::span<const uint32_t>(grass_lod_slices_vert)
+                              : quadtree ? std::span<const uint32_t>(grass_lod_volume_macro_vert)
+                                         : std::span<const uint32_t>(grass_lod_volume_vert);
+        middle.fragment_spirv = btf        ? std::span<const uint32_t>(grass_lod_slices_frag)
+                                : quadtree ? std::span<const uint32_t>(grass_lod_volume_macro_frag)
+                                           : std::span<const uint32_t>(grass_lod_volume_frag);
         g.passes.push_back(btf ? grass::slices_frame_pass(slices, middle, false, band_attachments(samples, false, false))
                                : grass::volume_frame_pass(volume, middle, false, band_attachments(samples, false, false)));
         RasterState quads;
-        quads.vertex_spirv = grass_lod_image_vert;
-        quads.fragment_spirv = grass_lod_image_frag;
+        quads.vertex_spirv = quadtree ? std::span<const uint32_t>(grass_lod_image_macro_vert)
+                                      : std::span<const uint32_t>(grass_lod_image_vert);
+        quads.fragment_spirv = quadtree ? std::span<const uint32_t>(grass_lod_image_macro_frag)
+                                        : std::span<const uint32_t>(grass_lod_image_frag);
         g.passes.push_back(grass::image_frame_pass(image, quads, false, band_attachments(samples, false, true)));
         if (samples > 1) g.passes.push_back(grass::clear_camera_depth_pass());
         return g;

@@ -17,8 +17,14 @@
     SHADER(real, image_full, (80.0, 0.0, 1e6),                                                               \
            "distance from which a cell is all image (maxBTF; Lemme's 8-slice level 1 ends at 80 m)")       \
     PLAN(integer, samples, (4, 1, 4), "MSAA samples of every band's pass: 1 or 4 (lavapipe's)")             \
-    PLAN(choice, culling, ("gpu", {"none", "gpu"}),                                                         \
-         "gpu: a compute pass per band keeps the copies whose box may be seen within the distances where that band draws anything (near to geometry_none, middle from geometry_full to image_full, far from image_start; grass.geometry's cull; the image is the same); none: every band draws every copy") \
+    PLAN(choice, culling, ("gpu", {"none", "gpu", "quadtree"}),                                             \
+         "gpu: a compute pass per band keeps the copies whose box may be seen within the distances where that band draws anything (near to geometry_none, middle from geometry_full to image_full, far from image_start; grass.geometry's cull; the image is the same); quadtree: Lemme's quadtree (§6.1-6.2), traversed on the CPU every frame, keeps the same cells and draws the middle and far bands as macro-cells (middle = volume only; the copies stay on the CPU); none: every band draws every copy") \
+    PLAN(integer, middle_macro_max, (40, 1, 4096),                                                          \
+         "culling = quadtree: the widest macro-cell (cells a side) the middle band draws (Lemme's football field: 40)") \
+    PLAN(integer, far_macro_max, (500, 1, 4096),                                                            \
+         "culling = quadtree: the widest macro-cell (cells a side) the far band draws (Lemme's football field: 500)") \
+    PLAN(integer, near_capacity, (8192, 1, 1048576),                                                        \
+         "culling = quadtree: the most cells the near band may draw in a frame (128 bytes each, on the GPU); a frame that keeps more fails, naming this parameter") \
     SHADER(choice, coverage, ("alpha_to_coverage", {"alpha_test", "alpha_to_coverage"}),                    \
            "how the near band's blade outline cuts (grass.geometry's coverage)")                          \
     PLAN(choice, middle, ("volume", {"volume", "slices"}),                                                    \

@@ -5,14 +5,26 @@
 // point (0.5, 0, 0.5), which mirroring keeps), computed per copy alike in every representation's
 // vertex stage, so the three agree on the cuts of every cell. Needs frame_uniforms.glsl and, in
 // grass.lod, GrassLodParams as the technique's block.
+#include "grass_macro_cells.h"
 #include "lod_selection.h"
 
-vec2 grass_representation_band(mat4 model) {
+// The band of a cell whose centre is `centre` (world).
+vec2 grass_representation_band_at(vec3 centre) {
 #ifdef GRASS_LOD_REPRESENTATION
-    float d = distance((model * vec4(0.5, 0.0, 0.5, 1.0)).xyz, frame.camera_position.xyz);
+    float d = distance(centre, frame.camera_position.xyz);
     return lod_band(GRASS_LOD_REPRESENTATION, lod_cuts(d, frame.technique.geometry_full, frame.technique.geometry_none,
                                                        frame.technique.image_start, frame.technique.image_full));
 #else
     return vec2(0.0, 1.0);
 #endif
+}
+
+// The band of the copy placed by `model`.
+vec2 grass_representation_band(mat4 model) { return grass_representation_band_at((model * vec4(0.5, 0.0, 0.5, 1.0)).xyz); }
+
+// The band of field cell `cell` of the macro-cells' field (grass_macro_cells.h): its centre is
+// the same point, computed from the field's placement instead of a copy's matrix.
+vec2 grass_macro_cell_band(GrassMacroField field, ivec2 cell) {
+    return grass_representation_band_at(field.origin_size.xyz +
+                                         vec3(float(cell.x) + 0.5, 0.0, float(cell.y) + 0.5) * field.origin_size.w);
 }

@@ -1,29 +1,5 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// grass.volume with macro-cells (Lemme §6.2): one carrier cuboid over a macro-cell's k x k cells
-// (fewer at the field's far edges), unmirrored, its q space the unit cube over the whole
-// macro-cell. Only the faces a ray leaves by are kept, as for one cell (grass_volume.vert).
+// grass.volume with macro-cells: one cuboid per macro-cell (shaders/grass_volume_macro_vertex.glsl).
 #include "grass_volume_params.h"
-#include "frame_uniforms.glsl"
-#include "grass_macro_cells.h"
-
-layout(set = 0, binding = 3, std140) uniform FieldBlock { GrassMacroField field; };
-
-layout(location = 0) in vec4 corner;      // q space: a corner of the unit cube
-layout(location = 1) in vec4 face_plane;  // outward normal xyz; w: dot(normal, q) on the face
-layout(location = 2) in vec4 macro;       // per instance: first cell x, z; span x, z
-
-layout(location = 0) out vec3 exit_q;
-layout(location = 1) flat out vec3 eye_q;
-layout(location = 2) flat out ivec4 macro_cells;
-
-void main() {
-    float size = field.origin_size.w;
-    vec3 origin = field.origin_size.xyz + vec3(macro.x, 0.0, macro.y) * size;
-    vec3 extent = vec3(macro.z, field.patch_top.x, macro.w) * size;
-    exit_q = corner.xyz;
-    eye_q = (frame.camera_position.xyz - origin) / extent;
-    macro_cells = ivec4(macro);
-    bool entry_face = dot(face_plane.xyz, eye_q) > face_plane.w;
-    gl_Position = entry_face ? vec4(2.0, 2.0, 2.0, 1.0) : frame.view_proj * vec4(origin + corner.xyz * extent, 1.0);
-}
+#include "grass_volume_macro_vertex.glsl"

@@ -93,7 +93,7 @@ std::string volume_albedo_name(const std::string& prefix) { return Names(prefix)
 void declare_volume_bake(FrameGraph& g, const VolumeSettings& s) {
     const Names names(s.prefix);
     const uint32_t n = s.slices;
-    const bool tiled = s.macro_cells > 0;
+    const bool tiled = s.macro_cells > 0 || s.selected_by.has_value();
     const ImageExtent extent = ImageExtent::texels(s.resolution, s.height_resolution);
     const std::vector<SliceBake> bakes = slice_bakes(n, s.prefix);
     g.images.push_back({.name = names.albedo, .format = VK_FORMAT_R32G32B32A32_SFLOAT, .extent = extent,
@@ -109,7 +109,7 @@ void declare_volume_bake(FrameGraph& g, const VolumeSettings& s) {
                              .persistent = true});
     for (const SliceBake& b : bakes)
         g.buffers.push_back({.name = b.camera, .bytes = sizeof(shader::PatchBake), .usage = kUniformBuffer});
-    if (tiled) {
+    if (s.macro_cells > 0) {  // a quadtree's bands share the field records it declares
         declare_macro_buffers(g);
         g.passes.push_back(macro_setup_pass(s.macro_cells));
     }
@@ -160,7 +160,19 @@ PassDecl volume_frame_pass(const VolumeSettings& s, const RasterState& per_cell,
                   use(names.normal, Use::sampled, 2), use(names.cuboid, Use::vertex)};
     frame.uses.insert(frame.uses.end(), attachments.begin(), attachments.end());
     const std::optional<RasterState> objects = ground ? std::optional<RasterState>(ground_state()) : std::nullopt;
-    if (macro > 0) {
+    if (s.selected_by) {
+        use_quadtree_band(frame, *s.selected_by);
+        RasterState volume = per_cell;
+        volume.vertices = macro_layout();
+        frame.settings = fmt::format("one cuboid per cell or macro-cell (at most {} a side) the quadtree's {} band keeps, "
+                                     "its exit faces drawn",
+                                     s.selected_by->max_macro, s.selected_by->name);
+        frame.record = [objects, volume, band = *s.selected_by, cuboid = names.cuboid](PassContext& pc) {
+            if (objects) record_ground(pc, *objects);
+            pc.bind(pc.raster_pipeline(volume));
+            draw_quadtree_band(pc, band, cuboid);
+        };
+    } else if (macro > 0) {
         if (!objects) throw std::logic_error("volume_frame_pass: macro-cells draw the ground in their pass");
         if (s.culled_by) throw std::logic_error("volume_frame_pass: macro-cells are not culled");
         frame.uses.push_back(use(macro_names::kField, Use::uniform, 3));

@@ -6,6 +6,8 @@
 #include "graph/frame_graph.hpp"
 #include "graph/raster_state.hpp"
 
+#include "../common/quadtree_passes.hpp"
+
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -23,6 +25,10 @@ struct VolumeSettings {
     // The frame pass draws the copies the cull of this prefix kept (grass_cull.hpp), not all
     // (per-cell cuboids only).
     std::optional<std::string> culled_by;
+    // The frame pass draws the macro-cells this band of a quadtree selects each frame
+    // (quadtree_passes.hpp), with the tiled bake; its shaders are the macro bodies
+    // (shaders/grass_volume_macro_*.glsl), given as `per_cell` to volume_frame_pass.
+    std::optional<QuadtreeBandDecl> selected_by;
 };
 
 // The vertices the frame pass draws per cell: a cuboid's 12 triangles.

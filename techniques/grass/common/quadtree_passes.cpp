@@ -1,0 +1,151 @@
+#include "quadtree_passes.hpp"
+
+#include "grass_passes.hpp"
+#include "grass_population.hpp"
+#include "macro_cells.hpp"
+#include "macro_passes.hpp"
+#include "patch_bake.hpp"
+#include "quadtree_selection.hpp"
+
+#include "core/error.hpp"
+#include "scene/population.hpp"
+
+#include <fmt/format.h>
+
+#include <array>
+
+namespace canopy::grass {
+
+namespace {
+
+bool draws_copies(const QuadtreeBandDecl& band) { return band.vertex_count == 0; }
+
+}  // namespace
+
+std::string quadtree_list(const std::string& band) { return band + "_quadtree_list"; }
+std::string quadtree_draw(const std::string& band) { return band + "_quadtree_draw"; }
+
+void declare_quadtree(FrameGraph& g, const std::vector<QuadtreeBandDecl>& bands, uint32_t copy_capacity,
+                      const std::string& capacity_parameter) {
+    g.needs.population_copies_on_gpu = false;
+    g.buffers.push_back({.name = macro_names::kCells, .bytes_per_copy = sizeof(shader::GrassCell),
+                         .usage = kStorageBuffer, .persistent = true});
+    g.buffers.push_back({.name = macro_names::kField, .bytes = sizeof(shader::GrassMacroField),
+                         .usage = kUniformBuffer, .persistent = true});
+    for (const QuadtreeBandDecl& band : bands) {
+        if (draws_copies(band))
+            g.buffers.push_back({.name = quadtree_list(band.name), .bytes = uint64_t(copy_capacity) * sizeof(PopulationInstance),
+                                 .usage = kVertexBuffer, .host_visible = true});
+        else
+            g.buffers.push_back({.name = quadtree_list(band.name), .bytes_per_copy = sizeof(glm::vec4),
+                                 .usage = kVertexBuffer, .host_visible = true});
+        g.buffers.push_back({.name = quadtree_draw(band.name),
+                             .bytes = draws_copies(band) ? sizeof(VkDrawIndexedIndirectCommand) : sizeof(VkDrawIndirectCommand),
+                             .usage = kIndirectBuffer, .host_visible = true});
+    }
+
+    // Load: the field's cells as the macro shaders read them, and its placement.
+    PassDecl setup{.name = "quadtree_setup", .kind = PassKind::copy, .phase = Phase::load};
+    setup.uses = {use(macro_names::kCells, Use::transfer_write), use(macro_names::kField, Use::transfer_write)};
+    setup.settings = "the first grass population's cells";
+    setup.record = [](PassContext& pc) {
+        const GeneratedPopulation* grass = first_grass(pc.populations());
+        if (!grass || grass->instances.empty()) return;
+        const GrassField field = grass_field_placement(grass->params);
+        const std::vector<shader::GrassCell> cells = grass_cells(field, grass->instances);
+        const shader::GrassMacroField placement =
+            macro_field(field, 0, cell_frame(prototype_bounds(grass)).max.y, grass->transmission);
+        pc.upload(macro_names::kCells, cells.data(), cells.size() * sizeof(shader::GrassCell));
+        pc.upload(macro_names::kField, &placement, sizeof(placement));
+    };
+    g.passes.push_back(std::move(setup));
+
+    // Every frame: the traversal, and each band's list and record.
+    PassDecl select{.name = "quadtree", .kind = PassKind::cpu};
+    std::string settings;
+    for (const QuadtreeBandDecl& band : bands) {
+        select.uses.push_back(use(quadtree_list(band.name), Use::transfer_write));
+        select.uses.push_back(use(quadtree_draw(band.name), Use::transfer_write));
+        settings += fmt::format("{}{} {}-{} {}", settings.empty() ? "" : "; ", band.name, band.min_distance,
+                                band.max_distance, draws_copies(band) ? "copies" : fmt::format("macro<={}", band.max_macro));
+    }
+    select.settings = fmt::format("{}; copy capacity {}", settings, copy_capacity);
+    select.run = [bands, copy_capacity, capacity_parameter](CpuPassContext& cc) {
+        const GeneratedPopulation* grass = first_grass(cc.populations());
+        size_t grass_populations = 0;
+        for (const GeneratedPopulation& p : cc.populations()) grass_populations += p.kind == kGrassPopulationKind;
+        if (grass_populations > 1)
+            throw GpuError(fmt::format("the quadtree draws one grass population, and the scene has {}: use culling = "
+                                       "\"gpu\", or one population",
+                                       grass_populations));
+        QuadtreeSelection selection;
+        QuadtreeField field;
+        if (grass && !grass->instances.empty()) {
+            const GrassField placement = grass_field_placement(grass->params);
+            field = {placement.cells, placement.origin, placement.cell_size, prototype_bounds(grass)};
+            std::vector<QuadtreeBand> tests;
+            for (const QuadtreeBandDecl& band : bands)
+                tests.push_back({band.min_distance, band.max_distance, draws_copies(band) ? 1u : band.max_macro});
+            selection = select_cells(field, tests, cc.frame().camera.position, cc.view_proj());
+        } else {
+            selection.bands.resize(bands.size());
+        }
+        cc.count("quadtree_nodes", double(selection.nodes_visited));
+        for (size_t b = 0; b < bands.size(); ++b) {
+            const QuadtreeBandDecl& band = bands[b];
+            const std::vector<QuadtreeNode>& nodes = selection.bands[b];
+            size_t cells = 0;
+            for (const QuadtreeNode& n : nodes) cells += n.cells();
+            cc.count(band.name + "_cells", double(cells));
+            cc.count(band.name + "_draws", double(nodes.size()));
+            if (draws_copies(band)) {
+                if (nodes.size() > copy_capacity)
+                    throw GpuError(fmt::format("the {} band keeps {} cells this frame, more than {} = {}: raise {} (each "
+                                               "costs {} bytes) or move the band's far end nearer",
+                                               band.name, nodes.size(), capacity_parameter, copy_capacity,
+                                               capacity_parameter, sizeof(PopulationInstance)));
+                std::vector<PopulationInstance> copies;
+                copies.reserve(nodes.size());
+                for (const QuadtreeNode& n : nodes)
+                    copies.push_back(grass->instances[size_t(n.first.y) * field.cells.x + n.first.x]);
+                VkDrawIndexedIndirectCommand draw{};
+                if (grass) {
+                    draw = cc.population_draw_arguments(grass->name);
+                    draw.instanceCount = uint32_t(copies.size());
+                }
+                if (!copies.empty()) cc.upload(quadtree_list(band.name), copies.data(), copies.size() * sizeof(PopulationInstance));
+                cc.upload(quadtree_draw(band.name), &draw, sizeof(draw));
+            } else {
+                std::vector<glm::vec4> macros;
+                macros.reserve(nodes.size());
+                for (const QuadtreeNode& n : nodes)
+                    macros.emplace_back(float(n.first.x), float(n.first.y), float(n.span.x), float(n.span.y));
+                const VkDrawIndirectCommand draw{band.vertex_count, uint32_t(macros.size()), 0, 0};
+                if (!macros.empty()) cc.upload(quadtree_list(band.name), macros.data(), macros.size() * sizeof(glm::vec4));
+                cc.upload(quadtree_draw(band.name), &draw, sizeof(draw));
+            }
+        }
+    };
+    g.passes.push_back(std::move(select));
+}
+
+void use_quadtree_band(PassDecl& pass, const QuadtreeBandDecl& band) {
+    if (!draws_copies(band)) {
+        pass.uses.push_back(use(macro_names::kField, Use::uniform, 3));
+        pass.uses.push_back(use(macro_names::kCells, Use::storage_read, 4));
+    }
+    pass.uses.push_back(use(quadtree_list(band.name), Use::vertex));
+    pass.uses.push_back(use(quadtree_draw(band.name), Use::indirect));
+}
+
+void draw_quadtree_band(PassContext& pc, const QuadtreeBandDecl& band, const std::string& vertex_buffer) {
+    if (draws_copies(band)) {
+        if (const GeneratedPopulation* grass = first_grass(pc.populations()))
+            pc.draw_population_indirect(grass->name, quadtree_list(band.name), quadtree_draw(band.name));
+        return;
+    }
+    const std::array<std::string, 2> buffers{vertex_buffer, quadtree_list(band.name)};
+    pc.draw_indirect(buffers, quadtree_draw(band.name));
+}
+
+}  // namespace canopy::grass

@@ -1,0 +1,51 @@
+// grass.lod's culling = "quadtree" as frame-graph pieces: Lemme's quadtree (quadtree_selection.hpp)
+// traversed by a CPU pass every frame, which writes, per band, what its raster pass draws and how
+// many (an indirect record, so the pass records without a readback): the near band the kept cells'
+// copies (PopulationInstance records, the blades drawn over them as the population's prototype),
+// the other bands their macro-cells (first cell, span: the macro shaders' per-instance vec4 over
+// the field's GrassCell records, macro_cells.hpp). The population's copies stay on the CPU
+// (GraphNeeds::population_copies_on_gpu = false): on the GPU the field costs its GrassCell records
+// and the bands' macro lists, O(cells), and the near band's copies, O(its capacity).
+#pragma once
+
+#include "graph/frame_graph.hpp"
+#include "graph/pass_context.hpp"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace canopy::grass {
+
+struct QuadtreeBandDecl {
+    std::string name;          // the band in counts and names: "near", "middle", "far"
+    float min_distance = 0.0f;  // lod_band_distances
+    float max_distance = 0.0f;
+    // 0: the band draws the population's copies of single cells (the blades); else macro-cells of
+    // at most `max_macro` cells a side, `vertex_count` vertices each (a cuboid, a quad).
+    uint32_t vertex_count = 0;
+    uint32_t max_macro = 1;
+};
+
+// Names of a band's buffers: "<name>_quadtree_list" (copies or macro-cells) and
+// "<name>_quadtree_draw" (its indirect record).
+std::string quadtree_list(const std::string& band);
+std::string quadtree_draw(const std::string& band);
+
+// The field's records (macro_names::kCells, kField) and their load-phase upload, the bands'
+// host-visible lists and records, and the frame's CPU pass `quadtree`. `copy_capacity`: the most
+// cells a copies band may keep in a frame (more fails the frame, naming `capacity_parameter`).
+// Counts per frame: <band>_cells (cells drawn), <band>_draws (instances: cells or macro-cells),
+// quadtree_nodes (nodes tested).
+void declare_quadtree(FrameGraph& g, const std::vector<QuadtreeBandDecl>& bands, uint32_t copy_capacity,
+                      const std::string& capacity_parameter);
+
+// The uses a pass drawing a band's list adds: a copies band's list (vertex) and record
+// (indirect); a macro band's also the field's records (uniform at binding 3, storage at 4).
+void use_quadtree_band(PassDecl& pass, const QuadtreeBandDecl& band);
+
+// Draws a copies band with the bound pipeline (the first grass population's prototype over the
+// kept copies), or a macro band: `vertex_buffer` (binding 0) once per macro-cell (binding 1).
+void draw_quadtree_band(PassContext& pc, const QuadtreeBandDecl& band, const std::string& vertex_buffer = "");
+
+}  // namespace canopy::grass

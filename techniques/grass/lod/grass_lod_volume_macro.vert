@@ -1,0 +1,6 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// grass.lod under culling = "quadtree": the middle band's macro-cell cuboids (shaders/grass_volume_macro_vertex.glsl, drawing each cell's band).
+#define GRASS_LOD_REPRESENTATION GRASS_LOD_VOLUME
+#include "grass_lod_params.h"
+#include "grass_volume_macro_vertex.glsl"

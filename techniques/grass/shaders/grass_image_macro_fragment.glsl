@@ -1,0 +1,31 @@
+// The image's fragment stage over macro-cells (grass.image with macro_cells, and grass.lod's far
+// band under culling = "quadtree"; Lemme §6.2, eq 6.6): each point of the macro-cell's quad shows
+// its own cell's copy of the tiled top view, mirrored by that cell's signs and cut by that cell's
+// densities and, in grass.lod, by that cell's band (grass_lod_band.glsl), as the one-quad-per-cell
+// path shows it; lit per pixel with the mirrored baked normal. Included after the technique's
+// parameter block.
+#include "frame_uniforms.glsl"
+#include "grass_density.h"
+#include "grass_macro_cells.h"
+#include "grass_shading.glsl"
+#include "grass_lod_band.glsl"
+
+layout(set = 0, binding = 1) uniform sampler2D slice_albedo;  // NEAREST: thresholds are not blended
+layout(set = 0, binding = 2) uniform sampler2D slice_normal;  // NEAREST
+layout(set = 0, binding = 3, std140) uniform FieldBlock { GrassMacroField field; };
+layout(set = 0, binding = 4, std430) readonly buffer CellBlock { GrassCell field_cells[]; };
+
+layout(location = 0) in vec3 world_position;
+layout(location = 1) in vec2 field_uv;
+layout(location = 2) flat in ivec4 macro_cells;
+layout(location = 0) out vec4 out_color;
+
+void main() {
+    ivec2 cell = grass_macro_cell(field_uv, macro_cells.xy, macro_cells.zw);
+    GrassCell c = field_cells[cell.y * field.cells.x + cell.x];
+    vec2 p = grass_macro_patch_point(field_uv, cell, c.signs.xy);  // the tiled bake frames the cell: uv = p
+    vec4 albedo = texture(slice_albedo, p);
+    if (!grass_blade_in_band(albedo.a, grass_root_density(c.densities, p), grass_macro_cell_band(field, cell))) discard;
+    vec3 n = grass_mirror_vector(texture(slice_normal, p).xyz, c.signs.xy);
+    out_color = grass_lit_output(albedo.rgb, world_position, n, 1.0, field.patch_top.y);
+}

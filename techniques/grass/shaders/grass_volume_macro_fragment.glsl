@@ -1,0 +1,74 @@
+// The volume's fragment stage over macro-cells (grass.volume with macro_cells, and grass.lod's
+// middle band under culling = "quadtree"; Lemme §6.2, eq 6.6): the ray walks the n k slice planes
+// of the macro-cell in each direction (volume_walk.h with n k planes), and each plane it meets
+// shows its own cell's copy of the tiled slices: the slice that cell's mirror puts there
+// (grass_macro_slice), read at the mirrored point, cut by that cell's densities and, in grass.lod,
+// by that cell's band (grass_lod_band.glsl), lit with the mirrored baked normal; composited front
+// to back as for one cell (grass_volume_fragment.glsl). The depth written is that of the first
+// blade met. Included after the technique's parameter block, which has `slices`.
+#include "frame_uniforms.glsl"
+#include "grass_density.h"
+#include "grass_macro_cells.h"
+#include "grass_shading.glsl"
+#include "grass_lod_band.glsl"
+#include "volume_walk.h"
+
+layout(set = 0, binding = 1) uniform sampler2DArray slice_albedo;  // NEAREST: thresholds are not blended
+layout(set = 0, binding = 2) uniform sampler2DArray slice_normal;  // NEAREST
+layout(set = 0, binding = 3, std140) uniform FieldBlock { GrassMacroField field; };
+layout(set = 0, binding = 4, std430) readonly buffer CellBlock { GrassCell field_cells[]; };
+
+layout(location = 0) in vec3 exit_q;
+layout(location = 1) flat in vec3 eye_q;
+layout(location = 2) flat in ivec4 macro_cells;
+layout(location = 0) out vec4 out_color;
+
+void main() {
+    int n = frame.technique.slices;
+    ivec2 first = macro_cells.xy, span = macro_cells.zw;
+    vec2 planes = vec2(n) * vec2(span);
+    float size = field.origin_size.w;
+    vec3 origin = field.origin_size.xyz + vec3(first.x, 0.0, first.y) * size;
+    vec3 extent = vec3(span.x, field.patch_top.x, span.y) * size;
+    vec3 to_exit = exit_q - eye_q;
+    vec3 e = eye_q + volume_entry(eye_q, to_exit) * to_exit;  // eq 5.4
+    vec3 d = exit_q - e;
+    VolumeWalk walk = volume_walk(e, d, planes);
+    vec3 color = vec3(0.0);
+    float alpha = 0.0;
+    vec3 first_blade = vec3(0.0);
+    ivec2 crossed = ivec2(0);
+    int steps = int(planes.x + planes.y) + 1;
+    for (int i = 0; i < steps; ++i) {
+        VolumeHit hit = volume_next_hit(walk, e, crossed, planes);
+        if (hit.lambda > 1.0) break;
+        crossed += hit.axis == 0 ? ivec2(1, 0) : ivec2(0, 1);
+        vec3 q = e + hit.lambda * d;
+        vec2 u = vec2(first) + q.xz * vec2(span);  // field coordinates
+        // Plane j of the macro-cell is plane j % n of its cell; the planes lie inside cells
+        // ((k + 0.5) / n), so the cell u is in is the plane's.
+        int plane = clamp(hit.slice, 0, (hit.axis == 0 ? span.x : span.y) * n - 1);
+        ivec2 cell = grass_macro_cell(u, first, span);
+        GrassCell c = field_cells[cell.y * field.cells.x + cell.x];
+        vec2 band = grass_macro_cell_band(field, cell);
+        vec2 s = c.signs.xy;
+        int slice = grass_macro_slice(plane % n, n, hit.axis == 0 ? s.x : s.y);
+        vec2 p = grass_macro_patch_point(u, cell, s);
+        if (hit.axis == 0) p.x = (float(slice) + 0.5) / float(n); else p.y = (float(slice) + 0.5) / float(n);
+        // Slices along x are baked looking along x (u = z), those along z looking along z (u = x).
+        vec3 texel = hit.axis == 0 ? vec3(p.y, 1.0 - q.y, float(slice)) : vec3(p.x, 1.0 - q.y, float(n + slice));
+        vec4 albedo = texture(slice_albedo, texel);
+        if (!grass_blade_in_band(albedo.a, grass_root_density(c.densities, p), band)) continue;
+        vec3 world = origin + q * extent;
+        vec3 normal = grass_mirror_vector(texture(slice_normal, texel).xyz, s);
+        vec3 radiance = grass_lit_output(albedo.rgb, world, normal, 1.0, field.patch_top.y).rgb;
+        if (alpha == 0.0) first_blade = world;
+        color += (1.0 - alpha) * radiance;  // eq 5.19 with a level-0 texel's alpha of 1
+        alpha += (1.0 - alpha);             // eq 5.20
+        if (alpha >= 0.999) break;          // "sufficient opacity"
+    }
+    if (alpha <= 0.0) discard;
+    vec4 clip = frame.view_proj * vec4(first_blade, 1.0);
+    gl_FragDepth = clip.z / clip.w;
+    out_color = vec4(color / alpha, 1.0);
+}

@@ -1,0 +1,255 @@
+// grass.lod with culling = "quadtree" (Lemme §6.1-6.2: a CPU traversal every frame, the middle and
+// far bands as macro-cells): with its bands pushed to either end it draws what grass.geometry,
+// grass.volume and grass.image (the last two with macro-cells of the same size) draw alone; across
+// a field in all three bands it covers as the representations do; its counts are the draws it
+// records; the field's copies stay on the CPU; and a frame that needs more near cells than it may
+// hold, or a scene with two grass populations, fails saying what to change.
+#include "support/bake_truth.hpp"
+
+#include "config/scene_config.hpp"
+#include "core/error.hpp"
+#include "core/registry.hpp"
+#include "render/frame_renderer.hpp"
+#include "scene/geometry.hpp"
+#include "scene/population.hpp"
+#include "support/test_gpu.hpp"
+
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <map>
+#include <string>
+
+using namespace canopy;
+
+namespace {
+
+using Values = std::map<std::string, ParamValue>;
+
+// 3 x 3 cells of 60 blades on a ground plane, seen from a low, standing eye: cells from about
+// 1 to 5 m away (test_grass_lod.cpp's field); `more` adds to the scene.
+Scene field_scene(const std::string& more = "") {
+    return parse_scene(R"([scene]
+name = "lod-quadtree"
+ambient = 0.2
+[camera]
+position = [1.5, 0.6, 4.6]
+target = [1.5, 0.0, 1.0]
+fov = 50
+near = 0.05
+far = 40
+[[light]]
+type = "directional"
+direction = [-0.3, -1, -0.2]
+casts_shadows = false
+[[object]]
+name = "ground"
+shape = "plane"
+size = [6, 6]
+albedo = [0.35, 0.25, 0.15]
+[[population]]
+name = "grass"
+kind = "grass"
+albedo = [0.1, 0.8, 0.1]
+params = { cells_x = 3, cells_z = 3, centre_x = 1.5, centre_z = 1.5, blades = 60, subdivisions = 3, width_min = 0.06, width_max = 0.1 }
+)" + more,
+                       "lod-quadtree.toml");
+}
+
+const Technique& technique(const std::string& name) {
+    const Technique* t = TechniqueRegistry::instance().find(name);
+    REQUIRE(t);
+    return *t;
+}
+
+std::unique_ptr<FrameRenderer> renderer(const Scene& scene, const std::string& name, const Values& values) {
+    const Technique& t = technique(name);
+    return std::make_unique<FrameRenderer>(test::gpu(), scene, build_scene_meshes(scene), 160, 96,
+                                           t.graph(ParamSet::resolve(t.params(), values, {}, {}, name)));
+}
+
+Image render(const Scene& scene, const std::string& name, const Values& values) {
+    auto r = renderer(scene, name, values);
+    r->render();
+    return r->read_color();
+}
+
+Values quadtree_values(double geometry_full, double geometry_none, double image_start, double image_full) {
+    return {{"geometry_full", geometry_full}, {"geometry_none", geometry_none}, {"image_start", image_start},
+            {"image_full", image_full},       {"samples", 1LL},                 {"coverage", std::string("alpha_test")},
+            {"slices", 4LL},                  {"resolution", 96LL},             {"height_resolution", 48LL},
+            {"image_resolution", 128LL},      {"culling", std::string("quadtree")},
+            {"middle_macro_max", 2LL},        {"far_macro_max", 2LL}};
+}
+
+float max_difference(const Image& a, const Image& b) {
+    REQUIRE(a.pixels.size() == b.pixels.size());
+    float m = 0.0f;
+    for (size_t i = 0; i < a.pixels.size(); ++i) m = std::max(m, std::abs(a.pixels[i] - b.pixels[i]));
+    return m;
+}
+
+double counter(const FrameTiming& t, const std::string& name) {
+    for (const auto& [n, v] : t.counters)
+        if (n == name) return v;
+    FAIL("no counter " << name);
+    return 0;
+}
+
+template <typename T>
+T read_record(FrameRenderer& r, const std::string& buffer) {
+    const std::vector<std::byte> bytes = r.read_buffer(buffer);
+    REQUIRE(bytes.size() >= sizeof(T));
+    T record;
+    std::memcpy(&record, bytes.data(), sizeof(T));
+    return record;
+}
+
+}  // namespace
+
+TEST_CASE("grass.lod quadtree: with its bands at either end it draws what each representation draws alone") {
+    const Scene scene = field_scene();
+    // The quadtree's nodes of at most 2 cells a side over 3 x 3 cells are grass.volume's and
+    // grass.image's macro-cells of 2: (0, 0) 2 x 2, (2, 0) 1 x 2, (0, 2) 2 x 1, (2, 2) 1 x 1.
+    const Image blades = render(scene, "grass.geometry", {{"samples", 1LL}, {"coverage", std::string("alpha_test")}});
+    const Image volume = render(scene, "grass.volume",
+                                {{"slices", 4LL}, {"resolution", 96LL}, {"height_resolution", 48LL}, {"macro_cells", 2LL}});
+    const Image image = render(scene, "grass.image", {{"resolution", 128LL}, {"macro_cells", 2LL}});
+    CHECK(grass::test::grass_pixels(blades) > 1000);
+    CHECK(grass::test::grass_pixels(volume) > 1000);
+    CHECK(grass::test::grass_pixels(image) > 400);
+    CHECK(max_difference(render(scene, "grass.lod", quadtree_values(1e6, 1e6, 1e6, 1e6)), blades) <= 1e-5f);
+    CHECK(max_difference(render(scene, "grass.lod", quadtree_values(0, 0, 1e6, 1e6)), volume) <= 1e-5f);
+    CHECK(max_difference(render(scene, "grass.lod", quadtree_values(0, 0, 0, 0)), image) <= 1e-5f);
+}
+
+TEST_CASE("grass.lod quadtree: a macro-cell's volume and image each draw only their own band of its cell's blades") {
+    // One cell seen from 80 m, 10 degrees off the vertical (rays straight down would run along the
+    // volume's slices), its centre where the image's ramp (0 to 160 m) is one half: no blades, the
+    // volume keeps thresholds in (0, 0.5], the image (0.5, 1]. So each pixel must show the nearer
+    // of the volume at density 0.5 and the image's texel where its blade's threshold is above 0.5
+    // (shown at density 1, not at 0.5), or nothing. A band that draws the other's blades breaks that.
+    const char* tilted =
+        "[camera]\nposition = [0.5, 78.784620, 14.391854]\ntarget = [0.5, 0, 0.5]\nup = [0, 0, -1]\nfov = 0.9\n"
+        "near = 40\nfar = 120";
+    const Scene full = grass::test::one_cell_scene(tilted, "density = 1.0");
+    const Scene half = grass::test::one_cell_scene(tilted, "density = 0.5");
+    const Values volume_values{{"slices", 4LL}, {"resolution", 96LL}, {"height_resolution", 48LL}, {"macro_cells", 1LL}};
+    const Values image_values{{"resolution", 128LL}, {"macro_cells", 1LL}};
+    const auto shown = [](const Scene& scene, const std::string& name, const Values& values) {
+        auto r = renderer(scene, name, values);
+        r->render();
+        return r->read_color_and_pixel_visibility();  // visibility: G = view depth, A = drawn
+    };
+    const auto volume_half = shown(half, "grass.volume", volume_values);
+    const auto image_half = shown(half, "grass.image", image_values);
+    const auto image_full = shown(full, "grass.image", image_values);
+    const auto lod = shown(full, "grass.lod", quadtree_values(0, 0, 0, 160));
+    int from_volume = 0, from_image = 0, wrong = 0;
+    for (int y = 0; y < lod.color.height; ++y)
+        for (int x = 0; x < lod.color.width; ++x) {
+            const float* expected = nullptr;
+            float depth = 1e30f;
+            if (grass::test::shows_grass(volume_half.color.at(x, y))) {
+                expected = volume_half.color.at(x, y);
+                depth = volume_half.visibility.at(x, y)[1];
+            }
+            const bool image_band = grass::test::shows_grass(image_full.color.at(x, y)) &&
+                                    !grass::test::shows_grass(image_half.color.at(x, y));
+            if (image_band && image_full.visibility.at(x, y)[1] < depth) expected = image_full.color.at(x, y);
+            if (expected) (expected == volume_half.color.at(x, y) ? from_volume : from_image)++;
+            const float* got = lod.color.at(x, y);
+            if (!expected) {
+                wrong += grass::test::shows_grass(got);
+                continue;
+            }
+            for (int c = 0; c < 3; ++c) wrong += std::abs(got[c] - expected[c]) > 1e-5f;
+        }
+    CAPTURE(from_volume);
+    CAPTURE(from_image);
+    CHECK(from_volume > 150);
+    CHECK(from_image > 100);
+    CHECK(wrong == 0);
+}
+
+TEST_CASE("grass.lod quadtree: a field in all three bands covers as the representations do, counting its draws") {
+    const Scene scene = field_scene();
+    Values values = quadtree_values(2.0, 2.6, 3.0, 3.4);
+    auto r = renderer(scene, "grass.lod", values);
+    const FrameTiming t = r->render();
+    const Image lod = r->read_color();
+    for (float v : lod.pixels) REQUIRE(std::isfinite(v));
+    // The counts are what the CPU pass wrote into the draws' records.
+    const auto near_draw = read_record<VkDrawIndexedIndirectCommand>(*r, "near_quadtree_draw");
+    const auto middle_draw = read_record<VkDrawIndirectCommand>(*r, "middle_quadtree_draw");
+    const auto far_draw = read_record<VkDrawIndirectCommand>(*r, "far_quadtree_draw");
+    CHECK(counter(t, "near_draws") == near_draw.instanceCount);
+    CHECK(counter(t, "near_cells") == near_draw.instanceCount);
+    CHECK(counter(t, "middle_draws") == middle_draw.instanceCount);
+    CHECK(counter(t, "far_draws") == far_draw.instanceCount);
+    CHECK(middle_draw.vertexCount == 36);
+    CHECK(far_draw.vertexCount == 6);
+    // Every band draws some cells and none all 9 (the first row is too near for the image, the
+    // last too far for the blades and the middle band); the nodes tested are few.
+    for (const char* band : {"near_cells", "middle_cells", "far_cells"}) {
+        CAPTURE(band);
+        CHECK(counter(t, band) >= 1);
+        CHECK(counter(t, band) < 9);
+    }
+    CHECK(counter(t, "quadtree_nodes") <= 1 + 4 + 9);
+    CHECK(t.uploaded_bytes > 0);
+
+    const Image blades = render(scene, "grass.geometry", {{"samples", 1LL}, {"coverage", std::string("alpha_test")}});
+    const Image image = render(scene, "grass.image", {{"resolution", 128LL}});
+    const auto lod_agreement = grass::test::compare_with_reference_hits(scene, lod);
+    const auto blades_agreement = grass::test::compare_with_reference_hits(scene, blades);
+    const auto image_agreement = grass::test::compare_with_reference_hits(scene, image);
+    CAPTURE(lod_agreement.differ);
+    CAPTURE(blades_agreement.differ);
+    CAPTURE(image_agreement.differ);
+    CHECK(lod_agreement.covered > 150);
+    CHECK(lod_agreement.differ <= std::max(blades_agreement.differ, image_agreement.differ) + lod_agreement.compared / 50);
+    CHECK(max_difference(lod, blades) > 0.1f);
+    CHECK(max_difference(lod, image) > 0.1f);
+}
+
+TEST_CASE("grass.lod quadtree: the field's copies stay on the CPU") {
+    const Scene scene = field_scene();
+    Values values = quadtree_values(2.0, 2.6, 3.0, 3.4);
+    const uint64_t quadtree_scene = renderer(scene, "grass.lod", values)->memory().scene_bytes;
+    values["culling"] = std::string("gpu");
+    values.erase("middle_macro_max");
+    values.erase("far_macro_max");
+    const uint64_t gpu_scene = renderer(scene, "grass.lod", values)->memory().scene_bytes;
+    CHECK(gpu_scene - quadtree_scene == 9 * sizeof(PopulationInstance));
+}
+
+TEST_CASE("grass.lod quadtree: more near cells than near_capacity, or two grass populations, fail the frame saying what to change") {
+    {
+        Values values = quadtree_values(1e6, 1e6, 1e6, 1e6);
+        values["near_capacity"] = 4LL;
+        auto r = renderer(field_scene(), "grass.lod", values);
+        CHECK_THROWS_WITH_AS(r->render(), doctest::Contains("raise near_capacity"), GpuError);
+    }
+    {
+        const Scene two = field_scene(R"([[population]]
+name = "more_grass"
+kind = "grass"
+albedo = [0.1, 0.8, 0.1]
+params = { cells_x = 2, cells_z = 2, blades = 10 }
+)");
+        auto r = renderer(two, "grass.lod", quadtree_values(2.0, 2.6, 3.0, 3.4));
+        CHECK_THROWS_WITH_AS(r->render(), doctest::Contains("one grass population"), GpuError);
+    }
+}
+
+TEST_CASE("grass.lod quadtree: the BTF slices have no macro-cells, so middle = slices is refused with it") {
+    const Technique& t = technique("grass.lod");
+    Values values = quadtree_values(2.0, 2.6, 3.0, 3.4);
+    values["middle"] = std::string("slices");
+    const auto conflict = t.conflict(ParamSet::resolve(t.params(), values, {}, {}, "grass.lod"));
+    REQUIRE(conflict);
+    CHECK(conflict->hint.find("middle = \"volume\"") != std::string::npos);
+}
