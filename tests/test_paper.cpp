@@ -226,3 +226,85 @@ TEST_CASE("time ratios keep two figures however small: a 70x speed-up does not p
     CHECK(ratio_number(0.0) == "0.00");
     CHECK(ratio_cell(Estimate{0.0142, {0.0139, 0.0145}, 10}) == "0.014 [0.014, 0.015]");
 }
+
+TEST_CASE("a row may time one pass, its share of the frame paired round by round; a claim may compare two columns") {
+    const std::string paper = R"(
+[paper]
+id = "T2"
+unit = "ms"
+column_key = "scene"
+columns = ["high", "ant"]
+baseline = "frame"
+[[paper.row]]
+label = "frame"
+technique = "shadow.hard"
+values = [10, 80]
+[[paper.row]]
+label = "lit pass"
+technique = "shadow.hard"
+pass = "lit"
+values = [5, 20]
+[[paper.claim]]
+text = "the lit pass is less than the frame"
+left = "lit pass"
+right = "frame"
+[[paper.claim]]
+text = "the high view is faster than the ant's"
+left = "frame"
+right = "frame"
+left_column = "high"
+right_column = "ant"
+)";
+    const Experiment e = load_experiment(write_experiment("pass.toml", paper), TechniqueRegistry::instance());
+    REQUIRE(e.paper);
+    CHECK(e.paper->rows[1].pass == "lit");
+    CHECK(e.paper->claims[1].left_column == "high");
+    // Two views, each its own group: the lit pass is a fixed share of each round's frame, however
+    // the rounds swing.
+    const auto view = [](const std::string& scene, double ms, double share, size_t group) {
+        CaseResult c = fake_case("shadow.hard", 0, alternating(ms, 0.8, 1.3), 0.0);
+        c.id = scene;
+        c.scene = scene;
+        c.group = group;
+        TimingSeries lit;
+        lit.name = "lit";
+        for (double s : c.gpu_frame.samples_ms) lit.samples_ms.push_back(share * s);
+        lit.stats = summarize(lit.samples_ms);
+        c.passes = {lit};
+        return c;
+    };
+    RunRecord run;
+    run.cases = {view("high", 10.0, 0.5, 0), view("ant", 80.0, 0.25, 1)};
+    const std::string report = paper_report(*e.paper, run);
+    CHECK(report.find("| lit pass | 0.50 → **0.50** [0.50, 0.50] | 0.25 → **0.25** [0.25, 0.25] |") != std::string::npos);
+    CHECK(report.find("5 ms / 5.") != std::string::npos);  // raw: the pass's own median
+    const auto verdicts = judge_claims(*e.paper, run);
+    REQUIRE(verdicts.size() == 2);
+    CHECK(verdicts[0].outcome == "holds");
+    CHECK(verdicts[1].outcome == "holds");
+    CHECK(verdicts[1].because.find("high vs ant") != std::string::npos);
+    CHECK(verdicts[1].because.find("not paired") != std::string::npos);
+    // A case without the pass: no number, not a verdict.
+    run.cases[0].passes.clear();
+    run.cases[1].passes.clear();
+    CHECK(judge_claims(*e.paper, run)[0].outcome == "not measured");
+}
+
+TEST_CASE("a claim across columns names both, and only both") {
+    const auto error_of = [](const std::string& claim) {
+        const std::string paper = "\n[paper]\nid = \"T3\"\ncolumns = [\"a\", \"b\"]\n[[paper.row]]\nlabel = \"x\"\n"
+                                  "technique = \"shadow.hard\"\n[[paper.claim]]\ntext = \"t\"\nleft = \"x\"\nright = \"x\"\n" +
+                                  claim;
+        try {
+            load_experiment(write_experiment("cross.toml", paper), TechniqueRegistry::instance());
+        } catch (const ConfigError& e) {
+            return e.formatted();
+        }
+        return std::string();
+    };
+    CHECK(error_of("left_column = \"a\"\n").find("needs both left_column and right_column") != std::string::npos);
+    CHECK(error_of("left_column = \"a\"\nright_column = \"c\"\n").find("'c' is not one of the paper's columns") !=
+          std::string::npos);
+    CHECK(error_of("left_column = \"a\"\nright_column = \"b\"\ncolumn = \"a\"\n").find("not column") != std::string::npos);
+    CHECK(error_of("left_column = \"a\"\nright_column = \"b\"\n").empty());
+}

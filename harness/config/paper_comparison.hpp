@@ -21,6 +21,9 @@ struct PaperRow {
     std::string technique;                     // "shadow.vsm"
     std::map<std::string, ParamValue> params;  // subset that must match
     std::vector<double> values;                // the paper's numbers, one per column (NaN: none)
+    // The row's time is this GPU pass's, not the whole frame's: a part of a frame the paper times
+    // apart (Lemme's t_g, t_v, t_i). "" = the frame.
+    std::string pass;
     SourceLocation where;
 };
 
@@ -34,6 +37,9 @@ struct PaperClaim {
     std::string relation = "less";  // less | greater | about ("better" in the config is read as less or greater)
     double tolerance = 0.15; // about: |left/right - 1| <= tolerance
     std::string column;      // only this column ("" = every column)
+    // Left measured in one column and right in another (e.g. two views of a scene, which are
+    // measured apart: the ratio is not paired); both or neither.
+    std::string left_column, right_column;
     SourceLocation where;
 };
 

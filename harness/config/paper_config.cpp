@@ -48,6 +48,7 @@ PaperRow read_row(TomlReader& r, const TechniqueRegistry& registry, size_t colum
         }
         params->finish();
     }
+    row.pass = r.get_string("pass", "");
     if (const toml::node* values = r.node("values")) {
         const toml::array* array = values->as_array();
         if (!array) throw r.error_at(*values, "'values' must be a list of numbers", "values = [481, 342, 142]");
@@ -109,8 +110,25 @@ PaperComparison read_paper(TomlReader& section, const TechniqueRegistry& registr
         claim.tolerance = r.get_float("tolerance", claim.tolerance);
         if (claim.tolerance < 0) throw r.error("tolerance", "'tolerance' must not be negative", "tolerance = 0.15");
         claim.column = r.get_string("column", "");
-        if (!claim.column.empty() && std::find(paper.columns.begin(), paper.columns.end(), claim.column) == paper.columns.end())
-            throw r.error("column", fmt::format("'{}' is not one of the paper's columns", claim.column), "use a label from columns");
+        const auto check_column = [&](std::string_view key, const std::string& column) {
+            if (!column.empty() && std::find(paper.columns.begin(), paper.columns.end(), column) == paper.columns.end()) {
+                const std::string near = closest_match(column, paper.columns);
+                throw r.error(key, fmt::format("'{}' is not one of the paper's columns", column),
+                              near.empty() ? "use a label from columns" : fmt::format("did you mean '{}'?", near));
+            }
+        };
+        check_column("column", claim.column);
+        claim.left_column = r.get_string("left_column", "");
+        claim.right_column = r.get_string("right_column", "");
+        check_column("left_column", claim.left_column);
+        check_column("right_column", claim.right_column);
+        if (claim.left_column.empty() != claim.right_column.empty())
+            throw r.error(claim.left_column.empty() ? "right_column" : "left_column",
+                          "a claim across columns needs both left_column and right_column",
+                          "left_column = \"high\"\nright_column = \"ant\"");
+        if (!claim.left_column.empty() && !claim.column.empty())
+            throw r.error("column", "a claim across columns takes left_column and right_column, not column",
+                          "remove column");
         r.finish();
         paper.claims.push_back(std::move(claim));
     }

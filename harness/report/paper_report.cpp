@@ -42,6 +42,22 @@ const CaseResult* find_case(const PaperComparison& paper, const RunRecord& run, 
     return nullptr;
 }
 
+// The row's times in case c: the frame's GPU time, or its pass's (PaperRow::pass); nullptr when
+// the case has no such pass.
+const TimingSeries* row_series(const PaperRow& row, const CaseResult& c) {
+    if (row.pass.empty()) return &c.gpu_frame;
+    for (const TimingSeries& p : c.passes)
+        if (p.name == row.pass) return &p;
+    return nullptr;
+}
+
+// Row `lr`'s time in case l over row `rr`'s in case r, with its interval.
+CaseRatio row_ratio(const PaperRow& lr, const CaseResult& l, const PaperRow& rr, const CaseResult& r) {
+    const TimingSeries *a = row_series(lr, l), *b = row_series(rr, r);
+    if (!a || !b) return {Estimate{kMissing, {kMissing, kMissing}, 0}, RatioPairing::unpaired};
+    return series_ratio(l, *a, r, *b);
+}
+
 const PaperRow* row_named(const PaperComparison& paper, const std::string& label) {
     for (const PaperRow& r : paper.rows)
         if (r.label == label) return &r;
@@ -54,10 +70,14 @@ double paper_time(const PaperComparison& paper, const PaperRow& row, size_t colu
     return paper.unit == "fps" ? 1000.0 / v : v;
 }
 
-// "time" (the GPU median) or a registered metric's claim name; NaN where the technique does not
-// declare the metric's group meaningful (ErrorColumns): such a column judges nothing.
-double metric_of(const CaseResult& c, const std::string& claim) {
-    if (claim == kTimeClaim) return c.gpu_frame.stats.median;
+// "time" (the row's GPU median: the frame's or its pass's) or a registered metric's claim name;
+// NaN where the technique does not declare the metric's group meaningful (ErrorColumns): such a
+// column judges nothing.
+double metric_of(const PaperRow& row, const CaseResult& c, std::string_view claim) {
+    if (claim == kTimeClaim) {
+        const TimingSeries* series = row_series(row, c);
+        return series ? series->stats.median : kMissing;
+    }
     const MetricInfo* metric = find_claim_metric(claim);
     if (!metric || !c.image_error) return kMissing;
     return metric->meaningful_value(*c.image_error);
@@ -102,16 +122,27 @@ std::vector<ClaimVerdict> judge_claims(const PaperComparison& paper, const RunRe
         int measured = 0, holding = 0, failing = 0;
         size_t fewest_samples = std::numeric_limits<size_t>::max();
         const bool timing = claim.metric == kTimeClaim;
-        for (size_t col = 0; col < paper.columns.size(); ++col) {
-            if (!claim.column.empty() && paper.columns[col] != claim.column) continue;
+        const auto column_index = [&](const std::string& label) {
+            return size_t(std::find(paper.columns.begin(), paper.columns.end(), label) - paper.columns.begin());
+        };
+        // Column pairs (left's, right's): each column with itself, or the one pair across columns.
+        std::vector<std::pair<size_t, size_t>> pairs;
+        if (!claim.left_column.empty())
+            pairs.emplace_back(column_index(claim.left_column), column_index(claim.right_column));
+        else
+            for (size_t col = 0; col < paper.columns.size(); ++col)
+                if (claim.column.empty() || paper.columns[col] == claim.column) pairs.emplace_back(col, col);
+        for (const auto& [col, right_col] : pairs) {
             const CaseResult* l = find_case(paper, run, *left, col);
-            const CaseResult* r = find_case(paper, run, *right, col);
+            const CaseResult* r = find_case(paper, run, *right, right_col);
             if (!l || !r) continue;
+            const std::string where = col == right_col ? paper.columns[col]
+                                                       : paper.columns[col] + " vs " + paper.columns[right_col];
             bool holds = false, fails = false;
             if (timing) {
                 // left / right with its 95 % interval: a claim is decided only when the interval
                 // lies wholly on one side.
-                const CaseRatio ratio = time_ratio(*l, *r);
+                const CaseRatio ratio = row_ratio(*left, *l, *right, *r);
                 const Estimate& e = ratio.estimate;
                 if (std::isnan(e.value)) continue;
                 ++measured;
@@ -126,12 +157,12 @@ std::vector<ClaimVerdict> judge_claims(const PaperComparison& paper, const RunRe
                     holds = e.ci.low >= 1.0 - claim.tolerance && e.ci.high <= 1.0 + claim.tolerance;
                     fails = e.ci.low > 1.0 + claim.tolerance || e.ci.high < 1.0 - claim.tolerance;
                 }
-                numbers += fmt::format("{}{}: {} vs {} ms, ratio {}{}", numbers.empty() ? "" : "; ", paper.columns[col],
-                                       number(l->gpu_frame.stats.median, "{:.4g}"),
-                                       number(r->gpu_frame.stats.median, "{:.4g}"), ratio_cell(e),
+                numbers += fmt::format("{}{}: {} vs {} ms, ratio {}{}", numbers.empty() ? "" : "; ", where,
+                                       number(metric_of(*left, *l, kTimeClaim), "{:.4g}"),
+                                       number(metric_of(*right, *r, kTimeClaim), "{:.4g}"), ratio_cell(e),
                                        ratio.pairing == RatioPairing::unpaired ? " (not paired: other groups)" : "");
             } else {
-                const double a = metric_of(*l, claim.metric), b = metric_of(*r, claim.metric);
+                const double a = metric_of(*left, *l, claim.metric), b = metric_of(*right, *r, claim.metric);
                 if (std::isnan(a) || std::isnan(b)) continue;
                 ++measured;
                 // Renders are deterministic: no noise band.
@@ -146,7 +177,7 @@ std::vector<ClaimVerdict> judge_claims(const PaperComparison& paper, const RunRe
                     holds = std::abs(a - b) <= allowed;
                     fails = !holds;
                 }
-                numbers += fmt::format("{}{}: {} vs {}{}", numbers.empty() ? "" : "; ", paper.columns[col],
+                numbers += fmt::format("{}{}: {} vs {}{}", numbers.empty() ? "" : "; ", where,
                                        number(a, "{:.4g}"), number(b, "{:.4g}"),
                                        claim.relation == "about" && b != 0.0 ? fmt::format(" (ratio {:.2f})", a / b) : "");
             }
@@ -197,7 +228,7 @@ std::string paper_report(const PaperComparison& paper, const RunRecord& run) {
                 const CaseResult* mine_base = find_case(paper, run, *base, col);
                 std::string canopy_ratio = "-";
                 if (mine && mine_base) {
-                    const Estimate e = time_ratio(*mine, *mine_base).estimate;
+                    const Estimate e = row_ratio(row, *mine, *base, *mine_base).estimate;
                     if (!std::isnan(e.value))
                         canopy_ratio = fmt::format("**{}** [{}, {}]", ratio_number(e.value), ratio_number(e.ci.low),
                                                    ratio_number(e.ci.high));
@@ -208,12 +239,18 @@ std::string paper_report(const PaperComparison& paper, const RunRecord& run) {
         }
         out += fmt::format("## Frame time relative to {} (paper → **canopy**)\n\n", paper.baseline);
         out += table(header, rows);
-        out += fmt::format("\nPaper: time = {}; canopy: GPU time of all passes (Vulkan timestamps) relative to the "
+        bool pass_rows = false;
+        for (const PaperRow& row : paper.rows) pass_rows = pass_rows || !row.pass.empty();
+        out += fmt::format("\nPaper: time = {}; canopy: GPU time of all passes (Vulkan timestamps{}) relative to the "
                            "baseline row, paired sample by sample (cases of one scene and resolution are measured "
                            "together, round by round, each sample between two of the group's baseline), median over "
                            "the rounds, [95 % block-bootstrap interval]. Ratios "
                            "compare, absolute times do not: the paper ran on a 2008-2010 GPU, canopy on {}.\n\n",
-                           paper.unit == "fps" ? "1000 / fps" : "ms", e.device.name);
+                           paper.unit == "fps" ? "1000 / fps" : "ms",
+                           pass_rows ? "; a row naming a pass: that pass's, its share of the baseline's frame when the "
+                                       "two rows are one case"
+                                     : "",
+                           e.device.name);
     }
 
     // Raw numbers.
@@ -223,10 +260,10 @@ std::string paper_report(const PaperComparison& paper, const RunRecord& run) {
         for (size_t col = 0; col < paper.columns.size(); ++col) {
             const CaseResult* mine = find_case(paper, run, row, col);
             const std::string paper_value = row.values.empty() ? "-" : number(row.values[col], "{:.4g}") + " " + paper.unit;
+            const TimingSeries* series = mine ? row_series(row, *mine) : nullptr;
             cells.push_back(fmt::format("{} / {}", paper_value,
-                                        mine ? fmt::format("{:.2f} ± {:.2f} ms", mine->gpu_frame.stats.median,
-                                                           mine->gpu_frame.stats.mad)
-                                             : std::string("-")));
+                                        series ? fmt::format("{:.2f} ± {:.2f} ms", series->stats.median, series->stats.mad)
+                                               : std::string("-")));
         }
         raw.push_back(cells);
     }
@@ -244,7 +281,8 @@ std::string paper_report(const PaperComparison& paper, const RunRecord& run) {
                 std::vector<std::string> cells{row.label};
                 for (size_t col = 0; col < paper.columns.size(); ++col) {
                     const CaseResult* mine = find_case(paper, run, row, col);
-                    cells.push_back(mine ? number(metric_of(*mine, claim), "{:.4g}") : "-");
+                    // A pass's row is a part of a frame: the frame's image error is its whole row's.
+                    cells.push_back(mine && row.pass.empty() ? number(metric_of(row, *mine, claim), "{:.4g}") : "-");
                     any_value = any_value || cells.back() != "-";
                 }
                 rows.push_back(cells);

@@ -24,4 +24,18 @@ CaseRatio time_ratio(const CaseResult& a, const CaseResult& b) {
     return {ratio_of_medians_with_ci(a.gpu_frame.samples_ms, b.gpu_frame.samples_ms, seed), RatioPairing::unpaired};
 }
 
+CaseRatio series_ratio(const CaseResult& a, const TimingSeries& a_series, const CaseResult& b,
+                       const TimingSeries& b_series) {
+    if (&a_series == &a.gpu_frame && &b_series == &b.gpu_frame) return time_ratio(a, b);
+    const bool same_chunk = a.scene == b.scene && a.resolution.width == b.resolution.width &&
+                            a.resolution.height == b.resolution.height && a.group == b.group && a.chunk == b.chunk;
+    if (same_chunk && !a_series.samples_ms.empty() && a_series.samples_ms.size() == b_series.samples_ms.size())
+        return {paired_ratio(a_series.samples_ms, b_series.samples_ms, a.id + "/" + a_series.name + "/" + b.id + "/" + b_series.name)
+                    .estimate,
+                RatioPairing::rounds};
+    return {ratio_of_medians_with_ci(a_series.samples_ms, b_series.samples_ms,
+                                     bootstrap_seed(a.id + "/" + a_series.name + "/" + b.id + "/" + b_series.name)),
+            RatioPairing::unpaired};
+}
+
 }  // namespace canopy

@@ -20,4 +20,10 @@ struct CaseRatio {
 
 CaseRatio time_ratio(const CaseResult& a, const CaseResult& b);
 
+// The same for two of their series (a pass's, or the frame's: one of the cases' TimingSeries),
+// e.g. a pass of a case against its own frame: paired round by round within one group and chunk
+// (the rounds line up), otherwise not.
+CaseRatio series_ratio(const CaseResult& a, const TimingSeries& a_series, const CaseResult& b,
+                       const TimingSeries& b_series);
+
 }  // namespace canopy
