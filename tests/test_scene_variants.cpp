@@ -3,6 +3,7 @@
 // or value names its line and the fix, as in a scene file.
 #include "config/experiment_config.hpp"
 #include "core/registry.hpp"
+#include "scene/population_kind.hpp"
 #include "support/config_error_of.hpp"
 #include "support/temp_folder.hpp"
 #include "support/text_search.hpp"
@@ -48,6 +49,48 @@ TEST_CASE("a scene variant's camera mistakes name their line and the fix") {
         REQUIRE(error.has_value());
         CAPTURE(error->formatted());
         CHECK(error->line() == 4);
+        CHECK(test::contains(error->formatted(), words));
+    }
+}
+
+TEST_CASE("a scene variant's populations = { name = { ... } } replaces those parameters and generates the copies again") {
+    test::TempFolder folder;
+    folder.write("scene.toml",
+                 "[[light]]\ntype = \"directional\"\n[[population]]\nname = \"grass\"\nkind = \"grass\"\n"
+                 "params = { cells_x = 3, cells_z = 2, blades = 40 }\n");
+    const std::filesystem::path file = folder.write(
+        "experiment.toml",
+        "[experiment]\nscenes = [\"scene.toml\", { file = \"scene.toml\", name = \"quick\", populations = { grass = { "
+        "blades = 10, width_min = 0.02, width_max = 0.04 } } }]\n[[technique]]\nname = \"grass.geometry\"\n");
+    const Experiment e = load_experiment(file, TechniqueRegistry::instance());
+    REQUIRE(e.scenes.size() == 2);
+    const Population& full = e.scenes[0].populations.at(0);
+    const Population& quick = e.scenes[1].populations.at(0);
+    CHECK(full.params.integer("blades") == 40);
+    CHECK(quick.params.integer("blades") == 10);
+    CHECK(quick.params.real("width_max") == doctest::Approx(0.04));
+    CHECK(quick.params.integer("cells_x") == 3);  // kept
+    REQUIRE(full.family);
+    REQUIRE(quick.family);
+    CHECK(quick.family->instances.size() == 6);
+    CHECK(quick.family->prototype.triangle_count() * 4 == full.family->prototype.triangle_count());
+
+    const auto error_of = [&](const std::string& populations) {
+        const std::filesystem::path bad = folder.write(
+            "bad.toml", "[experiment]\nscenes = [\n  { file = \"scene.toml\", name = \"v\", populations = " + populations +
+                            " },\n]\n[[technique]]\nname = \"grass.geometry\"\n");
+        return test::config_error_of([&] { load_experiment(bad, TechniqueRegistry::instance()); });
+    };
+    for (const auto& [populations, words] : std::vector<std::pair<std::string, std::string>>{
+             {"{ gras = { blades = 10 } }", "did you mean 'grass'"},
+             {"{ grass = { blades = 0 } }", "blades"},
+             {"{ grass = { bladez = 10 } }", "bladez"},
+             {"{ grass = { width_min = 0.5, width_max = 0.1 } }", "cannot be generated"}}) {
+        CAPTURE(populations);
+        const auto error = error_of(populations);
+        REQUIRE(error.has_value());
+        CAPTURE(error->formatted());
+        CHECK(error->line() == 3);
         CHECK(test::contains(error->formatted(), words));
     }
 }

@@ -5,6 +5,7 @@
 #include "config/scene_config.hpp"
 #include "config/paper_config.hpp"
 #include "config/toml_reader.hpp"
+#include "scene/population_kind.hpp"
 #include "scene/scene_limits.hpp"
 
 #include <fmt/format.h>
@@ -74,6 +75,52 @@ void apply_scene_variant(TomlReader& variant, Scene& scene) {
         const bool casts = variant.get_bool("casts_shadows", true);
         for (Object& object : scene.objects) object.casts_shadows = casts;
         for (Population& population : scene.populations) population.prototype.casts_shadows = casts;
+    }
+    // Parameters of a family's populations, by population name, replacing the scene's (e.g. a
+    // quick variant of a field with fewer, wider blades); the copies are generated again.
+    if (std::optional<TomlReader> populations = variant.get_table("populations", "the scene variant's populations")) {
+        for (auto&& [key, value] : populations->table()) {
+            const std::string name(key.str());
+            auto it = std::find_if(scene.populations.begin(), scene.populations.end(),
+                                   [&](const Population& p) { return p.name == name; });
+            std::vector<std::string> names;
+            for (const Population& p : scene.populations) names.push_back(p.name);
+            if (it == scene.populations.end()) {
+                const std::string near = closest_match(name, names);
+                throw populations->error_at(value, fmt::format("scene '{}' has no population '{}'", scene.name, name),
+                                            near.empty() ? "name one of the scene's [[population]] entries"
+                                                         : fmt::format("did you mean '{}'?", near));
+            }
+            const PopulationKind* kind = it->family ? PopulationKindRegistry::instance().find(it->kind) : nullptr;
+            if (!kind)
+                throw populations->error_at(value, fmt::format("population '{}' is of kind '{}', which has no parameters "
+                                                               "to change",
+                                                               name, it->kind),
+                                            "populations = { ... } changes the params of a family's population kind");
+            std::optional<TomlReader> overrides = populations->get_table(name, fmt::format("population '{}'", name));
+            if (!overrides) continue;
+            std::map<std::string, ParamValue> given(it->params.values().begin(), it->params.values().end());
+            std::map<std::string, int> lines;
+            for (auto&& [param, param_value] : overrides->table()) {
+                if (!is_param_scalar(param_value))
+                    throw overrides->error_at(param_value, fmt::format("parameter '{}' must be one value", param.str()),
+                                              "`canopy list` shows each population kind's parameters");
+                given[std::string(param.str())] = to_param_value(param_value);
+                lines[std::string(param.str())] = int(param.source().begin.line);
+                overrides->node(param.str());  // read: finish() names only keys nobody read
+            }
+            overrides->finish();
+            const SourceLocation where{variant.file(), variant.line()};
+            it->params = ParamSet::resolve(kind->params(), given, lines, where, fmt::format("population kind '{}'", kind->name()));
+            try {
+                it->family = std::make_shared<const FamilyPopulation>(kind->generate(it->params));
+            } catch (const std::invalid_argument& e) {
+                throw ConfigError(variant.file(), variant.line(),
+                                  fmt::format("population '{}' (kind '{}') cannot be generated: {}", name, kind->name(), e.what()),
+                                  "`canopy list` shows the kind's parameters and their ranges");
+            }
+        }
+        populations->finish();
     }
     variant.finish();
 }
