@@ -4,8 +4,8 @@
 #include "config/file_name_rules.hpp"
 #include "config/scene_config.hpp"
 #include "config/paper_config.hpp"
+#include "config/population_overrides.hpp"
 #include "config/toml_reader.hpp"
-#include "scene/population_kind.hpp"
 #include "scene/scene_limits.hpp"
 
 #include <fmt/format.h>
@@ -91,15 +91,9 @@ void apply_scene_variant(TomlReader& variant, Scene& scene) {
                                             near.empty() ? "name one of the scene's [[population]] entries"
                                                          : fmt::format("did you mean '{}'?", near));
             }
-            const PopulationKind* kind = it->family ? PopulationKindRegistry::instance().find(it->kind) : nullptr;
-            if (!kind)
-                throw populations->error_at(value, fmt::format("population '{}' is of kind '{}', which has no parameters "
-                                                               "to change",
-                                                               name, it->kind),
-                                            "populations = { ... } changes the params of a family's population kind");
             std::optional<TomlReader> overrides = populations->get_table(name, fmt::format("population '{}'", name));
             if (!overrides) continue;
-            std::map<std::string, ParamValue> given(it->params.values().begin(), it->params.values().end());
+            std::map<std::string, ParamValue> given;
             std::map<std::string, int> lines;
             for (auto&& [param, param_value] : overrides->table()) {
                 if (!is_param_scalar(param_value))
@@ -110,15 +104,7 @@ void apply_scene_variant(TomlReader& variant, Scene& scene) {
                 overrides->node(param.str());  // read: finish() names only keys nobody read
             }
             overrides->finish();
-            const SourceLocation where{variant.file(), variant.line()};
-            it->params = ParamSet::resolve(kind->params(), given, lines, where, fmt::format("population kind '{}'", kind->name()));
-            try {
-                it->family = std::make_shared<const FamilyPopulation>(kind->generate(it->params));
-            } catch (const std::invalid_argument& e) {
-                throw ConfigError(variant.file(), variant.line(),
-                                  fmt::format("population '{}' (kind '{}') cannot be generated: {}", name, kind->name(), e.what()),
-                                  "`canopy list` shows the kind's parameters and their ranges");
-            }
+            override_population_params(*it, given, lines, SourceLocation{variant.file(), variant.line()});
         }
         populations->finish();
     }

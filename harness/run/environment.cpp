@@ -2,6 +2,7 @@
 
 #include "run/heap_settings.hpp"
 
+#include <fmt/chrono.h>
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
@@ -9,6 +10,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -209,5 +211,7 @@ void from_json(const nlohmann::json& j, Environment& e) {
             e.caches.push_back({c.at("type").get<std::string>(), c.at("level").get<int>(), c.at("size").get<long long>(),
                                 c.at("num_sharing").get<int>()});
 }
+
+std::string utc_now() { return fmt::format("{:%Y-%m-%dT%H:%M:%SZ}", fmt::gmtime(std::time(nullptr))); }
 
 }  // namespace canopy

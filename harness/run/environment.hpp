@@ -50,4 +50,7 @@ void to_json(nlohmann::json& j, const Environment& e);
 // Reads back what to_json wrote; fields a record lacks keep their defaults.
 void from_json(const nlohmann::json& j, Environment& e);
 
+// Now as results record times: ISO 8601, UTC ("2026-12-04T05:10:31Z").
+std::string utc_now();
+
 }  // namespace canopy

@@ -1,3 +1,4 @@
+#include "run/environment.hpp"
 #include "run/experiment_runner.hpp"
 
 #include "config/experiment_config.hpp"
@@ -33,7 +34,6 @@ namespace canopy {
 
 namespace {
 
-std::string utc_now() { return fmt::format("{:%Y-%m-%dT%H:%M:%SZ}", fmt::gmtime(std::time(nullptr))); }
 
 const TechniqueEntry* entry_for(const Experiment& experiment, const std::string& technique) {
     for (const auto& entry : experiment.techniques)

@@ -1,3 +1,4 @@
+#include "run/environment.hpp"
 #include "run/group_measurement.hpp"
 
 #include "metrics/comparable_pair.hpp"
@@ -28,7 +29,6 @@ double process_cpu_ms() {
     return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
 }
 
-std::string utc_now() { return fmt::format("{:%Y-%m-%dT%H:%M:%SZ}", fmt::gmtime(std::time(nullptr))); }
 
 TimingSeries series(std::string name, std::vector<double> samples) {
     TimingSeries t{std::move(name), std::move(samples), {}};
