@@ -29,6 +29,9 @@ using test::contains;
 
 namespace {
 
+// The copies generate_instances returns, by value (a scatter population's are owned by the result alone).
+std::vector<PopulationInstance> instances_of(const Population& population) { return *generate_instances(population); }
+
 // A floor with a population of small boxes on it; `population_lines` replaces the population's keys.
 const std::string kHeader = "[scene]\nname = \"meadow\"\n"
                             "[camera]\nposition = [0, 6, 4]\ntarget = [0, 0, 0]\n"
@@ -91,7 +94,7 @@ TEST_CASE("population: an alpha mask loads, reaches every copy and cuts what alp
     CHECK(mask.period == 0.25f);
     CHECK(mask.opaque == 0.4f);
     CHECK(meadow().populations[0].alpha_mask.kind == AlphaMask::Kind::none);  // none unless asked
-    for (const PopulationInstance& copy : generate_instances(scene.populations[0]))
+    for (const PopulationInstance& copy : instances_of(scene.populations[0]))
         CHECK(copy.data == glm::vec4(shader::ALPHA_MASK_STRIPES, 2.0f, 0.25f, 0.4f));
 
     // The function the fragment shader and the reference's filter both call.
@@ -116,7 +119,7 @@ TEST_CASE("population: an alpha mask loads, reaches every copy and cuts what alp
 
 TEST_CASE("population: the generator is deterministic, stays in its region and ranges, and copy k ignores count") {
     const Population p = meadow().populations[0];
-    const std::vector<PopulationInstance> a = generate_instances(p), b = generate_instances(p);
+    const std::vector<PopulationInstance> a = instances_of(p), b = instances_of(p);
     REQUIRE(a.size() == 50);
     std::set<float> yaws_cos, scales;
     for (size_t i = 0; i < a.size(); ++i) {
@@ -142,20 +145,20 @@ TEST_CASE("population: the generator is deterministic, stays in its region and r
 
     Population fewer = p;
     fewer.count = 20;
-    const std::vector<PopulationInstance> c = generate_instances(fewer);
+    const std::vector<PopulationInstance> c = instances_of(fewer);
     REQUIRE(c.size() == 20);
     for (size_t i = 0; i < c.size(); ++i) CHECK(std::memcmp(&a[i], &c[i], sizeof(PopulationInstance)) == 0);
 
     Population reseeded = p;
     reseeded.seed = 8;
-    const std::vector<PopulationInstance> d = generate_instances(reseeded);
+    const std::vector<PopulationInstance> d = instances_of(reseeded);
     int moved = 0;
     for (size_t i = 0; i < d.size(); ++i) moved += d[i].model[3] != a[i].model[3];
     CHECK(moved == 50);
 
     Population upright = p;
     upright.random_yaw = false;
-    for (const PopulationInstance& copy : generate_instances(upright)) CHECK(copy.model[0].z == 0.0f);
+    for (const PopulationInstance& copy : instances_of(upright)) CHECK(copy.model[0].z == 0.0f);
 }
 
 TEST_CASE("population: the copies cover their region evenly") {
@@ -241,7 +244,7 @@ TEST_CASE("population: prototype meshes follow the objects', and copies stay wit
     CHECK(meshes[0].triangle_count() == 2);                          // the floor
     // The scene's bounds hold every copy (e.g. for a light view).
     const Bounds bounds = scene_bounds(scene, meshes);
-    for (const PopulationInstance& copy : generate_instances(scene.populations[0]))
+    for (const PopulationInstance& copy : instances_of(scene.populations[0]))
         CHECK(glm::vec3(copy.model[3]).y >= bounds.min.y);
 
     // 1e6 copies of a 960-triangle sphere (1e9 triangles) are fine: the reference stores the
@@ -271,7 +274,7 @@ TEST_CASE("population: the reference traces every copy, for camera and shadow ra
     CHECK(embree.geometry(1).prototype_triangles == 12);
     CHECK(embree.material(1).albedo == glm::vec3(0.9f, 0.2f, 0.1f));
 
-    const std::vector<PopulationInstance> copies = generate_instances(scene.populations[0]);
+    const std::vector<PopulationInstance> copies = instances_of(scene.populations[0]);
     int hits = 0, occluded = 0, right_copy = 0, upright = 0;
     for (size_t k = 0; k < copies.size(); ++k) {
         // The centre of the copy's top face: the box's local top (y = 0.1), lifted by its own translate.
@@ -386,6 +389,6 @@ TEST_CASE("population: generate_populations hands the raster side the declared k
     CHECK(generated[0].name == "pebbles");
     CHECK(generated[0].prototype.triangle_count() == 12);
     REQUIRE(generated[0].instances.size() == 50);
-    CHECK(std::memcmp(generated[0].instances.data(), generate_instances(scene.populations[0]).data(),
+    CHECK(std::memcmp(generated[0].instances.data(), generate_instances(scene.populations[0])->data(),
                       50 * sizeof(PopulationInstance)) == 0);
 }

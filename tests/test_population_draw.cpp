@@ -176,7 +176,7 @@ struct ReferencePixel {
 std::vector<ReferencePixel> reference_pixels(const Scene& scene) {
     const EmbreeScene embree(scene, build_scene_meshes(scene));
     std::vector<std::vector<PopulationInstance>> copies;
-    for (const Population& population : scene.populations) copies.push_back(generate_instances(population));
+    for (const Population& population : scene.populations) copies.push_back(*generate_instances(population));
     const std::vector<std::optional<test::ReferenceHit>> hits = test::reference_hits(scene, embree, kWidth, kHeight);
     std::vector<ReferencePixel> pixels(size_t(kWidth) * kHeight);
     for (size_t i = 0; i < hits.size(); ++i) {
@@ -399,7 +399,7 @@ TEST_CASE("population draw: the harness uploads populations only for a graph tha
 
 TEST_CASE("population draw: a buffer declared per copy is sized by the copies of the graph's kinds") {
     const Scene scene = field();  // 40 copies
-    REQUIRE(generate_instances(scene.populations.at(0)).size() == 40);
+    REQUIRE(generate_instances(scene.populations.at(0))->size() == 40);
     FrameGraph graph = population_graph();
     graph.buffers.push_back(
         {.name = "per_copy", .bytes = 16, .bytes_per_copy = 32, .usage = kStorageBuffer, .persistent = true});

@@ -218,7 +218,8 @@ void EmbreeScene::add_population(const Scene& scene, const std::vector<TriangleM
         throw reject(0, "a vertex position of its prototype is not finite");
     record.positions.push_back(0.0f);  // Embree loads vertices with 16-byte reads
 
-    const std::vector<PopulationInstance> copies = generate_instances(population);
+    const auto shared_copies = generate_instances(population);
+    const std::vector<PopulationInstance>& copies = *shared_copies;
     record.copy_models.reserve(copies.size());
     record.copy_normal_matrices.reserve(copies.size());
     for (size_t copy = 0; copy < copies.size(); ++copy) {

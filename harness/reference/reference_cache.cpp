@@ -193,7 +193,8 @@ void hash_scene(Fnv1a64& hash, const Scene& scene, const std::vector<TriangleMes
         hash.add_string(population.kind);
         hash_vec(hash, population.prototype.material.albedo);
         hash.add(uint8_t(population.prototype.casts_shadows));
-        const std::vector<PopulationInstance> copies = generate_instances(population);
+        const auto shared_copies = generate_instances(population);
+        const std::vector<PopulationInstance>& copies = *shared_copies;
         hash.add(uint64_t(copies.size()));
         for (const PopulationInstance& copy : copies) {
             hash.bytes(&copy.model[0][0], sizeof(copy.model));

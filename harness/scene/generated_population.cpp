@@ -9,7 +9,7 @@ std::vector<GeneratedPopulation> generate_populations(const Scene& scene, const 
         const Population& population = scene.populations[index];
         generated.push_back(GeneratedPopulation{population.name, population.kind, population.prototype.material,
                                                 population.prototype.casts_shadows,
-                                                prototype_mesh(scene, meshes, index), generate_instances(population),
+                                                prototype_mesh(scene, meshes, index), PopulationCopies(generate_instances(population)),
                                                 population.family ? population.family->vertex_data
                                                                   : std::vector<PopulationVertexData>{},
                                                 population.params,

@@ -276,7 +276,8 @@ Bounds scene_bounds(const Scene& scene, const std::vector<TriangleMesh>& meshes)
         Bounds prototype;
         for (const Vertex& vertex : prototype_mesh(scene, meshes, p).vertices) prototype.extend(vertex.position);
         if (prototype.empty()) continue;
-        for (const PopulationInstance& instance : generate_instances(scene.populations[p]))
+        const auto copies = generate_instances(scene.populations[p]);
+        for (const PopulationInstance& instance : *copies)
             for (int corner = 0; corner < 8; ++corner) {
                 const glm::vec3 local((corner & 1) ? prototype.max.x : prototype.min.x,
                                       (corner & 2) ? prototype.max.y : prototype.min.y,

@@ -52,8 +52,9 @@ glm::vec4 AlphaMask::packed() const {
     return glm::vec4(k, float(axis), period, opaque);
 }
 
-std::vector<PopulationInstance> generate_instances(const Population& population) {
-    if (population.family) return population.family->instances;
+std::shared_ptr<const std::vector<PopulationInstance>> generate_instances(const Population& population) {
+    if (population.family)  // the family's own copies, kept alive with it
+        return std::shared_ptr<const std::vector<PopulationInstance>>(population.family, &population.family->instances);
     const glm::mat4 own = population.prototype.instances.empty() ? glm::mat4(1.0f)
                                                                  : population.prototype.instances.front().matrix();
     std::vector<PopulationInstance> instances(population.count);
@@ -65,7 +66,7 @@ std::vector<PopulationInstance> generate_instances(const Population& population)
         for (int c = 0; c < 3; ++c) instance.normal_matrix[c] = glm::vec4(normal[c], 0.0f);
         instance.data = population.alpha_mask.packed();
     }
-    return instances;
+    return std::make_shared<const std::vector<PopulationInstance>>(std::move(instances));
 }
 
 std::vector<size_t> populations_of_kinds(const std::vector<Population>& populations,

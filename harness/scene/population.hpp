@@ -80,8 +80,9 @@ static_assert(sizeof(PopulationInstance) == 128, "population.vert reads 8 vec4 p
 // so copy `index` is the same whatever `count` is, on every standard library.
 glm::mat4 scatter_placement(const Population& population, uint32_t index);
 
-// Every copy, in index order: count entries (a family's kind: the copies it generated).
-std::vector<PopulationInstance> generate_instances(const Population& population);
+// Every copy, in index order: count entries (a family's kind: the copies it generated, shared
+// with the population, not copied: a field of 200,000 cells holds them once).
+std::shared_ptr<const std::vector<PopulationInstance>> generate_instances(const Population& population);
 
 // The scene's populations whose kind is one of `kinds` (indices into scene.populations).
 std::vector<size_t> populations_of_kinds(const std::vector<Population>& populations,

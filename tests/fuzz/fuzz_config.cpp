@@ -85,7 +85,8 @@ void build_primitives(const Scene& scene) {
         const TriangleMesh& prototype = meshes[primitives.objects.size() + p];
         size_t checked = 0;  // every copy's placement, a bounded number of vertices in all
         const size_t stride = 1 + prototype.vertices.size() / 64;
-        for (const PopulationInstance& copy : generate_instances(primitives.populations[p]))
+        const auto copies = generate_instances(primitives.populations[p]);
+        for (const PopulationInstance& copy : *copies)
             for (size_t v = 0; v < prototype.vertices.size() && checked < kMaxBuiltVertices; v += stride, ++checked)
                 check(copy.model, prototype.vertices[v]);
     }

@@ -87,7 +87,8 @@ int expected_cells(const Scene& scene, float max_distance) {
     const Camera& camera = scene.camera;
     const glm::mat4 view_proj = projection_matrix(camera, float(kWidth) / float(kHeight)) * view_matrix(camera);
     int kept = 0;
-    for (const PopulationInstance& copy : generate_instances(population)) {
+    const auto copies = generate_instances(population);
+    for (const PopulationInstance& copy : *copies) {
         int outside[6] = {0, 0, 0, 0, 0, 0};
         glm::vec3 lo(1e30f), hi(-1e30f);
         for (int c = 0; c < 8; ++c) {
