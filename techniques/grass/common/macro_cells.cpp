@@ -7,12 +7,12 @@
 
 namespace canopy::grass {
 
-std::vector<glm::vec4> macro_instances(glm::uvec2 cells, uint32_t k) {
-    std::vector<glm::vec4> macros;
+std::vector<MacroInstance> macro_instances(glm::uvec2 cells, uint32_t k) {
+    std::vector<MacroInstance> macros;
     k = std::max(k, 1u);
     for (uint32_t z = 0; z < cells.y; z += k)
         for (uint32_t x = 0; x < cells.x; x += k)
-            macros.emplace_back(float(x), float(z), float(std::min(k, cells.x - x)), float(std::min(k, cells.y - z)));
+            macros.emplace_back(x, z, std::min(k, cells.x - x), std::min(k, cells.y - z));
     return macros;
 }
 

@@ -17,10 +17,13 @@
 
 namespace canopy::grass {
 
-// The macro-cells of size k over a cells.x x cells.y field, in row order: (first x, first z,
-// span x, span z); those at the field's far edges are cut to it (Lemme L736: "not necessarily
-// equal"). k = 1: one per cell.
-std::vector<glm::vec4> macro_instances(glm::uvec2 cells, uint32_t k);
+// One macro-cell as the macro shaders read it per instance: first cell x, z; span x, z (16-bit:
+// a field is at most 4096 cells a side).
+using MacroInstance = glm::u16vec4;
+
+// The macro-cells of size k over a cells.x x cells.y field, in row order; those at the field's
+// far edges are cut to it (Lemme L736: "not necessarily equal"). k = 1: one per cell.
+std::vector<MacroInstance> macro_instances(glm::uvec2 cells, uint32_t k);
 uint32_t macro_count(glm::uvec2 cells, uint32_t k);  // macro_instances(cells, k).size()
 
 // Every field cell as a macro-cell reads it, in the population's copy order (cell

@@ -31,7 +31,7 @@ glm::uvec2 cells_of(const GeneratedPopulation* population) {
 void declare_macro_buffers(FrameGraph& g) {
     g.buffers.push_back({.name = macro_names::kCells, .bytes_per_copy = sizeof(shader::GrassCell),
                          .usage = kStorageBuffer, .persistent = true});
-    g.buffers.push_back({.name = macro_names::kMacros, .bytes_per_copy = sizeof(glm::vec4), .usage = kVertexBuffer,
+    g.buffers.push_back({.name = macro_names::kMacros, .bytes_per_copy = sizeof(MacroInstance), .usage = kVertexBuffer,
                          .persistent = true});
     g.buffers.push_back({.name = macro_names::kField, .bytes = sizeof(shader::GrassMacroField),
                          .usage = kUniformBuffer, .persistent = true});
@@ -47,10 +47,10 @@ PassDecl macro_setup_pass(uint32_t k) {
         if (!grass || grass->instances.empty()) return;
         const GrassField field = field_of(grass);
         const std::vector<shader::GrassCell> cells = grass_cells(field, grass->instances);
-        const std::vector<glm::vec4> macros = macro_instances(field.cells, k);
+        const std::vector<MacroInstance> macros = macro_instances(field.cells, k);
         const shader::GrassMacroField placement = macro_field(field, k, cell_frame(prototype_bounds(grass)).max.y, grass->transmission);
         pc.upload(macro_names::kCells, cells.data(), cells.size() * sizeof(shader::GrassCell));
-        pc.upload(macro_names::kMacros, macros.data(), macros.size() * sizeof(glm::vec4));
+        pc.upload(macro_names::kMacros, macros.data(), macros.size() * sizeof(MacroInstance));
         pc.upload(macro_names::kField, &placement, sizeof(placement));
     };
     return p;
@@ -58,10 +58,10 @@ PassDecl macro_setup_pass(uint32_t k) {
 
 VertexLayout macro_layout() {
     VertexLayout layout;
-    layout.bindings = {{uint32_t(sizeof(QuadVertex)), false}, {uint32_t(sizeof(glm::vec4)), true}};
+    layout.bindings = {{uint32_t(sizeof(QuadVertex)), false}, {uint32_t(sizeof(MacroInstance)), true}};
     layout.attributes = {{0, 0, VK_FORMAT_R32G32B32A32_SFLOAT, uint32_t(offsetof(QuadVertex, position))},
                          {1, 0, VK_FORMAT_R32G32B32A32_SFLOAT, uint32_t(offsetof(QuadVertex, uv))},
-                         {2, 1, VK_FORMAT_R32G32B32A32_SFLOAT, 0}};
+                         {2, 1, VK_FORMAT_R16G16B16A16_UINT, 0}};
     return layout;
 }
 

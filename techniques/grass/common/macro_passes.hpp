@@ -26,8 +26,8 @@ void declare_macro_buffers(FrameGraph& graph);
 // one). Macro-cells draw the first grass population only, as the bakes show only its patch.
 PassDecl macro_setup_pass(uint32_t k);
 
-// `vertex` records (QuadVertex: locations 0-1, binding 0) and a macro-cell's vec4 per instance at
-// location 2 (binding 1).
+// `vertex` records (QuadVertex: locations 0-1, binding 0) and a macro-cell's MacroInstance per
+// instance at location 2 (binding 1, uvec4 in the shaders).
 VertexLayout macro_layout();
 
 // What a macro frame pass records: the scene's objects with `ground`, then `vertex_count`

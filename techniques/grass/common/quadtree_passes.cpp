@@ -37,7 +37,7 @@ void declare_quadtree(FrameGraph& g, const std::vector<QuadtreeBandDecl>& bands,
             g.buffers.push_back({.name = quadtree_list(band.name), .bytes = uint64_t(copy_capacity) * sizeof(PopulationInstance),
                                  .usage = kVertexBuffer, .host_visible = true});
         else
-            g.buffers.push_back({.name = quadtree_list(band.name), .bytes_per_copy = sizeof(glm::vec4),
+            g.buffers.push_back({.name = quadtree_list(band.name), .bytes_per_copy = sizeof(MacroInstance),
                                  .usage = kVertexBuffer, .host_visible = true});
         g.buffers.push_back({.name = quadtree_draw(band.name),
                              .bytes = draws_copies(band) ? sizeof(VkDrawIndexedIndirectCommand) : sizeof(VkDrawIndirectCommand),
@@ -116,12 +116,12 @@ void declare_quadtree(FrameGraph& g, const std::vector<QuadtreeBandDecl>& bands,
                 if (!copies.empty()) cc.upload(quadtree_list(band.name), copies.data(), copies.size() * sizeof(PopulationInstance));
                 cc.upload(quadtree_draw(band.name), &draw, sizeof(draw));
             } else {
-                std::vector<glm::vec4> macros;
+                std::vector<MacroInstance> macros;
                 macros.reserve(nodes.size());
-                for (const QuadtreeNode& n : nodes)
-                    macros.emplace_back(float(n.first.x), float(n.first.y), float(n.span.x), float(n.span.y));
+                for (const QuadtreeNode& n : nodes) macros.emplace_back(n.first.x, n.first.y, n.span.x, n.span.y);
                 const VkDrawIndirectCommand draw{band.vertex_count, uint32_t(macros.size()), 0, 0};
-                if (!macros.empty()) cc.upload(quadtree_list(band.name), macros.data(), macros.size() * sizeof(glm::vec4));
+                if (!macros.empty())
+                    cc.upload(quadtree_list(band.name), macros.data(), macros.size() * sizeof(MacroInstance));
                 cc.upload(quadtree_draw(band.name), &draw, sizeof(draw));
             }
         }

@@ -9,13 +9,14 @@ layout(set = 0, binding = 3, std140) uniform FieldBlock { GrassMacroField field;
 
 layout(location = 0) in vec4 quad_position;  // x, z: the corner in [0, 1]; y: the slice's height (patch units)
 layout(location = 1) in vec4 quad_uv;
-layout(location = 2) in vec4 macro;          // per instance: first cell x, z; span x, z
+layout(location = 2) in uvec4 macro_record;  // per instance: first cell x, z; span x, z
 
 layout(location = 0) out vec3 world_position;
 layout(location = 1) out vec2 field_uv;        // field coordinates: one unit a cell
 layout(location = 2) flat out ivec4 macro_cells;  // first cell x, z; span x, z
 
 void main() {
+    vec4 macro = vec4(macro_record);
     vec2 u = macro.xy + quad_position.xz * macro.zw;
     vec3 world = field.origin_size.xyz + vec3(u.x, quad_position.y, u.y) * field.origin_size.w;
     world_position = world;

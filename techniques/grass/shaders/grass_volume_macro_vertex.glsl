@@ -10,13 +10,14 @@ layout(set = 0, binding = 3, std140) uniform FieldBlock { GrassMacroField field;
 
 layout(location = 0) in vec4 corner;      // q space: a corner of the unit cube
 layout(location = 1) in vec4 face_plane;  // outward normal xyz; w: dot(normal, q) on the face
-layout(location = 2) in vec4 macro;       // per instance: first cell x, z; span x, z
+layout(location = 2) in uvec4 macro_record;  // per instance: first cell x, z; span x, z
 
 layout(location = 0) out vec3 exit_q;
 layout(location = 1) flat out vec3 eye_q;
 layout(location = 2) flat out ivec4 macro_cells;
 
 void main() {
+    vec4 macro = vec4(macro_record);
     float size = field.origin_size.w;
     vec3 origin = field.origin_size.xyz + vec3(macro.x, 0.0, macro.y) * size;
     vec3 extent = vec3(macro.z, field.patch_top.x, macro.w) * size;

@@ -6,6 +6,7 @@
 // hold, or a scene with two grass populations, fails saying what to change.
 #include "support/bake_truth.hpp"
 
+#include "config/population_overrides.hpp"
 #include "config/scene_config.hpp"
 #include "core/error.hpp"
 #include "core/registry.hpp"
@@ -224,6 +225,20 @@ TEST_CASE("grass.lod quadtree: the field's copies stay on the CPU") {
     values.erase("far_macro_max");
     const uint64_t gpu_scene = renderer(scene, "grass.lod", values)->memory().scene_bytes;
     CHECK(gpu_scene - quadtree_scene == 9 * sizeof(PopulationInstance));
+}
+
+TEST_CASE("grass.lod quadtree: a field costs 48 bytes of GPU memory a cell, whatever its size") {
+    // GrassCell (32 bytes) and the middle and far bands' macro-cells (8 bytes each) per cell; the
+    // copies (128 bytes) stay on the CPU. `canopy bench grass-scale` reports the same slope.
+    const auto gpu_bytes = [](uint32_t side) {
+        Scene scene = field_scene();
+        override_population_params(scene.populations.at(0), {{"cells_x", (long long)side}, {"cells_z", (long long)side}},
+                                   {}, {});
+        const MemoryUse m = renderer(scene, "grass.lod", quadtree_values(2.0, 2.6, 3.0, 3.4))->memory();
+        return m.technique_bytes + m.scene_bytes;
+    };
+    CHECK(gpu_bytes(6) - gpu_bytes(3) == (36 - 9) * 48);
+    CHECK(gpu_bytes(20) - gpu_bytes(3) == (400 - 9) * 48);
 }
 
 TEST_CASE("grass.lod quadtree: more near cells than near_capacity, or two grass populations, fail the frame saying what to change") {

@@ -77,10 +77,10 @@ TEST_CASE("macro-cells: they tile the field, every cell exactly once, the last o
             CAPTURE(cells.x);
             CAPTURE(cells.y);
             CAPTURE(k);
-            const std::vector<glm::vec4> macros = grass::macro_instances(cells, k);
+            const std::vector<grass::MacroInstance> macros = grass::macro_instances(cells, k);
             CHECK(macros.size() == grass::macro_count(cells, k));
             std::vector<int> seen(size_t(cells.x) * cells.y, 0);
-            for (const glm::vec4& m : macros) {
+            for (const glm::vec4 m : macros) {
                 CHECK(m.z >= 1.0f);
                 CHECK(m.z <= float(k));
                 CHECK(m.w <= float(k));
@@ -129,7 +129,7 @@ TEST_CASE("macro-cells: a cell's record holds its own mirror signs and its copy'
     const Scene scene = field_scene("[camera]\nposition = [2, 3, 6]\ntarget = [2, 0, 1]", 4, 3, 7, 0.6);
     const Population& population = scene.populations.at(0);
     const grass::GrassPopulationSpec spec = grass::grass_population_spec(population.params);
-    const std::vector<PopulationInstance> copies = generate_instances(population);
+    const std::vector<PopulationInstance> copies = *generate_instances(population);
     const std::vector<shader::GrassCell> cells = grass::grass_cells(spec.field, copies);
     REQUIRE(cells.size() == 12);
     int mirrored = 0;
