@@ -278,11 +278,11 @@ std::string paper_report(const PaperComparison& paper, const RunRecord& run) {
             std::vector<std::vector<std::string>> rows;
             bool any_value = false;  // a metric no row's technique declares (a shadow metric for grass) is left out
             for (const PaperRow& row : paper.rows) {
+                if (!row.pass.empty()) continue;  // a part of a frame: the image's error is its frame row's
                 std::vector<std::string> cells{row.label};
                 for (size_t col = 0; col < paper.columns.size(); ++col) {
                     const CaseResult* mine = find_case(paper, run, row, col);
-                    // A pass's row is a part of a frame: the frame's image error is its whole row's.
-                    cells.push_back(mine && row.pass.empty() ? number(metric_of(row, *mine, claim), "{:.4g}") : "-");
+                    cells.push_back(mine ? number(metric_of(row, *mine, claim), "{:.4g}") : "-");
                     any_value = any_value || cells.back() != "-";
                 }
                 rows.push_back(cells);
