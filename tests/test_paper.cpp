@@ -308,3 +308,47 @@ TEST_CASE("a claim across columns names both, and only both") {
     CHECK(error_of("left_column = \"a\"\nright_column = \"b\"\ncolumn = \"a\"\n").find("not column") != std::string::npos);
     CHECK(error_of("left_column = \"a\"\nright_column = \"b\"\n").empty());
 }
+
+TEST_CASE("a claim may compare with a factor or an offset of the right row: 'at most a quarter', 'at most 0.02 more'") {
+    const std::string paper = kPaper + R"(
+[[paper.claim]]
+text = "PCF 3 costs less than 0.6 x PCF 5"
+left = "PCF 3"
+right = "PCF 5"
+factor = 0.6
+[[paper.claim]]
+text = "PCF 3's penumbra error is at most 0.015 above PCF 5's"
+left = "PCF 3"
+right = "PCF 5"
+metric = "penumbra_rmse"
+offset = 0.015
+)";
+    const Experiment e = load_experiment(write_experiment("factor.toml", paper), TechniqueRegistry::instance());
+    RunRecord run;
+    run.cases = {fake_case("shadow.hard", 0, constant(10.0), 0.06), fake_case("shadow.pcf", 3, constant(10.5), 0.04),
+                 fake_case("shadow.pcf", 5, constant(20.0), 0.03)};
+    auto verdicts = judge_claims(*e.paper, run);
+    REQUIRE(verdicts.size() == 5);
+    CHECK(verdicts[3].outcome == "holds");  // 10.5 / 20 = 0.525 < 0.6
+    CHECK(verdicts[3].because.find("below 0.6 x PCF 5's") != std::string::npos);
+    CHECK(verdicts[4].outcome == "holds");  // 0.04 < 0.03 + 0.015
+    run.cases[1].gpu_frame.samples_ms = constant(13.0);  // 0.65 > 0.6
+    run.cases[1].image_error->penumbra_rmse = 0.05;       // 0.05 >= 0.045
+    verdicts = judge_claims(*e.paper, run);
+    CHECK(verdicts[3].outcome == "does not hold");
+    CHECK(verdicts[4].outcome == "does not hold");
+    // Offsets are for error metrics; factor and offset go with less or greater.
+    const auto error_of = [](const std::string& claim) {
+        try {
+            load_experiment(write_experiment("bad-factor.toml", kPaper + "[[paper.claim]]\ntext = \"t\"\nleft = \"hard\"\n"
+                                                                             "right = \"PCF 3\"\n" + claim),
+                            TechniqueRegistry::instance());
+        } catch (const ConfigError& e) {
+            return e.formatted();
+        }
+        return std::string();
+    };
+    CHECK(error_of("offset = 0.1\n").find("'offset' applies to error metrics") != std::string::npos);
+    CHECK(error_of("relation = \"about\"\nfactor = 2\n").find("go with less or greater") != std::string::npos);
+    CHECK(error_of("factor = 0\n").find("must be positive") != std::string::npos);
+}

@@ -36,6 +36,9 @@ struct PaperClaim {
     std::string metric = "time";
     std::string relation = "less";  // less | greater | about ("better" in the config is read as less or greater)
     double tolerance = 0.15; // about: |left/right - 1| <= tolerance
+    // less and greater compare left with factor x right + offset (e.g. "costs at most a quarter":
+    // factor 0.25; "FLIP at most 0.02 above": offset 0.02, error metrics only).
+    double factor = 1.0, offset = 0.0;
     std::string column;      // only this column ("" = every column)
     // Left measured in one column and right in another (e.g. two views of a scene, which are
     // measured apart: the ratio is not paired); both or neither.

@@ -109,6 +109,15 @@ PaperComparison read_paper(TomlReader& section, const TechniqueRegistry& registr
         if (claim.relation == "better") claim.relation = claim_metric_better(claim.metric) == Better::lower ? "less" : "greater";
         claim.tolerance = r.get_float("tolerance", claim.tolerance);
         if (claim.tolerance < 0) throw r.error("tolerance", "'tolerance' must not be negative", "tolerance = 0.15");
+        claim.factor = r.get_float("factor", claim.factor);
+        claim.offset = r.get_float("offset", claim.offset);
+        if (!(claim.factor > 0)) throw r.error("factor", "'factor' must be positive", "factor = 0.25");
+        if ((claim.factor != 1.0 || claim.offset != 0.0) && claim.relation == "about")
+            throw r.error(claim.factor != 1.0 ? "factor" : "offset", "'factor' and 'offset' go with less or greater",
+                          "relation = \"less\"");
+        if (claim.offset != 0.0 && claim.metric == kTimeClaim)
+            throw r.error("offset", "a time claim compares ratios: 'offset' applies to error metrics",
+                          "factor = 0.25 (left below a quarter of right)");
         claim.column = r.get_string("column", "");
         const auto check_column = [&](std::string_view key, const std::string& column) {
             if (!column.empty() && std::find(paper.columns.begin(), paper.columns.end(), column) == paper.columns.end()) {

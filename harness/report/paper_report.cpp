@@ -148,11 +148,11 @@ std::vector<ClaimVerdict> judge_claims(const PaperComparison& paper, const RunRe
                 ++measured;
                 fewest_samples = std::min({fewest_samples, l->gpu_frame.stats.count, r->gpu_frame.stats.count});
                 if (claim.relation == "less") {
-                    holds = e.ci.high < 1.0;
-                    fails = e.ci.low > 1.0;
+                    holds = e.ci.high < claim.factor;
+                    fails = e.ci.low > claim.factor;
                 } else if (claim.relation == "greater") {
-                    holds = e.ci.low > 1.0;
-                    fails = e.ci.high < 1.0;
+                    holds = e.ci.low > claim.factor;
+                    fails = e.ci.high < claim.factor;
                 } else {
                     holds = e.ci.low >= 1.0 - claim.tolerance && e.ci.high <= 1.0 + claim.tolerance;
                     fails = e.ci.low > 1.0 + claim.tolerance || e.ci.high < 1.0 - claim.tolerance;
@@ -166,12 +166,13 @@ std::vector<ClaimVerdict> judge_claims(const PaperComparison& paper, const RunRe
                 if (std::isnan(a) || std::isnan(b)) continue;
                 ++measured;
                 // Renders are deterministic: no noise band.
+                const double bound = claim.factor * b + claim.offset;
                 if (claim.relation == "less") {
-                    holds = a < b;
-                    fails = a >= b;
+                    holds = a < bound;
+                    fails = a >= bound;
                 } else if (claim.relation == "greater") {
-                    holds = a > b;
-                    fails = a <= b;
+                    holds = a > bound;
+                    fails = a <= bound;
                 } else {
                     const double allowed = claim.tolerance * std::abs(b);
                     holds = std::abs(a - b) <= allowed;
@@ -192,7 +193,9 @@ std::vector<ClaimVerdict> judge_claims(const PaperComparison& paper, const RunRe
         else v.outcome = "within noise";
         const std::string relation = claim.relation == "about" ? fmt::format("within {:.0f} % of", 100.0 * claim.tolerance)
                                      : claim.relation == "less" ? "below" : "above";
-        v.because = measured ? fmt::format("{} of {} is {} {}'s: {}", claim.metric, claim.left, relation, claim.right, numbers)
+        const std::string target = fmt::format("{}{}'s{}", claim.factor != 1.0 ? fmt::format("{:g} x ", claim.factor) : "",
+                                               claim.right, claim.offset != 0.0 ? fmt::format(" {:+g}", claim.offset) : "");
+        v.because = measured ? fmt::format("{} of {} is {} {}: {}", claim.metric, claim.left, relation, target, numbers)
                              : "no measured case for one of the rows";
         if (too_few)
             v.because = fmt::format("too few samples ({} < {}) to judge a timing claim; {}", fewest_samples,
