@@ -198,14 +198,15 @@ private:
             }
         result.markdown += fmt::format(
             "\n## Cost against the blades a patch holds\n\n{0} x {0} cells centred under the camera's target, {1} x {2} "
-            "pixels, GPU time (median of {3} rounds, every case once a round). Fit t = a + b n^p over the patch's blades "
-            "n (least squares, p in [0.2, 3.5]); 'ratio' is the time at {4} blades over the time at {5}: 1 for a cost "
-            "that does not follow the blades.\n\n| technique |",
+            "pixels, GPU time (median of {3} rounds, every case once a round). 'ratio': the time at {4} blades over the "
+            "time at {5}, 1 for a cost that does not follow the blades; 'slope': log(ratio) / log({4} / {5}), the "
+            "exponent between the two ends; for the blades, also the fit t = a + b n^p over the four counts (least "
+            "squares, p in [0.2, 3.5], a >= 0: a fixed cost such as the ground's).\n\n| technique |",
             side, width, height, rounds, counts.back(), counts.front());
         for (long long n : counts) result.markdown += fmt::format(" {} blades, ms |", n);
-        result.markdown += " p | ratio |\n|---|";
+        result.markdown += " ratio | slope | fit p |\n|---|";
         for (size_t i = 0; i < counts.size(); ++i) result.markdown += "---:|";
-        result.markdown += "---:|---:|\n";
+        result.markdown += "---:|---:|---:|\n";
         nlohmann::json series = nlohmann::json::array();
         PowerFit geometry_fit;
         double geometry_small_ms = 0;
@@ -219,9 +220,13 @@ private:
                 row += fmt::format(" {:.2f} |", m);
             }
             const PowerFit fit = fit_power_law(n, median);
-            row += fmt::format(" {:.2f} | {:.2f} |", fit.exponent, median.back() / median.front());
+            const double ratio = median.back() / median.front();
+            const double slope = std::log(ratio) / std::log(n.back() / n.front());
+            // A fit to a flat series picks any exponent: shown for the blades, whose cost grows.
+            row += fmt::format(" {:.2f} | {:.2f} | {} |", ratio, slope, t == 0 ? fmt::format("{:.2f}", fit.exponent) : "-");
             result.markdown += row + "\n";
             series.push_back({{"technique", techniques[t].name}, {"blades", n}, {"median_ms", median},
+                              {"ratio", ratio}, {"slope", slope},
                               {"fit", {{"offset", fit.offset}, {"scale", fit.scale}, {"exponent", fit.exponent},
                                        {"r_squared", fit.r_squared}}}});
             if (t == 0) {
@@ -251,23 +256,26 @@ private:
         // The blades' cost per drawn blade, from the fit at the full patch, scaled by the field's
         // blades in view: t = a + b (n_view / n_small)^p, as the fit says cost follows blades.
         const double drawn_small = small_cells * double(blades), drawn_field = view_cells * double(blades);
+        const double scale = drawn_field / std::max(drawn_small, 1.0);
         const double projected_ms =
-            geometry_fit.offset + (geometry_small_ms - geometry_fit.offset) *
-                                      std::pow(drawn_field / std::max(drawn_small, 1.0), geometry_fit.exponent);
+            geometry_fit.offset + (geometry_small_ms - geometry_fit.offset) * std::pow(scale, geometry_fit.exponent);
+        const double linear_ms = geometry_small_ms * scale;
         result.markdown += fmt::format(
             "\n## The blades alone on the whole field (projected, not rendered)\n\nFrom the scene's camera the frustum "
             "keeps {:.0f} of the field's {} cells ({:.3g} blades, {:.3g} triangles a frame); the timed field showed "
             "{:.0f} cells of {} blades in {:.1f} ms. With the fitted exponent p = {:.2f}, the blades alone would take about "
-            "{:.3g} s a frame here ({:.0f} times the timed field).\n",
+            "{:.3g} s a frame here; in proportion to the blades (p = 1), {:.3g} s. Both extrapolate {:.0f} times beyond "
+            "what was rendered.\n",
             view_cells, uint64_t(cells.x) * cells.y, drawn_field, drawn_field * double(triangles_per_blade), small_cells,
-            blades, geometry_small_ms, geometry_fit.exponent, projected_ms / 1000.0, projected_ms / geometry_small_ms);
+            blades, geometry_small_ms, geometry_fit.exponent, projected_ms / 1000.0, linear_ms / 1000.0, scale);
         result.numbers["projection"] = {{"cells_in_view", view_cells},
                                         {"blades_in_view", drawn_field},
                                         {"triangles_in_view", drawn_field * double(triangles_per_blade)},
                                         {"timed_cells_in_view", small_cells},
                                         {"timed_ms", geometry_small_ms},
                                         {"exponent", geometry_fit.exponent},
-                                        {"projected_ms", projected_ms}};
+                                        {"projected_ms", projected_ms},
+                                        {"proportional_ms", linear_ms}};
     }
 };
 
