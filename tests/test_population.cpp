@@ -392,3 +392,11 @@ TEST_CASE("population: generate_populations hands the raster side the declared k
     CHECK(std::memcmp(generated[0].instances.data(), generate_instances(scene.populations[0])->data(),
                       50 * sizeof(PopulationInstance)) == 0);
 }
+
+TEST_CASE("population: the reference traces shadow rays one at a time where copies are instanced, in packets elsewhere") {
+    // shadow_packet.hpp: Embree's 16-wide occlusion kernel was seen to hang on instanced copies.
+    const Scene with_copies = meadow();
+    const Scene without = parse_scene(kHeader, "plain.toml");
+    CHECK(EmbreeScene(with_copies, build_scene_meshes(with_copies)).shadow_query() == ShadowQuery::single);
+    CHECK(EmbreeScene(without, build_scene_meshes(without)).shadow_query() == ShadowQuery::packet16);
+}

@@ -15,6 +15,8 @@
 #include "scene/geometry.hpp"
 #include "scene/scene.hpp"
 
+#include "reference/shadow_packet.hpp"
+
 #include <embree3/rtcore.h>
 
 #include <cstdint>
@@ -83,6 +85,13 @@ public:
     RTCDevice device() const { return device_; }
     RTCScene visible_scene() const { return visible_scene_; }
     RTCScene shadow_scene() const { return shadow_scene_; }
+    // How shadow rays are handed to Embree: one ray at a time where a population's copies are
+    // instanced (shadow_packet.hpp: where Embree's 16-wide kernel was seen to hang), else packets.
+    ShadowQuery shadow_query() const {
+        for (const Record& record : records_)
+            if (record.instanced()) return ShadowQuery::single;
+        return ShadowQuery::packet16;
+    }
 
     size_t geometry_count() const { return records_.size(); }
     // The hit of a ray that hit something (hit.geomID valid), in geometry() numbering.

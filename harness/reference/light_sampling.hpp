@@ -32,8 +32,8 @@ struct PreparedLight {
     bool casts_shadows = true;
     int sample_count = 1;                     // shadow rays per shading point
     // Directional: how far a shadow ray goes. Nothing occludes beyond the scene's bounds, and a
-    // finite segment is what Embree is given: with tfar = inf, rtcOccluded16 was seen to loop
-    // forever, now and then, on one valid ray of a grass field (results/grass/speed-accuracy).
+    // finite segment is what Embree is given (first tried against rtcOccluded16's hangs on a grass
+    // field, which finite segments did not end: shadow_packet.hpp traces single rays since).
     float shadow_reach = std::numeric_limits<float>::infinity();
     StratifiedPatterns patterns;              // area lights only
 };

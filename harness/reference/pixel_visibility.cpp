@@ -40,7 +40,7 @@ PixelVisibilityRender render_pixel_visibility(const Scene& scene, const EmbreeSc
 
     PixelVisibilityRender result;
     result.visibility = Image(width, height);
-    result.shadow_rays = trace_tiles(width, height, settings.threads, embree.shadow_scene(), progress,
+    result.shadow_rays = trace_tiles(width, height, settings.threads, embree.shadow_scene(), embree.shadow_query(), progress,
                                      [&](int x, int y, EmbreeShadowTracer& tracer) {
         float* out = result.visibility.at(x, y);
         const Ray ray = primary_ray(camera, width, height, float(x) + settings.position_in_pixel_x,

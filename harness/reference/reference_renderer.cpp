@@ -44,7 +44,7 @@ ReferenceImages render_reference(const Scene& scene, const EmbreeScene& embree, 
     images.variance = Image(width, height);
     images.visibility = Image(width, height);
 
-    images.shadow_rays = trace_tiles(width, height, settings.threads, embree.shadow_scene(), progress,
+    images.shadow_rays = trace_tiles(width, height, settings.threads, embree.shadow_scene(), embree.shadow_query(), progress,
                                      [&](int x, int y, EmbreeShadowTracer& tracer) {
         const PixelEstimate pixel = integrator.integrate(x, y, tracer);
         float* radiance = images.radiance.at(x, y);

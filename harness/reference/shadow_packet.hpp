@@ -1,6 +1,6 @@
 // Shadow rays traced 16 at a time. A shading point's samples towards one light share their
-// origin, so a packet is coherent and Embree's 16-wide traversal (AVX-512 where available)
-// pays: measured faster than 16 rtcOccluded1 calls (see shadow_ray_benchmark.hpp).
+// origin, so a packet is coherent and Embree's 16-wide traversal (AVX-512 where available) pays
+// (see shadow_ray_benchmark.hpp), except where it hangs (ShadowQuery, below).
 #pragma once
 
 #include <embree3/rtcore.h>
@@ -49,22 +49,54 @@ struct alignas(64) ShadowPacket {
     bool occluded(int lane) const { return valid[lane] != 0 && rays.tfar[lane] < 0.0f; }
 };
 
-// Traces packets against a scene with rtcOccluded16 and counts the rays actually traced.
+// How a tracer hands Embree a packet: as one 16-wide query (rtcOccluded16), or lane by lane
+// (rtcOccluded1). Embree 3.13's 16-wide occlusion kernel was caught four times looping forever
+// inside the call on a grass field (instanced copies with filter functions, AVX-512), now and then
+// (its BVH builds differ from run to run), never on scenes of plain triangles; one ray at a time it
+// is 2.2 times slower here for the shadow family's references (bench reference on spheres: 5.2e7
+// against 1.15e8 rays/s), which do not need it. EmbreeScene::shadow_query picks.
+enum class ShadowQuery { packet16, single };
+
+// Traces packets against a scene and counts the rays actually traced.
 class EmbreeShadowTracer {
 public:
-    explicit EmbreeShadowTracer(RTCScene scene) : scene_(scene) {
+    explicit EmbreeShadowTracer(RTCScene scene, ShadowQuery query = ShadowQuery::packet16)
+        : scene_(scene), query_(query) {
         rtcInitIntersectContext(&context_);
-        context_.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+        context_.flags = query == ShadowQuery::packet16 ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT
+                                                        : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
     }
     void trace(ShadowPacket& packet) {
         if (packet.active == 0) return;
-        rtcOccluded16(packet.valid, scene_, &context_, &packet.rays);
         rays_ += uint64_t(packet.active);
+        if (query_ == ShadowQuery::packet16) {
+            rtcOccluded16(packet.valid, scene_, &context_, &packet.rays);
+            return;
+        }
+        for (int lane = 0; lane < ShadowPacket::kWidth; ++lane) {
+            if (packet.valid[lane] == 0) continue;
+            RTCRay ray;
+            ray.org_x = packet.rays.org_x[lane];
+            ray.org_y = packet.rays.org_y[lane];
+            ray.org_z = packet.rays.org_z[lane];
+            ray.dir_x = packet.rays.dir_x[lane];
+            ray.dir_y = packet.rays.dir_y[lane];
+            ray.dir_z = packet.rays.dir_z[lane];
+            ray.tnear = packet.rays.tnear[lane];
+            ray.tfar = packet.rays.tfar[lane];
+            ray.time = packet.rays.time[lane];
+            ray.mask = packet.rays.mask[lane];
+            ray.id = packet.rays.id[lane];
+            ray.flags = packet.rays.flags[lane];
+            rtcOccluded1(scene_, &context_, &ray);
+            packet.rays.tfar[lane] = ray.tfar;
+        }
     }
     uint64_t rays() const { return rays_; }
 
 private:
     RTCScene scene_;
+    ShadowQuery query_;
     RTCIntersectContext context_{};
     uint64_t rays_ = 0;
 };
