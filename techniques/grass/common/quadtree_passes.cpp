@@ -148,4 +148,11 @@ void draw_quadtree_band(PassContext& pc, const QuadtreeBandDecl& band, const std
     pc.draw_indirect(buffers, quadtree_draw(band.name));
 }
 
+void record_quadtree_band(PassContext& pc, const std::optional<RasterState>& ground, const RasterState& over,
+                          const QuadtreeBandDecl& band, const std::string& vertex_buffer) {
+    if (ground) record_ground(pc, *ground);
+    pc.bind(pc.raster_pipeline(over));
+    draw_quadtree_band(pc, band, vertex_buffer);
+}
+
 }  // namespace canopy::grass

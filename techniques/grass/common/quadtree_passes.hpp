@@ -10,8 +10,10 @@
 
 #include "graph/frame_graph.hpp"
 #include "graph/pass_context.hpp"
+#include "graph/raster_state.hpp"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -47,5 +49,10 @@ void use_quadtree_band(PassDecl& pass, const QuadtreeBandDecl& band);
 // Draws a copies band with the bound pipeline (the first grass population's prototype over the
 // kept copies), or a macro band: `vertex_buffer` (binding 0) once per macro-cell (binding 1).
 void draw_quadtree_band(PassContext& pc, const QuadtreeBandDecl& band, const std::string& vertex_buffer = "");
+
+// What a macro band's frame pass records (grass.volume's and grass.image's passes under a
+// quadtree): the scene's objects with `ground` when given, then the band drawn with `over`.
+void record_quadtree_band(PassContext& pc, const std::optional<RasterState>& ground, const RasterState& over,
+                          const QuadtreeBandDecl& band, const std::string& vertex_buffer);
 
 }  // namespace canopy::grass

@@ -106,9 +106,7 @@ PassDecl image_frame_pass(const ImageSettings& s, const RasterState& per_cell, b
         frame.settings = fmt::format("one quad per cell or macro-cell (at most {} a side) the quadtree's {} band keeps",
                                      s.selected_by->max_macro, s.selected_by->name);
         frame.record = [objects, slice, band = *s.selected_by, quad = names.quad](PassContext& pc) {
-            if (objects) record_ground(pc, *objects);
-            pc.bind(pc.raster_pipeline(slice));
-            draw_quadtree_band(pc, band, quad);
+            record_quadtree_band(pc, objects, slice, band, quad);
         };
     } else if (macro > 0) {
         if (!objects) throw std::logic_error("image_frame_pass: macro-cells draw the ground in their pass");

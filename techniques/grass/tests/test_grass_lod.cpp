@@ -5,6 +5,7 @@
 // reference's rays hit, no blade dropped, and each band draws its part; across a field whose cells
 // lie in all three bands the image is finite and its coverage no worse than the representations'.
 #include "support/bake_truth.hpp"
+#include "support/lod_field.hpp"
 
 #include "config/scene_config.hpp"
 #include "core/registry.hpp"
@@ -21,6 +22,7 @@
 #include <string>
 
 using namespace canopy;
+using grass::test::lod_field_scene;
 using grass::test::one_cell_scene;
 
 namespace {
@@ -29,36 +31,6 @@ using Values = std::map<std::string, ParamValue>;
 
 const char* kFarAbove =
     "[camera]\nposition = [0.5, 80, 0.5]\ntarget = [0.5, 0, 0.5]\nup = [0, 0, -1]\nfov = 0.9\nnear = 40\nfar = 120";
-
-// 3 x 3 cells of 60 blades on a ground plane, seen from a low, standing eye: cells from about
-// 1 to 5 m away.
-Scene field_scene() {
-    return parse_scene(R"([scene]
-name = "lod-field"
-ambient = 0.2
-[camera]
-position = [1.5, 0.6, 4.6]
-target = [1.5, 0.0, 1.0]
-fov = 50
-near = 0.05
-far = 40
-[[light]]
-type = "directional"
-direction = [-0.3, -1, -0.2]
-casts_shadows = false
-[[object]]
-name = "ground"
-shape = "plane"
-size = [6, 6]
-albedo = [0.35, 0.25, 0.15]
-[[population]]
-name = "grass"
-kind = "grass"
-albedo = [0.1, 0.8, 0.1]
-params = { cells_x = 3, cells_z = 3, centre_x = 1.5, centre_z = 1.5, blades = 60, subdivisions = 3, width_min = 0.06, width_max = 0.1 }
-)",
-                       "lod-field.toml");
-}
 
 Image render(const Scene& scene, const std::string& technique, const Values& values, uint32_t w = 160, uint32_t h = 96) {
     const Technique* t = TechniqueRegistry::instance().find(technique);
@@ -87,7 +59,7 @@ float max_difference(const Image& a, const Image& b) {
 }  // namespace
 
 TEST_CASE("grass.lod: with its bands at either end it draws what each representation draws alone") {
-    const Scene scene = field_scene();
+    const Scene scene = lod_field_scene();
     const Image blades = render(scene, "grass.geometry", {{"samples", 1LL}, {"coverage", std::string("alpha_test")}});
     const Image volume = render(scene, "grass.volume", {{"slices", 4LL}, {"resolution", 96LL}, {"height_resolution", 48LL}});
     const Image image = render(scene, "grass.image", {{"resolution", 128LL}});
@@ -141,7 +113,7 @@ TEST_CASE("grass.lod: half the blades near and half far cover from above what th
 }
 
 TEST_CASE("grass.lod: a field in all three bands renders finite, covering as the representations do") {
-    const Scene scene = field_scene();
+    const Scene scene = lod_field_scene();
     // Cells 1-5 m away: blades to 1.5-2.5, the volume to 3-4, the image beyond.
     Values values = lod_values(1.5, 2.5, 3.0, 4.0);
     values["samples"] = 4LL;
@@ -174,7 +146,7 @@ TEST_CASE("grass.lod: a field in all three bands renders finite, covering as the
 }
 
 TEST_CASE("grass.lod: culling each band's copies to its distances changes no pixel and drops cells from every band") {
-    const Scene scene = field_scene();
+    const Scene scene = lod_field_scene();
     const Technique* t = TechniqueRegistry::instance().find("grass.lod");
     REQUIRE(t);
     for (const std::string middle : {"volume", "slices"}) {
@@ -212,7 +184,7 @@ TEST_CASE("grass.lod: culling each band's copies to its distances changes no pix
 TEST_CASE("grass.lod: with MSAA, where nothing is drawn the frame shows the scene's background") {
     // Its multisampled target is cleared in the first band's pass and resolved in the last: the
     // clear must be the background, as in grass.geometry's single pass.
-    Scene scene = field_scene();
+    Scene scene = lod_field_scene();
     scene.background = glm::vec3(0.45f, 0.6f, 0.85f);
     Values values = lod_values(1.5, 2.5, 3.0, 4.0);
     values["samples"] = 4LL;

@@ -5,6 +5,7 @@
 // records; the field's copies stay on the CPU; and a frame that needs more near cells than it may
 // hold, or a scene with two grass populations, fails saying what to change.
 #include "support/bake_truth.hpp"
+#include "support/lod_field.hpp"
 
 #include "config/population_overrides.hpp"
 #include "config/scene_config.hpp"
@@ -24,40 +25,11 @@
 #include <string>
 
 using namespace canopy;
+using grass::test::lod_field_scene;
 
 namespace {
 
 using Values = std::map<std::string, ParamValue>;
-
-// 3 x 3 cells of 60 blades on a ground plane, seen from a low, standing eye: cells from about
-// 1 to 5 m away (test_grass_lod.cpp's field); `more` adds to the scene.
-Scene field_scene(const std::string& more = "") {
-    return parse_scene(R"([scene]
-name = "lod-quadtree"
-ambient = 0.2
-[camera]
-position = [1.5, 0.6, 4.6]
-target = [1.5, 0.0, 1.0]
-fov = 50
-near = 0.05
-far = 40
-[[light]]
-type = "directional"
-direction = [-0.3, -1, -0.2]
-casts_shadows = false
-[[object]]
-name = "ground"
-shape = "plane"
-size = [6, 6]
-albedo = [0.35, 0.25, 0.15]
-[[population]]
-name = "grass"
-kind = "grass"
-albedo = [0.1, 0.8, 0.1]
-params = { cells_x = 3, cells_z = 3, centre_x = 1.5, centre_z = 1.5, blades = 60, subdivisions = 3, width_min = 0.06, width_max = 0.1 }
-)" + more,
-                       "lod-quadtree.toml");
-}
 
 const Technique& technique(const std::string& name) {
     const Technique* t = TechniqueRegistry::instance().find(name);
@@ -111,7 +83,7 @@ T read_record(FrameRenderer& r, const std::string& buffer) {
 }  // namespace
 
 TEST_CASE("grass.lod quadtree: with its bands at either end it draws what each representation draws alone") {
-    const Scene scene = field_scene();
+    const Scene scene = lod_field_scene();
     // The quadtree's nodes of at most 2 cells a side over 3 x 3 cells are grass.volume's and
     // grass.image's macro-cells of 2: (0, 0) 2 x 2, (2, 0) 1 x 2, (0, 2) 2 x 1, (2, 2) 1 x 1.
     const Image blades = render(scene, "grass.geometry", {{"samples", 1LL}, {"coverage", std::string("alpha_test")}});
@@ -176,7 +148,7 @@ TEST_CASE("grass.lod quadtree: a macro-cell's volume and image each draw only th
 }
 
 TEST_CASE("grass.lod quadtree: a field in all three bands covers as the representations do, counting its draws") {
-    const Scene scene = field_scene();
+    const Scene scene = lod_field_scene();
     Values values = quadtree_values(2.0, 2.6, 3.0, 3.4);
     auto r = renderer(scene, "grass.lod", values);
     const FrameTiming t = r->render();
@@ -217,7 +189,7 @@ TEST_CASE("grass.lod quadtree: a field in all three bands covers as the represen
 }
 
 TEST_CASE("grass.lod quadtree: the field's copies stay on the CPU") {
-    const Scene scene = field_scene();
+    const Scene scene = lod_field_scene();
     Values values = quadtree_values(2.0, 2.6, 3.0, 3.4);
     const uint64_t quadtree_scene = renderer(scene, "grass.lod", values)->memory().scene_bytes;
     values["culling"] = std::string("gpu");
@@ -231,7 +203,7 @@ TEST_CASE("grass.lod quadtree: a field costs 48 bytes of GPU memory a cell, what
     // GrassCell (32 bytes) and the middle and far bands' macro-cells (8 bytes each) per cell; the
     // copies (128 bytes) stay on the CPU. `canopy bench grass-scale` reports the same slope.
     const auto gpu_bytes = [](uint32_t side) {
-        Scene scene = field_scene();
+        Scene scene = lod_field_scene();
         override_population_params(scene.populations.at(0), {{"cells_x", (long long)side}, {"cells_z", (long long)side}},
                                    {}, {});
         const MemoryUse m = renderer(scene, "grass.lod", quadtree_values(2.0, 2.6, 3.0, 3.4))->memory();
@@ -245,11 +217,11 @@ TEST_CASE("grass.lod quadtree: more near cells than near_capacity, or two grass 
     {
         Values values = quadtree_values(1e6, 1e6, 1e6, 1e6);
         values["near_capacity"] = 4LL;
-        auto r = renderer(field_scene(), "grass.lod", values);
+        auto r = renderer(lod_field_scene(), "grass.lod", values);
         CHECK_THROWS_WITH_AS(r->render(), doctest::Contains("raise near_capacity"), GpuError);
     }
     {
-        const Scene two = field_scene(R"([[population]]
+        const Scene two = lod_field_scene(R"([[population]]
 name = "more_grass"
 kind = "grass"
 albedo = [0.1, 0.8, 0.1]

@@ -168,9 +168,7 @@ PassDecl volume_frame_pass(const VolumeSettings& s, const RasterState& per_cell,
                                      "its exit faces drawn",
                                      s.selected_by->max_macro, s.selected_by->name);
         frame.record = [objects, volume, band = *s.selected_by, cuboid = names.cuboid](PassContext& pc) {
-            if (objects) record_ground(pc, *objects);
-            pc.bind(pc.raster_pipeline(volume));
-            draw_quadtree_band(pc, band, cuboid);
+            record_quadtree_band(pc, objects, volume, band, cuboid);
         };
     } else if (macro > 0) {
         if (!objects) throw std::logic_error("volume_frame_pass: macro-cells draw the ground in their pass");
