@@ -59,7 +59,7 @@ public:
     std::vector<ParamSpec> params() const override {
         return {ParamSpec::real("step", 0.25, 0.001, 100.0,
                                 "how far the second eye stands behind the first, along the camera's line of sight (m)"),
-                ParamSpec::real("eye_distance", 12.0, 0.0, 1e5,
+                ParamSpec::real("eye_distance", 4.0, 0.0, 1e5,
                                 "the first eye's distance from the camera's target, along the same line (m)")};
     }
 
@@ -118,8 +118,9 @@ public:
                              p95 = percentile(depths[k], 0.95);
                 size_t cells = 0;
                 for (int sw : cell_switches[k]) cells += size_t(sw);
-                result.markdown += fmt::format("| {} | {} | {} | {} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {} |\n", b.label,
-                                               transition_names[k], drawn, depths[k].size(), p5, p50, p95, p95 - p5, cells);
+                const auto m = [](double v) { return std::isnan(v) ? std::string("-") : fmt::format("{:.2f}", v); };
+                result.markdown += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", b.label, transition_names[k],
+                                               drawn, depths[k].size(), m(p5), m(p50), m(p95), m(p95 - p5), cells);
                 rows.push_back({{"bands", b.label},
                                 {"transition", transition_names[k]},
                                 {"distances", {b.geometry_full, b.geometry_none, b.image_start, b.image_full}},
