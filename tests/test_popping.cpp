@@ -4,6 +4,7 @@
 #include "config/experiment_config.hpp"
 #include "core/registry.hpp"
 #include "metrics/popping.hpp"
+#include "report/json_record_reader.hpp"
 #include "report/markdown_report.hpp"
 #include "run/experiment_runner.hpp"
 #include "support/temp_folder.hpp"
@@ -11,9 +12,11 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <numeric>
 #include <stdexcept>
 
 using namespace canopy;
@@ -107,10 +110,10 @@ TEST_CASE("a run with popping = true measures it on a traversal of its own, and 
     experiment.camera_path = path;
     experiment.frames_per_sample = path.frames;
 
+    static const test::TempFolder folder("canopy-test-popping");
     const auto run_with = [&](bool popping, const char* name) {
         experiment.camera_path->popping = popping;
         const PreparedExperiment prepared = prepare_experiment(experiment, registry, test::gpu());
-        static const test::TempFolder folder("canopy-test-popping");
         RunOptions options;
         options.out_dir = folder.path() / name;
         options.show_progress = false;
@@ -126,15 +129,24 @@ TEST_CASE("a run with popping = true measures it on a traversal of its own, and 
         CHECK(std::isfinite(c.image_error->popping_mean));
         CHECK(c.image_error->popping_mean >= 0.0);
         CHECK(c.image_error->popping_max >= c.image_error->popping_mean);
+        // The curve behind them: one value per frame pair, their mean and largest the columns'.
+        REQUIRE(c.popping_per_pair.size() == size_t(path.frames - 1));
+        CHECK(*std::max_element(c.popping_per_pair.begin(), c.popping_per_pair.end()) == c.image_error->popping_max);
+        CHECK(std::accumulate(c.popping_per_pair.begin(), c.popping_per_pair.end(), 0.0) / double(path.frames - 1) ==
+              doctest::Approx(c.image_error->popping_mean).epsilon(1e-12));
         // Measured 0.010 (edges aliased differently from frame to frame); against the first frame's
         // reference for every frame (the camera's move not cancelled) it reads 0.056.
         MESSAGE(c.id << ": popping " << c.image_error->popping_mean << ", max " << c.image_error->popping_max);
         CHECK(c.image_error->popping_mean < 0.025);
     }
     CHECK(markdown_table(measured).find("popping") != std::string::npos);
+    const RunRecord written = read_json_report(folder.path() / "popping" / "results.json");
+    REQUIRE(written.cases.size() == measured.cases.size());
+    CHECK(written.cases[0].popping_per_pair == measured.cases[0].popping_per_pair);
 
     const RunRecord without = run_with(false, "no-popping");
     REQUIRE(without.status == "complete");
     CHECK(std::isnan(without.cases[0].image_error->popping_mean));
+    CHECK(without.cases[0].popping_per_pair.empty());
     CHECK(markdown_table(without).find("popping") == std::string::npos);
 }

@@ -144,6 +144,8 @@ CaseResult read_case(const json& j) {
     if (j.contains("primitives") && !j.at("primitives").is_null())
         c.primitives = PrimitiveCounts{j.at("primitives").at("submitted").get<uint64_t>(),
                                        j.at("primitives").at("rasterised").get<uint64_t>()};
+    if (j.contains("popping_per_pair"))  // absent in results.json written before the curve was kept
+        c.popping_per_pair = j.at("popping_per_pair").get<std::vector<double>>();
     if (j.contains("counters"))  // absent in results.json written before CPU passes counted
         for (const json& counter : j.at("counters"))
             c.counters.emplace_back(counter.at("name").get<std::string>(), counter.at("value").get<double>());

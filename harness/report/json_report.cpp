@@ -174,6 +174,7 @@ nlohmann::json case_json(const CaseResult& c) {
                                                          {"rasterised", c.primitives->rasterised}}
                                         : nlohmann::json(nullptr)},
             {"counters", counters_json(c.counters)},
+            {"popping_per_pair", c.popping_per_pair},
             {"shadow_sampler", c.shadow_sampler},
             {"nonfinite_pixels", c.nonfinite_pixels},
             {"image_error", c.image_error ? error_json(*c.image_error) : nlohmann::json(nullptr)},

@@ -75,6 +75,10 @@ struct CaseResult {
     // What the technique's CPU passes counted in that same frame (CpuPassContext::count: the cells
     // a CPU cull kept, say), in the order first counted; empty when it counts nothing.
     std::vector<std::pair<std::string, double>> counters;
+    // With [camera_path] popping: the popping of each frame pair (k-1, k), k = 1 .. frames - 1, of
+    // which image_error's popping_mean and popping_max are the mean and the largest (a spike or a
+    // spread); empty otherwise.
+    std::vector<double> popping_per_pair;
     std::string shadow_sampler;
     std::string image_exr, image_png;  // relative to the run folder
     std::string visibility_exr;        // the technique's pixel-centre visibility (core/pixel_visibility.hpp)

@@ -412,6 +412,7 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
                     const PoppingError popping = compute_popping(frames, path_references);
                     result.image_error->popping_mean = popping.mean;
                     result.image_error->popping_max = popping.max;
+                    result.popping_per_pair = popping.per_pair;
                 };
             std::optional<MeasuredGroup> measured = measure_group(gpu, input, settings, options.chunk_limits, callbacks);
             if (!measured || interrupt_requested()) break;  // this group did not finish: keep only the finished ones
