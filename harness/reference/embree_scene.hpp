@@ -85,11 +85,12 @@ public:
     RTCDevice device() const { return device_; }
     RTCScene visible_scene() const { return visible_scene_; }
     RTCScene shadow_scene() const { return shadow_scene_; }
-    // How shadow rays are handed to Embree: one ray at a time where a population's copies are
-    // instanced (shadow_packet.hpp: where Embree's 16-wide kernel was seen to hang), else packets.
+    // How shadow rays are handed to Embree: one ray at a time where a population's instanced
+    // copies are cut by a filter function (shadow_packet.hpp: where Embree's 16-wide kernel was seen
+    // to hang), else packets.
     ShadowQuery shadow_query() const {
         for (const Record& record : records_)
-            if (record.instanced()) return ShadowQuery::single;
+            if (record.instanced() && record.copy_alpha_test >= 0) return ShadowQuery::single;
         return ShadowQuery::packet16;
     }
 

@@ -142,7 +142,7 @@ void GpuScene::draw_population_indirect(VkCommandBuffer commands, VkPipelineLayo
 void GpuScene::draw_over_population(VkCommandBuffer commands, VkPipelineLayout layout, const std::string& name,
                                     std::span<const VkBuffer> vertex_buffers, uint32_t vertex_count) const {
     const PopulationDraw& d = population_draw_with_copies(name);
-    if (d.instance_count == 0 || vertex_count == 0) return;
+    if (d.instance_count == 0 || vertex_count == 0 || !d.instances.handle()) return;  // nothing uploaded: an empty prototype
     std::vector<VkBuffer> buffers(vertex_buffers.begin(), vertex_buffers.end());
     buffers.push_back(d.instances.handle());
     const std::vector<VkDeviceSize> offsets(buffers.size(), 0);

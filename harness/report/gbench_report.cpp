@@ -110,7 +110,8 @@ void add_case(ordered_json& benchmarks, const CaseResult& c, size_t family, int 
     for (const TimingSeries& p : c.passes)
         if (p.samples_ms.size() == gpu.size()) counters.push_back({p.name + "_ms", p.samples_ms});
     // The technique's counts (one frame's, the same in every repetition).
-    for (const auto& [name, value] : c.counters) counters.push_back({name, std::vector<double>(gpu.size(), value)});
+    for (const auto& [name, value] : c.counters)
+        counters.push_back({"counter_" + name, std::vector<double>(gpu.size(), value)});
     const std::vector<double>& cpu = c.cpu.samples_ms.size() == gpu.size() ? c.cpu.samples_ms : gpu;
 
     for (int r = 0; r < repetitions; ++r) {

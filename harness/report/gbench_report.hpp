@@ -6,7 +6,7 @@
 // per measured round (repetitions = rounds, iterations = frames per sample), real_time = the
 // sample's GPU time per frame, cpu_time = the process's CPU time per frame, time_unit "ms";
 // counters: wall_ms, ratio (to the group's baseline, same round), <pass>_ms per pass and the
-// technique's counts (CaseResult::counters, one frame's, alike in every round). Then the
+// technique's counts as counter_<name> (CaseResult::counters, one frame's, alike in every round). Then the
 // aggregates Google Benchmark writes for repeated runs: _mean, _median, _stddev and _cv (cv as a
 // fraction, aggregate_unit "percentage"). A failed case is one entry with error_occurred.
 #pragma once

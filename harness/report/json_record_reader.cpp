@@ -145,10 +145,13 @@ CaseResult read_case(const json& j) {
         c.primitives = PrimitiveCounts{j.at("primitives").at("submitted").get<uint64_t>(),
                                        j.at("primitives").at("rasterised").get<uint64_t>()};
     if (j.contains("popping_per_pair"))  // absent in results.json written before the curve was kept
-        c.popping_per_pair = j.at("popping_per_pair").get<std::vector<double>>();
+        for (const json& v : j.at("popping_per_pair"))  // a pair with no finite pixel is NaN, written null
+            c.popping_per_pair.push_back(v.is_null() ? std::numeric_limits<double>::quiet_NaN() : v.get<double>());
     if (j.contains("counters"))  // absent in results.json written before CPU passes counted
         for (const json& counter : j.at("counters"))
-            c.counters.emplace_back(counter.at("name").get<std::string>(), counter.at("value").get<double>());
+            c.counters.emplace_back(counter.at("name").get<std::string>(),
+                                    counter.at("value").is_null() ? std::numeric_limits<double>::quiet_NaN()
+                                                                  : counter.at("value").get<double>());
     c.shadow_sampler = j.at("shadow_sampler").get<std::string>();
     c.nonfinite_pixels = j.at("nonfinite_pixels").get<long long>();
     if (!j.at("image_error").is_null()) c.image_error = read_error(j.at("image_error"));

@@ -146,7 +146,8 @@ std::vector<ClaimVerdict> judge_claims(const PaperComparison& paper, const RunRe
                 const Estimate& e = ratio.estimate;
                 if (std::isnan(e.value)) continue;
                 ++measured;
-                fewest_samples = std::min({fewest_samples, l->gpu_frame.stats.count, r->gpu_frame.stats.count});
+                fewest_samples = std::min({fewest_samples, row_series(*left, *l)->samples_ms.size(),
+                                           row_series(*right, *r)->samples_ms.size()});
                 if (claim.relation == "less") {
                     holds = e.ci.high < claim.factor;
                     fails = e.ci.low > claim.factor;

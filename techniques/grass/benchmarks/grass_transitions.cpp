@@ -133,11 +133,14 @@ public:
                                 {"cells_switching", cells}});
             }
         }
-        result.markdown +=
-            "\nA step back moves every cell's cuts towards the farther representation, so each switching blade goes "
-            "to the next band (`other_switches` in the JSON counts any that do not: none). Boulanger's density "
-            "thresholds spread a transition's switches over its depth, a few blades in many cells; sharp bands gather "
-            "them on a line of cells, each switching many of its blades at once.\n";
+        uint64_t others = 0;
+        for (const nlohmann::json& r : rows) others += r.at("other_switches").get<uint64_t>();
+        result.markdown += fmt::format(
+            "\nA step back moves every cell's cuts towards the farther representation, so each switching blade should "
+            "go to the next band: {} did not (summed over the settings; `other_switches` in the JSON). Boulanger's "
+            "density thresholds spread a transition's switches over its depth, a few blades in many cells; sharp bands "
+            "gather them on a line of cells, each switching many of its blades at once.\n",
+            others);
         result.numbers["eye"] = {eye.x, eye.y, eye.z};
         result.numbers["step"] = step;
         result.numbers["configurations"] = rows;

@@ -109,7 +109,7 @@ glm::vec2 node_centre_distances(const QuadtreeField& field, const QuadtreeNode& 
 
 QuadtreeSelection select_cells(const QuadtreeField& field, const std::vector<QuadtreeBand>& bands, glm::vec3 eye,
                                const glm::mat4& view_proj) {
-    if (bands.size() > 32) throw std::logic_error("select_cells: at most 32 bands");
+    if (bands.size() > 31) throw std::logic_error("select_cells: at most 31 bands");  // one bit each, and all set
     return Traversal(field, bands, eye, view_proj).run();
 }
 

@@ -9,7 +9,8 @@
 // Fig 6.3). Per band and node, Lemme's lod tests:
 //   discard: no cell centre of the node lies within the band's distances (lod_band_distances);
 //   draw:    every cell centre of the node does, and the node is at most the band's largest
-//            macro-cell (a level-0 node, one cell, is drawn as soon as any part is in range);
+//            macro-cell (a level-0 node, one cell, is drawn when its centre is in range, within
+//            the slack);
 //   split:   otherwise.
 // So macro-cells grow with the distance from the band's edges, as in Lemme's Fig 6.5. A node whose
 // box lies outside the view frustum is dropped for every band (canopy tests the box against the
