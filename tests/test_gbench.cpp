@@ -31,6 +31,7 @@ RunRecord two_cases() {
     a.wall = {"wall", {1.5, 2.5, 3.5, 4.5}, summarize({1.5, 2.5, 3.5, 4.5})};
     a.cpu = {"cpu", {1.1, 2.1, 3.1, 4.1}, summarize({1.1, 2.1, 3.1, 4.1})};
     a.passes = {{"shadow_map", {0.1, 0.2, 0.3, 0.4}, {}}, {"lit", {0.9, 1.8, 2.7, 3.6}, {}}};
+    a.counters = {{"near_cells", 220}};
     a.ratio.per_round = {1, 1, 1, 1};
     CaseResult failed;
     failed.id = "tiny_96x64_shadow.pcf";
@@ -74,6 +75,7 @@ TEST_CASE("results.gbench.json: the context and the fields Google Benchmark writ
     CHECK(first.at("time_unit") == "ms");
     CHECK(first.at("wall_ms") == 1.5);
     CHECK(first.at("shadow_map_ms") == 0.1);
+    CHECK(first.at("counter_near_cells") == 220);  // a technique's count, named apart from the passes
     CHECK(first.at("ratio") == 1.0);
     CHECK(benchmarks[3].at("repetition_index") == 3);
 

@@ -123,6 +123,8 @@ RunRecord awkward_record(const RunIdentity& id) {
     c.load = {{{"bake_front", 0.25}, {"bake_side", 1.0 / 3.0}}, 0.6, 0.75, 4096};
     c.triangles = 14;
     c.primitives = PrimitiveCounts{24576000000ull, 6144};
+    c.counters = {{"near_cells", 220}, {"far_share", 1.0 / 3.0}};
+    c.popping_per_pair = {0.25, std::numeric_limits<double>::quiet_NaN(), 1.0 / 7.0};
     c.shadow_sampler = "compare";
     ImageMetrics m{};
     m.mae = 0.01;
@@ -211,6 +213,11 @@ TEST_CASE("results.json reads back exactly: every field, NaN, infinity, every di
     CHECK(back.cases[0].primitives->submitted == 24576000000ull);
     CHECK(back.cases[0].primitives->rasterised == 6144);
     CHECK_FALSE(back.cases[1].primitives.has_value());  // the failed case was not counted
+    CHECK(back.cases[0].counters == run.cases[0].counters);  // in the order counted
+    REQUIRE(back.cases[0].popping_per_pair.size() == 3);
+    CHECK(back.cases[0].popping_per_pair[0] == 0.25);
+    CHECK(std::isnan(back.cases[0].popping_per_pair[1]));  // a pair with no finite pixel
+    CHECK(back.cases[0].popping_per_pair[2] == 1.0 / 7.0);
     REQUIRE(back.camera_path.has_value());
     CHECK(back.camera_path->poses[1].position.x == 1.0f / 3.0f);
     CHECK(std::isinf(back.cases[0].image_error->psnr));
