@@ -13,12 +13,19 @@
 #include <fmt/format.h>
 
 #include <array>
+#include <cstring>
+#include <type_traits>
 
 namespace canopy::grass {
 
 namespace {
 
 bool draws_copies(const QuadtreeBandDecl& band) { return band.vertex_count == 0; }
+
+// The field as the traversal reads it every frame, worked out once at load (the prototype's
+// bounds run over every vertex of the patch: 60,000 on the football field).
+constexpr const char* kQuadtreeField = "quadtree_field";
+static_assert(std::is_trivially_copyable_v<QuadtreeField>);
 
 }  // namespace
 
@@ -32,6 +39,8 @@ void declare_quadtree(FrameGraph& g, const std::vector<QuadtreeBandDecl>& bands,
                          .usage = kStorageBuffer, .persistent = true});
     g.buffers.push_back({.name = macro_names::kField, .bytes = sizeof(shader::GrassMacroField),
                          .usage = kUniformBuffer, .persistent = true});
+    g.buffers.push_back({.name = kQuadtreeField, .bytes = sizeof(QuadtreeField), .usage = kStorageBuffer,
+                         .persistent = true, .host_visible = true});
     for (const QuadtreeBandDecl& band : bands) {
         if (draws_copies(band))
             g.buffers.push_back({.name = quadtree_list(band.name), .bytes = uint64_t(copy_capacity) * sizeof(PopulationInstance),
@@ -46,10 +55,17 @@ void declare_quadtree(FrameGraph& g, const std::vector<QuadtreeBandDecl>& bands,
 
     // Load: the field's cells as the macro shaders read them, and its placement.
     PassDecl setup{.name = "quadtree_setup", .kind = PassKind::copy, .phase = Phase::load};
-    setup.uses = {use(macro_names::kCells, Use::transfer_write), use(macro_names::kField, Use::transfer_write)};
+    setup.uses = {use(macro_names::kCells, Use::transfer_write), use(macro_names::kField, Use::transfer_write),
+                  use(kQuadtreeField, Use::transfer_write)};
     setup.settings = "the first grass population's cells";
     setup.record = [](PassContext& pc) {
         const GeneratedPopulation* grass = first_grass(pc.populations());
+        QuadtreeField traversed;  // no cells: nothing to traverse
+        if (grass && !grass->instances.empty()) {
+            const GrassField placement = grass_field_placement(grass->params);
+            traversed = {placement.cells, placement.origin, placement.cell_size, prototype_bounds(grass)};
+        }
+        pc.upload(kQuadtreeField, &traversed, sizeof(traversed));
         if (!grass || grass->instances.empty()) return;
         const GrassField field = grass_field_placement(grass->params);
         const std::vector<shader::GrassCell> cells = grass_cells(field, grass->instances);
@@ -62,6 +78,7 @@ void declare_quadtree(FrameGraph& g, const std::vector<QuadtreeBandDecl>& bands,
 
     // Every frame: the traversal, and each band's list and record.
     PassDecl select{.name = "quadtree", .kind = PassKind::cpu};
+    select.uses.push_back(use(kQuadtreeField, Use::storage_read, 0));  // read on the CPU (no descriptor)
     std::string settings;
     for (const QuadtreeBandDecl& band : bands) {
         select.uses.push_back(use(quadtree_list(band.name), Use::transfer_write));
@@ -80,9 +97,8 @@ void declare_quadtree(FrameGraph& g, const std::vector<QuadtreeBandDecl>& bands,
                                        grass_populations));
         QuadtreeSelection selection;
         QuadtreeField field;
+        std::memcpy(&field, cc.read(kQuadtreeField).data(), sizeof(field));
         if (grass && !grass->instances.empty()) {
-            const GrassField placement = grass_field_placement(grass->params);
-            field = {placement.cells, placement.origin, placement.cell_size, prototype_bounds(grass)};
             std::vector<QuadtreeBand> tests;
             for (const QuadtreeBandDecl& band : bands)
                 tests.push_back({band.min_distance, band.max_distance, draws_copies(band) ? 1u : band.max_macro});
