@@ -5,6 +5,7 @@
 // has; with max_distance, cells beyond it are gone and the rest unchanged. A box shrunk, a plane
 // dropped or the count not reset each frame fails a check here.
 #include "support/bake_truth.hpp"
+#include "support/cpu_checks.hpp"
 
 #include "../common/grass_population.hpp"
 
@@ -89,24 +90,16 @@ int expected_cells(const Scene& scene, float max_distance) {
     int kept = 0;
     const auto copies = generate_instances(population);
     for (const PopulationInstance& copy : *copies) {
-        int outside[6] = {0, 0, 0, 0, 0, 0};
+        std::array<glm::vec3, 8> corners;
         glm::vec3 lo(1e30f), hi(-1e30f);
         for (int c = 0; c < 8; ++c) {
             const glm::vec3 corner((c & 1) ? box.max.x : box.min.x, (c & 2) ? box.max.y : box.min.y,
                                    (c & 4) ? box.max.z : box.min.z);
-            const glm::vec4 world = copy.model * glm::vec4(corner, 1.0f);
-            lo = glm::min(lo, glm::vec3(world));
-            hi = glm::max(hi, glm::vec3(world));
-            const glm::vec4 clip = view_proj * world;
-            outside[0] += clip.x < -clip.w;
-            outside[1] += clip.x > clip.w;
-            outside[2] += clip.y < -clip.w;
-            outside[3] += clip.y > clip.w;
-            outside[4] += clip.z < 0.0f;
-            outside[5] += clip.z > clip.w;
+            corners[size_t(c)] = glm::vec3(copy.model * glm::vec4(corner, 1.0f));
+            lo = glm::min(lo, corners[size_t(c)]);
+            hi = glm::max(hi, corners[size_t(c)]);
         }
-        bool seen = true;
-        for (int o : outside) seen = seen && o < 8;
+        bool seen = grass::test::corners_may_be_seen(view_proj, corners);
         if (seen && max_distance > 0.0f) seen = glm::length(camera.position - glm::clamp(camera.position, lo, hi)) <= max_distance;
         kept += seen;
     }

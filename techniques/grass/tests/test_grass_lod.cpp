@@ -5,6 +5,7 @@
 // reference's rays hit, no blade dropped, and each band draws its part; across a field whose cells
 // lie in all three bands the image is finite and its coverage no worse than the representations'.
 #include "support/bake_truth.hpp"
+#include "support/cpu_checks.hpp"
 #include "support/lod_field.hpp"
 
 #include "config/scene_config.hpp"
@@ -23,6 +24,7 @@
 
 using namespace canopy;
 using grass::test::lod_field_scene;
+using grass::test::max_difference;
 using grass::test::one_cell_scene;
 
 namespace {
@@ -47,13 +49,6 @@ Values lod_values(double geometry_full, double geometry_none, double image_start
             {"image_full", image_full},       {"samples", 1LL},                 {"coverage", std::string("alpha_test")},
             {"slices", 4LL},                  {"resolution", 96LL},             {"height_resolution", 48LL},
             {"image_resolution", 128LL}};
-}
-
-float max_difference(const Image& a, const Image& b) {
-    REQUIRE(a.pixels.size() == b.pixels.size());
-    float m = 0.0f;
-    for (size_t i = 0; i < a.pixels.size(); ++i) m = std::max(m, std::abs(a.pixels[i] - b.pixels[i]));
-    return m;
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 // records; the field's copies stay on the CPU; and a frame that needs more near cells than it may
 // hold, or a scene with two grass populations, fails saying what to change.
 #include "support/bake_truth.hpp"
+#include "support/cpu_checks.hpp"
 #include "support/lod_field.hpp"
 
 #include "config/population_overrides.hpp"
@@ -26,6 +27,7 @@
 
 using namespace canopy;
 using grass::test::lod_field_scene;
+using grass::test::max_difference;
 
 namespace {
 
@@ -55,13 +57,6 @@ Values quadtree_values(double geometry_full, double geometry_none, double image_
             {"slices", 4LL},                  {"resolution", 96LL},             {"height_resolution", 48LL},
             {"image_resolution", 128LL},      {"culling", std::string("quadtree")},
             {"middle_macro_max", 2LL},        {"far_macro_max", 2LL}};
-}
-
-float max_difference(const Image& a, const Image& b) {
-    REQUIRE(a.pixels.size() == b.pixels.size());
-    float m = 0.0f;
-    for (size_t i = 0; i < a.pixels.size(); ++i) m = std::max(m, std::abs(a.pixels[i] - b.pixels[i]));
-    return m;
 }
 
 double counter(const FrameTiming& t, const std::string& name) {

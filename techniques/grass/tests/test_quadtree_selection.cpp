@@ -9,6 +9,7 @@
 #include "../shaders/lod_selection.h"
 
 #include "scene/camera.hpp"
+#include "support/cpu_checks.hpp"
 
 #include <doctest/doctest.h>
 
@@ -58,25 +59,18 @@ Camera camera(glm::vec3 position, glm::vec3 target, float fov = 45.0f) {
     return c;
 }
 
-// Whether a cell's box (its patch mirrored either way) may be in view: not all 8 corners beyond
-// one clip plane. Written here from the clip-space definition, not with the shaders' header.
+// Whether a cell's box (its patch mirrored either way) may be in view (support/cpu_checks, written
+// from the clip-space definition, not with the shaders' header).
 bool cell_in_view(const QuadtreeField& f, glm::uvec2 cell, const glm::mat4& view_proj) {
     const Bounds& b = f.patch_box;
     const float lo_x = std::min(b.min.x, 1.0f - b.max.x), hi_x = std::max(b.max.x, 1.0f - b.min.x);
     const float lo_z = std::min(b.min.z, 1.0f - b.max.z), hi_z = std::max(b.max.z, 1.0f - b.min.z);
-    int outside[6] = {0, 0, 0, 0, 0, 0};
-    for (int c = 0; c < 8; ++c) {
-        const glm::vec3 p(float(cell.x) + ((c & 1) ? hi_x : lo_x), (c & 2) ? b.max.y : b.min.y,
-                          float(cell.y) + ((c & 4) ? hi_z : lo_z));
-        const glm::vec4 clip = view_proj * glm::vec4(f.origin + f.cell_size * p, 1.0f);
-        outside[0] += clip.x < -clip.w;
-        outside[1] += clip.x > clip.w;
-        outside[2] += clip.y < -clip.w;
-        outside[3] += clip.y > clip.w;
-        outside[4] += clip.z < 0.0f;
-        outside[5] += clip.z > clip.w;
-    }
-    return std::none_of(std::begin(outside), std::end(outside), [](int n) { return n == 8; });
+    std::array<glm::vec3, 8> corners;
+    for (int c = 0; c < 8; ++c)
+        corners[size_t(c)] = f.origin + f.cell_size * glm::vec3(float(cell.x) + ((c & 1) ? hi_x : lo_x),
+                                                                (c & 2) ? b.max.y : b.min.y,
+                                                                float(cell.y) + ((c & 4) ? hi_z : lo_z));
+    return grass::test::corners_may_be_seen(view_proj, corners);
 }
 
 float centre_distance(const QuadtreeField& f, glm::uvec2 cell, glm::vec3 eye) {
