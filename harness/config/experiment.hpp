@@ -3,6 +3,7 @@
 
 #include "config/paper_comparison.hpp"
 #include "core/param.hpp"
+#include "metrics/distance_bands.hpp"
 #include "reference/reference_settings.hpp"
 #include "scene/camera_path.hpp"
 #include "scene/scene.hpp"
@@ -55,6 +56,8 @@ struct Experiment {
     // The ray-traced reference every case's image is compared with ([reference] table).
     bool reference_enabled = true;
     ReferenceSettings reference{64, 4, 1, 0};  // 64 light samples x 4 pixel samples = 256 shadow rays per pixel
+    // [reference] distance_bands: FLIP is also reported near, in the middle and far (metrics/distance_bands.hpp).
+    std::optional<DistanceBands> distance_bands;
     // The paper table this experiment reproduces ([paper]), if any.
     std::optional<PaperComparison> paper;
     // Hash of the experiment file and every scene file it uses (hex), for the results record.

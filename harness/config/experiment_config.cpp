@@ -289,6 +289,16 @@ void read_reference(TomlReader& section, Experiment& experiment) {
     experiment.reference.light_samples = int(light_samples);
     experiment.reference.pixel_samples = int(pixel_samples);
     experiment.reference.seed = uint64_t(seed);
+    if (section.has("distance_bands")) {
+        const glm::vec2 bands = section.get_vec2("distance_bands", {}, Broadcast::forbidden);
+        if (!(bands.x >= 0.0f && bands.x <= bands.y))
+            throw section.error("distance_bands",
+                                fmt::format("'distance_bands' must be two distances 0 <= near-to-middle <= middle-to-far, "
+                                            "got [{}, {}]", bands.x, bands.y),
+                                "distance_bands = [8, 30]: FLIP near (under 8 m from the eye), in the middle and far "
+                                "(from 30 m), by the distance of the surface the reference sees through each pixel");
+        experiment.distance_bands = DistanceBands{bands.x, bands.y};
+    }
     section.finish();
 }
 

@@ -33,11 +33,22 @@ ImageMetrics compute_metrics(const Image& test, const Image& reference, const Pi
     const FlipPooled flip = pool_flip_map(flip_map);
     metrics.flip_mean = flip.mean;
     metrics.flip_median_weighted = flip.weighted_median;
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    metrics.flip_near = metrics.flip_middle = metrics.flip_far = nan;
+    metrics.near_pixels = metrics.middle_pixels = metrics.far_pixels = 0;
+    if (options.distance_bands) {
+        const BandMeans by_band = band_means(flip_map, *options.distance_bands);
+        metrics.flip_near = by_band.near;
+        metrics.flip_middle = by_band.middle;
+        metrics.flip_far = by_band.far;
+        metrics.near_pixels = by_band.near_pixels;
+        metrics.middle_pixels = by_band.middle_pixels;
+        metrics.far_pixels = by_band.far_pixels;
+    }
     if (flip_map_out) *flip_map_out = std::move(flip_map);
 
     metrics.nonfinite_pixels = count_nonfinite_pixels(test);
 
-    const double nan = std::numeric_limits<double>::quiet_NaN();
     metrics.columns = columns;
     metrics.light_bleeding = metrics.over_darkening = metrics.penumbra_rmse = nan;
     metrics.umbra_pixels = metrics.lit_pixels = metrics.penumbra_pixels = 0;

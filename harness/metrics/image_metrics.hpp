@@ -3,6 +3,7 @@
 
 #include "core/error_columns.hpp"
 #include "core/image.hpp"
+#include "metrics/distance_bands.hpp"
 #include "metrics/flip.hpp"
 #include "metrics/pixel_classes.hpp"
 
@@ -28,6 +29,11 @@ struct ImageMetrics {
     double flip_mean, flip_median_weighted;
 
     long long nonfinite_pixels;
+
+    // FLIP's mean over the pixels of each distance band (distance_bands.hpp), when the experiment
+    // sets [reference] distance_bands; NaN (and counts 0) otherwise or for an empty band.
+    double flip_near, flip_middle, flip_far;
+    long long near_pixels, middle_pixels, far_pixels;
 
     // Shadow-region metrics (shadow_error.hpp) over the reference's pixel-centre umbra, lit and
     // penumbra pixels off silhouettes (pixel_classes.hpp); NaN (and counts 0) when not computed
@@ -61,6 +67,8 @@ struct MetricOptions {
     double flip_pixels_per_degree = default_flip_pixels_per_degree;
     double visibility_epsilon = 1e-3;
     PixelClassOptions pixel_classes;
+    // Each pixel's distance band (classify_distances), or null: no per-band metrics.
+    const std::vector<DistanceBand>* distance_bands = nullptr;
 };
 
 // The technique's and the reference's pixel-centre visibility (core/pixel_visibility.hpp).

@@ -229,6 +229,8 @@ RunRecord read_json_report(const std::filesystem::path& file) {
             }
             run.camera_path = std::move(p);
         }
+        if (j.contains("distance_bands") && !j.at("distance_bands").is_null())  // absent in files older than the key
+            run.distance_bands = DistanceBands{j.at("distance_bands").at(0).get<double>(), j.at("distance_bands").at(1).get<double>()};
         run.planned_cases = j.at("planned_cases").get<size_t>();
         run.reference_enabled = j.at("reference_enabled").get<bool>();
         run.environment = j.at("environment").get<Environment>();

@@ -208,6 +208,9 @@ std::string json_report(const RunRecord& run) {
                         {"frames_per_sample", run.frames_per_sample},
                         {"measured_frames", run.measured_frames()},
                         {"camera_path", camera_path_json(run.camera_path)},
+                        {"distance_bands", run.distance_bands ? nlohmann::json::array({run.distance_bands->middle_from,
+                                                                                       run.distance_bands->far_from})
+                                                              : nlohmann::json()},
                         {"quick", run.quick},
                         {"planned_cases", run.planned_cases},
                         {"environment", run.environment},

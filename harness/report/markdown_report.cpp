@@ -105,6 +105,12 @@ std::string markdown_report(const RunRecord& run) {
                "of the reference's|: what the technique changes that the scene does not (LoD switches, temporal "
                "aliasing, and the reference's re-drawn sample noise, which every technique shares); popping max: "
                "the worst pair of frames. ";
+    if (run.distance_bands)
+        out += fmt::format("FLIP near, FLIP middle and FLIP far: the mean of the FLIP map over the pixels whose surface "
+                           "in the reference (through the pixel's centre) lies nearer than {} from the eye, from {} to "
+                           "{}, and {} or farther (distance along the ray; background pixels in none). ",
+                           run.distance_bands->middle_from, run.distance_bands->middle_from,
+                           run.distance_bands->far_from, run.distance_bands->far_from);
     out += "n/a: the technique's family declares the column meaningless for it. "
            "The papers define no error metric: these columns are canopy's. On lavapipe a GPU time is "
            "CPU time on a shared machine: compare ratios measured in one run, not absolute times across runs.\n";

@@ -141,6 +141,7 @@ struct RunRecord {
     int frames_per_sample = 0;     // frames each sample averages
     int measured_frames() const { return rounds * frames_per_sample; }
     std::optional<CameraPath> camera_path;  // the frames of a sample follow it (then frames_per_sample = its frames)
+    std::optional<DistanceBands> distance_bands;  // [reference] distance_bands: FLIP near / middle / far
     bool quick = false;
     RunIdentity identity;                 // what a run continuing this one must match
     std::string started_at, finished_at;  // ISO 8601, UTC

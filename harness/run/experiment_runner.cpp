@@ -192,6 +192,7 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
     run.rounds = settings.rounds;
     run.frames_per_sample = settings.frames_per_sample;
     run.camera_path = settings.camera_path;
+    if (options.reference && experiment.reference_enabled) run.distance_bands = experiment.distance_bands;
     run.started_at = utc_now();
     run.planned_cases = prepared.cases.size();
     run.reference_enabled = options.reference && experiment.reference_enabled;
@@ -325,6 +326,11 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
                 }
             }
 
+            // Distance bands: the reference's surface at each pixel centre decides, for every case alike.
+            std::vector<DistanceBand> distance_bands;
+            if (reference && experiment.distance_bands)
+                distance_bands = classify_distances(reference->pixel_visibility.visibility, scene.camera, *experiment.distance_bands);
+
             // Popping: the reference at every frame of the path (cached like any other), before
             // the group is measured so no case waits on it.
             std::vector<const Image*> path_references;
@@ -387,8 +393,11 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
                         // The population coverage: the technique's alpha against the reference's
                         // pixel samples (metrics/coverage_error.hpp).
                         const CoveragePair coverage{visibility, reference->images.visibility};
+                        MetricOptions metric_options;
+                        if (!distance_bands.empty()) metric_options.distance_bands = &distance_bands;
                         result.image_error = compute_metrics(image, truth, &pixel_visibility, &coverage,
-                                                             input.cases[k].technique->error_columns(), {}, &flip_map);
+                                                             input.cases[k].technique->error_columns(), metric_options,
+                                                             &flip_map);
                         if (pngs) {
                             const auto record = std::find_if(run.references.begin(), run.references.end(),
                                                              [&](const ReferenceRecord& r) { return same_reference(r, scene.name, resolution); });
