@@ -68,6 +68,8 @@ struct MetricInfo {
     // (PSNR of identical images) records that in this boolean key beside it.
     std::string_view infinite_key = {};
     std::string_view doc = {};
+    // A per-band metric ([reference] distance_bands) is measured over that band's pixels only.
+    DistanceBand band = DistanceBand::none;
 
     bool shown_in(MetricShown where) const { return (shown & where) != 0; }
     // The value, or NaN where the technique does not declare the metric's group meaningful.

@@ -84,9 +84,16 @@ double metric_of(const PaperRow& row, const CaseResult& c, std::string_view clai
 }
 
 // "PSNR (dB; whole image; higher is better)"
-std::string table_title(const MetricInfo& metric) {
+// Over which pixels: the metric's group, or its distance band's limits.
+std::string table_title(const MetricInfo& metric, const std::optional<DistanceBands>& bands) {
+    std::string pixels(group_info(metric.group).description);
+    if (metric.band != DistanceBand::none && bands)
+        pixels = metric.band == DistanceBand::near     ? fmt::format("pixels whose surface lies under {} from the eye", bands->middle_from)
+                 : metric.band == DistanceBand::middle ? fmt::format("pixels whose surface lies {} to {} from the eye",
+                                                                     bands->middle_from, bands->far_from)
+                                                       : fmt::format("pixels whose surface lies {} or more from the eye", bands->far_from);
     return fmt::format("{} ({}{}; {} is better)", metric.title, metric.unit.empty() ? "" : fmt::format("{}; ", metric.unit),
-                       group_info(metric.group).description, to_string(metric.better));
+                       pixels, to_string(metric.better));
 }
 
 std::string number(double v, const char* spec = "{:.3g}") {
@@ -278,7 +285,7 @@ std::string paper_report(const PaperComparison& paper, const RunRecord& run) {
     if (errors) {
         for (const MetricInfo& metric : registered_metrics()) {
             if (!metric.shown_in(shown_in_paper_tables)) continue;
-            const std::string claim(metric.claim), title = table_title(metric);
+            const std::string claim(metric.claim), title = table_title(metric, run.distance_bands);
             std::vector<std::vector<std::string>> rows;
             bool any_value = false;  // a metric no row's technique declares (a shadow metric for grass) is left out
             for (const PaperRow& row : paper.rows) {
