@@ -9,10 +9,9 @@
 #include "metrics/image_metrics.hpp"
 #include "report/json_record_reader.hpp"
 #include "report/markdown_report.hpp"
-#include "run/experiment_runner.hpp"
 #include "support/config_error_of.hpp"
+#include "support/quiet_run.hpp"
 #include "support/temp_folder.hpp"
-#include "support/test_gpu.hpp"
 
 #include <doctest/doctest.h>
 
@@ -176,13 +175,7 @@ TEST_CASE("a run with distance_bands reports FLIP near, in the middle and far, a
     static const test::TempFolder folder("canopy-test-distance-bands");
     const auto run_with = [&](std::optional<DistanceBands> bands, const char* name) {
         experiment.distance_bands = bands;
-        const PreparedExperiment prepared = prepare_experiment(experiment, registry, test::gpu());
-        RunOptions options;
-        options.out_dir = folder.path() / name;
-        options.show_progress = false;
-        options.images = ImageOutput::none;
-        options.reference_cache_dir = folder.path() / "cache";
-        return run_experiment(prepared, registry, test::gpu(), options);
+        return test::quiet_run(experiment, folder.path() / name, folder.path() / "cache");
     };
     // tiny.toml's eye is 7.1 from the floor's centre; the floor reaches from about 5 to 10 away.
     const RunRecord banded = run_with(DistanceBands{6.5, 7.5}, "banded");

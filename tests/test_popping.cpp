@@ -6,9 +6,8 @@
 #include "metrics/popping.hpp"
 #include "report/json_record_reader.hpp"
 #include "report/markdown_report.hpp"
-#include "run/experiment_runner.hpp"
+#include "support/quiet_run.hpp"
 #include "support/temp_folder.hpp"
-#include "support/test_gpu.hpp"
 
 #include <doctest/doctest.h>
 
@@ -113,13 +112,7 @@ TEST_CASE("a run with popping = true measures it on a traversal of its own, and 
     static const test::TempFolder folder("canopy-test-popping");
     const auto run_with = [&](bool popping, const char* name) {
         experiment.camera_path->popping = popping;
-        const PreparedExperiment prepared = prepare_experiment(experiment, registry, test::gpu());
-        RunOptions options;
-        options.out_dir = folder.path() / name;
-        options.show_progress = false;
-        options.images = ImageOutput::none;
-        options.reference_cache_dir = folder.path() / "cache";
-        return run_experiment(prepared, registry, test::gpu(), options);
+        return test::quiet_run(experiment, folder.path() / name, folder.path() / "cache");
     };
     const RunRecord measured = run_with(true, "popping");
     REQUIRE(measured.status == "complete");
