@@ -152,9 +152,9 @@ TEST_CASE("[reference] distance_bands: two distances in order, or an error at it
     const auto load = [&](const std::string& line) {
         return load_experiment(folder.write("experiment.toml", head + line + "\n"), TechniqueRegistry::instance());
     };
-    const Experiment set = load("distance_bands = [8, 30.5]");
+    const Experiment set = load("distance_bands = [8.3, 30.5]");
     REQUIRE(set.distance_bands);
-    CHECK(set.distance_bands->middle_from == 8.0);
+    CHECK(set.distance_bands->middle_from == 8.3);  // as written, not rounded to a float
     CHECK(set.distance_bands->far_from == 30.5);
     CHECK_FALSE(load("seed = 2").distance_bands);
     for (const char* bad : {"distance_bands = [30, 8]", "distance_bands = [-1, 8]", "distance_bands = 8",
@@ -164,6 +164,16 @@ TEST_CASE("[reference] distance_bands: two distances in order, or an error at it
         REQUIRE(error);
         CHECK(error->line() == 6);
     }
+    // A claim on a band's FLIP needs the bands: an error at the claim, not "not measured" after the run.
+    const std::string claim = "\n[paper]\nid = \"x\"\ntitle = \"x\"\nsource = \"x\"\ncolumn_key = \"scene\"\n"
+                              "columns = [\"scene\"]\nbaseline = \"a\"\n[[paper.row]]\nlabel = \"a\"\n"
+                              "technique = \"shadow.hard\"\nvalues = [1.0]\n[[paper.claim]]\ntext = \"x\"\n"
+                              "left = \"a\"\nright = \"a\"\nmetric = \"flip_far\"\noffset = 0.02\n";
+    CHECK(load("distance_bands = [1, 2]" + claim).paper->claims.size() == 1);
+    const auto error = test::config_error_of([&] { load("seed = 2" + claim); });
+    REQUIRE(error);
+    CHECK(error->line() == 18);  // its [[paper.claim]]
+    CHECK(error->what() != std::string());
 }
 
 TEST_CASE("a run with distance_bands reports FLIP near, in the middle and far, and results.json keeps them") {
@@ -195,10 +205,14 @@ TEST_CASE("a run with distance_bands reports FLIP near, in the middle and far, a
     REQUIRE(written.cases.size() == 1);
     CHECK(written.cases[0].image_error->flip_far == doctest::Approx(m.flip_far).epsilon(1e-9));
     CHECK(written.cases[0].image_error->far_pixels == m.far_pixels);
+    REQUIRE(written.distance_bands);
+    CHECK(written.distance_bands->middle_from == 6.5);
+    CHECK(written.distance_bands->far_from == 7.5);
 
     const RunRecord plain = run_with(std::nullopt, "plain");
     REQUIRE(plain.status == "complete");
     CHECK(std::isnan(plain.cases[0].image_error->flip_far));
     CHECK(plain.cases[0].image_error->far_pixels == 0);
+    CHECK_FALSE(read_json_report(folder.path() / "plain" / "results.json").distance_bands);
     CHECK(markdown_table(plain).find("FLIP far") == std::string::npos);
 }

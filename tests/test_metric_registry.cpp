@@ -120,8 +120,9 @@ Experiment parse_claim(const std::string& metric, const std::string& relation) {
     static const test::TempFolder folder("canopy-test-metric-registry");
     const std::string name = fmt::format("{}-{}.toml", metric, relation);
     const fs::path file = folder.write(
+        // Distance bands, which a claim on a band's FLIP needs.
         name, fmt::format("[experiment]\nscenes = [\"{}/scenes/tiny.toml\"]\n[[technique]]\nname = \"shadow.hard\"\n"
-                          "[paper]\nid = \"R\"\ncolumns = [\"96x64\"]\n[[paper.row]]\nlabel = \"hard\"\n"
+                          "[reference]\ndistance_bands = [1, 2]\n[paper]\nid = \"R\"\ncolumns = [\"96x64\"]\n[[paper.row]]\nlabel = \"hard\"\n"
                           "technique = \"shadow.hard\"\n[[paper.claim]]\ntext = \"t\"\nleft = \"hard\"\n"
                           "right = \"hard\"\nmetric = \"{}\"\nrelation = \"{}\"\n",
                           CANOPY_TEST_DATA, metric, relation));

@@ -6,6 +6,7 @@
 #include "config/paper_config.hpp"
 #include "config/population_overrides.hpp"
 #include "config/toml_reader.hpp"
+#include "metrics/metric_registry.hpp"
 #include "scene/scene_limits.hpp"
 
 #include <fmt/format.h>
@@ -297,7 +298,9 @@ void read_reference(TomlReader& section, Experiment& experiment) {
                                             "got [{}, {}]", bands.x, bands.y),
                                 "distance_bands = [8, 30]: FLIP near (under 8 m from the eye), in the middle and far "
                                 "(from 30 m), by the distance of the surface the reference sees through each pixel");
-        experiment.distance_bands = DistanceBands{bands.x, bands.y};
+        // The values as written (get_vec2 checked their shape and order in float).
+        const toml::array& written = *section.node("distance_bands")->as_array();
+        experiment.distance_bands = DistanceBands{written[0].value<double>().value(), written[1].value<double>().value()};
     }
     section.finish();
 }
@@ -365,6 +368,14 @@ Experiment load_experiment(const std::filesystem::path& file, const TechniqueReg
     experiment.frames_per_sample = int(frames_per_sample);
     if (reference_section) read_reference(*reference_section, experiment);
     if (paper_section) experiment.paper = read_paper(*paper_section, registry);
+    if (experiment.paper && !experiment.distance_bands)
+        for (const PaperClaim& claim : experiment.paper->claims)
+            if (const MetricInfo* metric = find_claim_metric(claim.metric); metric && metric->band != DistanceBand::none)
+                throw ConfigError(claim.where.file, claim.where.line,
+                                  fmt::format("the claim compares '{}', which needs the experiment's distance bands",
+                                              claim.metric),
+                                  "add distance_bands = [near-to-middle, middle-to-far] to [reference], e.g. "
+                                  "distance_bands = [8, 30]");
 
     std::vector<std::filesystem::path> hashed_files;
     experiment.scenes = read_scenes(*section, hashed_files);

@@ -105,10 +105,12 @@ std::string markdown_report(const RunRecord& run) {
                "of the reference's|: what the technique changes that the scene does not (LoD switches, temporal "
                "aliasing, and the reference's re-drawn sample noise, which every technique shares); popping max: "
                "the worst pair of frames. ";
-    if (run.distance_bands)
+    if (run.distance_bands && std::any_of(run.cases.begin(), run.cases.end(), [](const CaseResult& c) {
+            return c.image_error && (c.image_error->near_pixels + c.image_error->middle_pixels + c.image_error->far_pixels) > 0;
+        }))
         out += fmt::format("FLIP near, FLIP middle and FLIP far: the mean of the FLIP map over the pixels whose surface "
-                           "in the reference (through the pixel's centre) lies nearer than {} from the eye, from {} to "
-                           "{}, and {} or farther (distance along the ray; background pixels in none). ",
+                           "in the reference (through the pixel's centre) lies nearer than {} scene units from the eye, "
+                           "from {} to {}, and {} or farther (distance along the ray; background pixels in none). ",
                            run.distance_bands->middle_from, run.distance_bands->middle_from,
                            run.distance_bands->far_from, run.distance_bands->far_from);
     out += "n/a: the technique's family declares the column meaningless for it. "

@@ -87,6 +87,7 @@ double metric_of(const PaperRow& row, const CaseResult& c, std::string_view clai
 // Over which pixels: the metric's group, or its distance band's limits.
 std::string table_title(const MetricInfo& metric, const std::optional<DistanceBands>& bands) {
     std::string pixels(group_info(metric.group).description);
+    if (metric.band != DistanceBand::none && !bands) pixels = "one distance band's pixels";
     if (metric.band != DistanceBand::none && bands)
         pixels = metric.band == DistanceBand::near     ? fmt::format("pixels whose surface lies under {} from the eye", bands->middle_from)
                  : metric.band == DistanceBand::middle ? fmt::format("pixels whose surface lies {} to {} from the eye",
