@@ -60,17 +60,17 @@ void declare_quadtree(FrameGraph& g, const std::vector<QuadtreeBandDecl>& bands,
     setup.settings = "the first grass population's cells";
     setup.record = [](PassContext& pc) {
         const GeneratedPopulation* grass = first_grass(pc.populations());
-        QuadtreeField traversed;  // no cells: nothing to traverse
-        if (grass && !grass->instances.empty()) {
-            const GrassField placement = grass_field_placement(grass->params);
-            traversed = {placement.cells, placement.origin, placement.cell_size, prototype_bounds(grass)};
+        if (!grass || grass->instances.empty()) {
+            const QuadtreeField nothing;  // no cells: nothing to traverse
+            pc.upload(kQuadtreeField, &nothing, sizeof(nothing));
+            return;
         }
-        pc.upload(kQuadtreeField, &traversed, sizeof(traversed));
-        if (!grass || grass->instances.empty()) return;
         const GrassField field = grass_field_placement(grass->params);
+        const Bounds bounds = prototype_bounds(grass);  // over every vertex of the patch: once
+        const QuadtreeField traversed{field.cells, field.origin, field.cell_size, bounds};
+        pc.upload(kQuadtreeField, &traversed, sizeof(traversed));
         const std::vector<shader::GrassCell> cells = grass_cells(field, grass->instances);
-        const shader::GrassMacroField placement =
-            macro_field(field, 0, cell_frame(prototype_bounds(grass)).max.y, grass->transmission);
+        const shader::GrassMacroField placement = macro_field(field, 0, cell_frame(bounds).max.y, grass->transmission);
         pc.upload(macro_names::kCells, cells.data(), cells.size() * sizeof(shader::GrassCell));
         pc.upload(macro_names::kField, &placement, sizeof(placement));
     };
