@@ -74,3 +74,14 @@ TEST_CASE("power-law fit keeps the offset non-negative on concave data") {
     CHECK(fit.offset >= 0.0);
     CHECK(fit.exponent == doctest::Approx(0.7).epsilon(0.02));
 }
+
+TEST_CASE("quantile_of_sorted interpolates between order statistics (numpy's default)") {
+    const std::vector<double> v{1.0, 2.0, 3.0, 4.0};
+    CHECK(quantile_of_sorted(v, 0.0) == 1.0);
+    CHECK(quantile_of_sorted(v, 1.0) == 4.0);
+    CHECK(quantile_of_sorted(v, 0.5) == doctest::Approx(2.5));
+    CHECK(quantile_of_sorted(v, 0.05) == doctest::Approx(1.15));  // numpy.quantile([1, 2, 3, 4], 0.05)
+    CHECK(quantile_of_sorted(v, 0.95) == doctest::Approx(3.85));
+    CHECK(quantile_of_sorted({7.0}, 0.3) == 7.0);
+    CHECK(std::isnan(quantile_of_sorted({}, 0.5)));
+}

@@ -1,5 +1,7 @@
 #include "run/block_bootstrap.hpp"
 
+#include "run/statistics.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -9,16 +11,6 @@ namespace canopy {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-// Linear interpolation between order statistics (type 7, as numpy and R's default).
-double quantile_of_sorted(const std::vector<double>& sorted, double q) {
-    if (sorted.empty()) return kNaN;
-    const double position = q * double(sorted.size() - 1);
-    const size_t below = size_t(std::floor(position));
-    const size_t above = std::min(below + 1, sorted.size() - 1);
-    const double t = position - double(below);
-    return sorted[below] + t * (sorted[above] - sorted[below]);
-}
 
 Interval percentile_interval(std::vector<double> replicates) {
     std::sort(replicates.begin(), replicates.end());

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 namespace canopy {
@@ -14,6 +15,15 @@ double median_of_sorted(const std::vector<double>& v) {
 }
 
 }  // namespace
+
+double quantile_of_sorted(const std::vector<double>& sorted, double q) {
+    if (sorted.empty()) return std::numeric_limits<double>::quiet_NaN();
+    const double position = q * double(sorted.size() - 1);
+    const size_t below = size_t(std::floor(position));
+    const size_t above = std::min(below + 1, sorted.size() - 1);
+    const double t = position - double(below);
+    return sorted[below] + t * (sorted[above] - sorted[below]);
+}
 
 SampleStats summarize(std::vector<double> samples) {
     SampleStats s;

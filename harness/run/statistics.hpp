@@ -15,4 +15,8 @@ struct SampleStats {
 
 SampleStats summarize(std::vector<double> samples);
 
+// The q-quantile (q in [0, 1]) of values sorted ascending: linear interpolation between order
+// statistics (type 7, as numpy and R's default); NaN for no values.
+double quantile_of_sorted(const std::vector<double>& sorted, double q);
+
 }  // namespace canopy

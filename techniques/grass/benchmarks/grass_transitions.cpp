@@ -41,14 +41,6 @@ int representation(const Bands& b, float d, float t, float density) {
     return -1;
 }
 
-double percentile(std::vector<double> v, double q) {
-    if (v.empty()) return std::nan("");
-    std::sort(v.begin(), v.end());
-    const double at = q * double(v.size() - 1);
-    const size_t lo = size_t(std::floor(at)), hi = std::min(lo + 1, v.size() - 1);
-    return v[lo] + (at - double(lo)) * (v[hi] - v[lo]);
-}
-
 class GrassTransitions final : public FamilyBenchmark {
 public:
     std::string name() const override { return "grass-transitions"; }
@@ -114,8 +106,9 @@ public:
                 cell_switches[a][size_t(blade.cell.y) * spec.field.cells.x + size_t(blade.cell.x)] = 1;
             });
             for (int k = 0; k < 2; ++k) {
-                const double p5 = percentile(depths[k], 0.05), p50 = percentile(depths[k], 0.5),
-                             p95 = percentile(depths[k], 0.95);
+                std::sort(depths[k].begin(), depths[k].end());
+                const double p5 = quantile_of_sorted(depths[k], 0.05), p50 = quantile_of_sorted(depths[k], 0.5),
+                             p95 = quantile_of_sorted(depths[k], 0.95);
                 size_t cells = 0;
                 for (int sw : cell_switches[k]) cells += size_t(sw);
                 const auto m = [](double v) { return std::isnan(v) ? std::string("-") : fmt::format("{:.2f}", v); };
