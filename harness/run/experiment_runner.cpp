@@ -192,10 +192,10 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
     run.rounds = settings.rounds;
     run.frames_per_sample = settings.frames_per_sample;
     run.camera_path = settings.camera_path;
-    if (options.reference && experiment.reference_enabled) run.distance_bands = experiment.distance_bands;
     run.started_at = utc_now();
     run.planned_cases = prepared.cases.size();
     run.reference_enabled = options.reference && experiment.reference_enabled;
+    if (run.reference_enabled) run.distance_bands = experiment.distance_bands;  // the bands need the reference
 
     const std::vector<PlannedGroup> groups = plan_groups(prepared.cases, experiment.scenes);
     for (const PlannedGroup& g : groups) {
