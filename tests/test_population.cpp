@@ -402,4 +402,30 @@ TEST_CASE("population: the reference traces shadow rays one at a time where inst
     CHECK(EmbreeScene(masked, build_scene_meshes(masked)).shadow_query() == ShadowQuery::single);
     CHECK(EmbreeScene(opaque, build_scene_meshes(opaque)).shadow_query() == ShadowQuery::packet16);
     CHECK(EmbreeScene(without, build_scene_meshes(without)).shadow_query() == ShadowQuery::packet16);
+
+    // One ray at a time answers as the packet does: rays up from the floor through the striped
+    // pebbles, on a grid over their region, some through a stripe and some blocked.
+    const EmbreeScene embree(masked, build_scene_meshes(masked));
+    EmbreeShadowTracer packets(embree.shadow_scene(), ShadowQuery::packet16);
+    EmbreeShadowTracer singles(embree.shadow_scene(), ShadowQuery::single);
+    int occluded = 0, traced = 0;
+    for (int row = 0; row < 60; ++row) {
+        ShadowPacket a, b;
+        for (int lane = 0; lane < ShadowPacket::kWidth; ++lane) {
+            const glm::vec3 origin(-2.0f + 4.0f * (float(lane) + 0.5f) / 16.0f, 0.001f, -1.5f + 3.0f * (float(row) + 0.5f) / 60.0f);
+            const bool trace = (lane + row) % 5 != 0;  // some lanes left out
+            a.set(lane, origin, glm::vec3(0.0f, 1.0f, 0.0f), 10.0f, trace);
+            b.set(lane, origin, glm::vec3(0.0f, 1.0f, 0.0f), 10.0f, trace);
+        }
+        packets.trace(a);
+        singles.trace(b);
+        for (int lane = 0; lane < ShadowPacket::kWidth; ++lane) {
+            CHECK(a.occluded(lane) == b.occluded(lane));
+            occluded += a.occluded(lane);
+            traced += a.valid[lane] != 0;
+        }
+    }
+    CHECK(singles.rays() == packets.rays());
+    CHECK(occluded > 20);
+    CHECK(occluded < traced);
 }

@@ -70,6 +70,7 @@ RunRecord awkward_record(const RunIdentity& id) {
     run.planned_cases = 3;
     run.reference_enabled = true;
     run.camera_path = CameraPath{2, {{{0, 1, 2}, {0, 0, 0}, 0.0f}, {{1.0f / 3.0f, 2, 3}, {0, 0.5f, 0}, 30.0f}}};
+    run.distance_bands = DistanceBands{1.0 / 3.0, 30.5};
     ReferenceRecord r;
     r.scene = "tiny";
     r.resolution = {96, 64};
@@ -197,7 +198,7 @@ TEST_CASE("results.json reads back exactly: every field, NaN, infinity, every di
     // Written again, the cases, references and run fields are the same text: nothing was lost.
     const nlohmann::json a = nlohmann::json::parse(json_report(run)), b = nlohmann::json::parse(json_report(back));
     for (const char* key : {"cases", "groups", "references", "run_identity", "status", "error", "started_at", "resumed_at",
-                            "rounds", "frames_per_sample", "measured_frames", "warmup_frames", "quick", "planned_cases", "config", "description", "camera_path"})
+                            "rounds", "frames_per_sample", "measured_frames", "warmup_frames", "quick", "planned_cases", "config", "description", "camera_path", "distance_bands"})
         CHECK_MESSAGE(a[key].dump() == b[key].dump(), key);
     CHECK(back.cases[0].gpu_frame.samples_ms[2] == 1.0 / 7.0);
     CHECK(back.cases[0].ratio.per_round[1] == 2.0 / 3.0);
@@ -220,6 +221,9 @@ TEST_CASE("results.json reads back exactly: every field, NaN, infinity, every di
     CHECK(back.cases[0].popping_per_pair[2] == 1.0 / 7.0);
     REQUIRE(back.camera_path.has_value());
     CHECK(back.camera_path->poses[1].position.x == 1.0f / 3.0f);
+    REQUIRE(back.distance_bands.has_value());
+    CHECK(back.distance_bands->middle_from == 1.0 / 3.0);
+    CHECK(back.distance_bands->far_from == 30.5);
     CHECK(std::isinf(back.cases[0].image_error->psnr));
     CHECK(std::isnan(back.cases[0].image_error->light_bleeding));
     CHECK(back.cases[0].image_error->visibility_mae == 1.0 / 3.0);
