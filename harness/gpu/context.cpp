@@ -251,6 +251,8 @@ GpuContext::GpuContext(const std::string& selector, Validation validation) {
     // Alpha-to-coverage stores 1 in the covered samples, so a resolved alpha is the covered share
     // of the pixel (the grass family's coverage) rather than alpha times it.
     enable.features.alphaToOne = supported.features.alphaToOne;
+    enable.features.sampleRateShading = supported.features.sampleRateShading;
+    sample_rate_shading_ = supported.features.sampleRateShading;
     alpha_to_one_ = supported.features.alphaToOne;
 
     float priority = 1.0f;

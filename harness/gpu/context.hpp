@@ -67,6 +67,7 @@ public:
     bool draw_indirect_count() const { return draw_indirect_count_; }
     bool pipeline_statistics() const { return pipeline_statistics_; }  // primitive counts (PrimitiveCounter)
     bool alpha_to_one() const { return alpha_to_one_; }  // alpha-to-coverage pipelines store alpha 1
+    bool sample_rate_shading() const { return sample_rate_shading_; }  // fragment shaders may run per sample
 
     uint32_t memory_type(uint32_t type_bits, VkMemoryPropertyFlags wanted) const;
     VkFormatFeatureFlags2 format_features(VkFormat format) const;  // optimal tiling
@@ -92,6 +93,7 @@ private:
     bool draw_indirect_count_ = false;
     bool pipeline_statistics_ = false;
     bool alpha_to_one_ = false;
+    bool sample_rate_shading_ = false;
     VkPhysicalDeviceMemoryProperties memory_{};
 };
 

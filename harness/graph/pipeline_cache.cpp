@@ -1,5 +1,6 @@
 #include "graph/pipeline_cache.hpp"
 
+#include "core/error.hpp"
 #include "gpu/pipeline.hpp"
 
 #include "scene/geometry.hpp"
@@ -87,13 +88,17 @@ PipelineCache::~PipelineCache() {
 }
 
 VkPipeline PipelineCache::raster(const RasterState& s, const AttachmentFormats& targets, VkPipelineLayout layout) {
-    std::string key = fmt::format("raster {} {} {} {} {} {} {} {} {} {} {} {} {} {}|", spirv_key(s.vertex_spirv),
+    std::string key = fmt::format("raster {} {} {} {} {} {} {} {} {} {} {} {} {} {} {}|", spirv_key(s.vertex_spirv),
                                   spirv_key(s.fragment_spirv), s.vertices.describe(), int(s.topology), s.cull,
                                   s.depth_test, s.depth_write, int(s.depth_compare), int(s.blend), s.alpha_to_coverage,
-                                  int(targets.depth), targets.samples, static_cast<const void*>(layout),
+                                  s.sample_shading, int(targets.depth), targets.samples, static_cast<const void*>(layout),
                                   targets.colors.size());
     for (VkFormat f : targets.colors) key += fmt::format("{},", int(f));
     if (auto it = pipelines_.find(key); it != pipelines_.end()) return it->second;
+    if (s.sample_shading && !gpu_.sample_rate_shading())
+        throw GpuError(fmt::format("device '{}' cannot run a fragment shader per sample (no sampleRateShading feature); "
+                                   "turn the technique's per-sample option off (grass.lod: middle_per_sample = false)",
+                                   gpu_.info().name));
 
     VkDevice device = gpu_.device();
     VkShaderModule vertex = create_shader_module(device, s.vertex_spirv);
@@ -129,6 +134,8 @@ VkPipeline PipelineCache::raster(const RasterState& s, const AttachmentFormats& 
     VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
     multisample.rasterizationSamples = VkSampleCountFlagBits(targets.samples);
     multisample.alphaToCoverageEnable = s.alpha_to_coverage ? VK_TRUE : VK_FALSE;
+    multisample.sampleShadingEnable = s.sample_shading && targets.samples > 1 ? VK_TRUE : VK_FALSE;
+    multisample.minSampleShading = 1.0f;
     // The covered samples store alpha 1: the resolved alpha is then the pixel's covered share
     // (raster_state.hpp). Without the feature it is alpha times that share.
     multisample.alphaToOneEnable = s.alpha_to_coverage && gpu_.alpha_to_one() ? VK_TRUE : VK_FALSE;

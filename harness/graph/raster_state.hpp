@@ -59,6 +59,10 @@ struct RasterState {
     // Needs a multisampled pass to mean more than an alpha test; the covered samples store alpha 1
     // where the device has alphaToOne (GpuContext::alpha_to_one), as lavapipe and NVIDIA do.
     bool alpha_to_coverage = false;
+    // The fragment shader runs once per covered sample (minSampleShading 1; a shader whose inputs
+    // carry the `sample` qualifier does so anyway, and needs this to say so): the device must offer
+    // sampleRateShading (GpuContext::sample_rate_shading), else the pipeline is refused.
+    bool sample_shading = false;
 };
 
 }  // namespace canopy

@@ -31,7 +31,9 @@
 #include "shaders/grass/grass_lod_slices_frag.h"
 #include "shaders/grass/grass_lod_slices_vert.h"
 #include "shaders/grass/grass_lod_volume_frag.h"
+#include "shaders/grass/grass_lod_volume_per_sample_frag.h"
 #include "shaders/grass/grass_lod_volume_macro_frag.h"
+#include "shaders/grass/grass_lod_volume_macro_per_sample_frag.h"
 #include "shaders/grass/grass_lod_volume_macro_vert.h"
 #include "shaders/grass/grass_lod_volume_vert.h"
 
@@ -89,6 +91,10 @@ public:
             return ParamConflict{{"culling", "middle"},
                                  "the quadtree draws the middle band as macro-cells, which the BTF slices do not have",
                                  "culling = \"gpu\" with middle = \"slices\", or middle = \"volume\" with the quadtree"};
+        if (params.boolean("middle_per_sample") && (params.integer("samples") != 4 || params.choice("middle") != "volume"))
+            return ParamConflict{{"middle_per_sample", "samples", "middle"},
+                                 "the middle band is ray-cast per sample only for the volume under 4x MSAA",
+                                 "middle_per_sample = true with samples = 4 and middle = \"volume\", or middle_per_sample = false"};
         const double d[4] = {params.real("geometry_full"), params.real("geometry_none"), params.real("image_start"),
                              params.real("image_full")};
         if (!(d[0] <= d[1] && d[1] <= d[2] && d[2] <= d[3]))
@@ -142,9 +148,10 @@ public:
         FrameGraph g;
         g.needs.populations = {grass::kGrassPopulationKind};
         g.shader_params.set_block(block);
-        g.report["bands"] = fmt::format("blades to {}-{}, {} ({} slices) to {}-{}, image beyond", block.geometry_full,
+        const bool per_sample = params.boolean("middle_per_sample");
+        g.report["bands"] = fmt::format("blades to {}-{}, {} ({} slices{}) to {}-{}, image beyond", block.geometry_full,
                                         block.geometry_none, btf ? "BTF slices" : "volume", volume.slices,
-                                        block.image_start, block.image_full);
+                                        per_sample ? ", ray-cast per sample" : "", block.image_start, block.image_full);
         g.report["coverage"] = to_coverage ? "alpha-to-coverage" : "alpha-test";
         g.report["samples"] = std::to_string(samples);
         const bool culled = gpu_culled;
@@ -222,11 +229,15 @@ public:
         middle.vertex_spirv = btf        ? std::span<const uint32_t>(grass_lod_slices_vert)
                               : quadtree ? std::span<const uint32_t>(grass_lod_volume_macro_vert)
                                          : std::span<const uint32_t>(grass_lod_volume_vert);
-        middle.fragment_spirv = btf        ? std::span<const uint32_t>(grass_lod_slices_frag)
-                                : quadtree ? std::span<const uint32_t>(grass_lod_volume_macro_frag)
-                                           : std::span<const uint32_t>(grass_lod_volume_frag);
+        middle.fragment_spirv = btf ? std::span<const uint32_t>(grass_lod_slices_frag)
+                                : quadtree ? (per_sample ? std::span<const uint32_t>(grass_lod_volume_macro_per_sample_frag)
+                                                         : std::span<const uint32_t>(grass_lod_volume_macro_frag))
+                                           : (per_sample ? std::span<const uint32_t>(grass_lod_volume_per_sample_frag)
+                                                         : std::span<const uint32_t>(grass_lod_volume_frag));
+        middle.sample_shading = per_sample;
         g.passes.push_back(btf ? grass::slices_frame_pass(slices, middle, false, band_attachments(samples, false, false))
                                : grass::volume_frame_pass(volume, middle, false, band_attachments(samples, false, false)));
+        if (per_sample) g.passes.back().settings += "; ray-cast once per covered sample";
         RasterState quads;
         quads.vertex_spirv = quadtree ? std::span<const uint32_t>(grass_lod_image_macro_vert)
                                       : std::span<const uint32_t>(grass_lod_image_vert);

@@ -29,6 +29,8 @@
            "how the near band's blade outline cuts (grass.geometry's coverage)")                          \
     PLAN(choice, middle, ("volume", {"volume", "slices"}),                                                    \
          "the middle band: Lemme's ray-cast volume (grass.volume) or Boulanger's BTF slices (grass.slices)")     \
+    PLAN(boolean, middle_per_sample, (false),                                                                  \
+         "the middle band's volume ray-cast once per covered sample instead of once per pixel (the `sample` qualifier on its exit point): anti-aliases the slices' texels as 4x MSAA does the blades' edges, at up to 4 times the band's fragment cost; canopy's addition (Lemme casts once per pixel); needs samples = 4 and middle = volume") \
     SHADER(integer, slices, (8, 1, 64), "the middle band's vertical slices per direction (grass.volume's and grass.slices' slices)") \
     PLAN(integer, resolution, (256, 16, 4096), "texels of a middle-band slice across the patch (grass.volume's and grass.slices' resolution)") \
     PLAN(integer, height_resolution, (64, 4, 4096), "texels of a middle-band slice up the patch's height (grass.volume's and grass.slices')") \

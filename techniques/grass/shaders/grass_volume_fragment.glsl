@@ -17,7 +17,13 @@ layout(set = 0, binding = 1) uniform sampler2DArray slice_albedo;  // NEAREST: t
 layout(set = 0, binding = 2) uniform sampler2DArray slice_normal;  // NEAREST
 layout(set = 0, binding = 3, std140) uniform BoxBlock { VolumeBox box; };
 
+// GRASS_VOLUME_PER_SAMPLE: the exit point interpolated at each covered sample, so under MSAA the
+// walk runs once per sample (grass.lod's middle_per_sample) and the slices' texels are anti-aliased.
+#ifdef GRASS_VOLUME_PER_SAMPLE
+layout(location = 0) sample in vec3 exit_q;
+#else
 layout(location = 0) in vec3 exit_q;
+#endif
 layout(location = 1) flat in vec3 eye_q;
 layout(location = 2) flat in vec4 densities;
 layout(location = 3) flat in mat4 model;

@@ -18,7 +18,13 @@ layout(set = 0, binding = 2) uniform sampler2DArray slice_normal;  // NEAREST
 layout(set = 0, binding = 3, std140) uniform FieldBlock { GrassMacroField field; };
 layout(set = 0, binding = 4, std430) readonly buffer CellBlock { GrassCell field_cells[]; };
 
+// GRASS_VOLUME_PER_SAMPLE: the exit point interpolated at each covered sample, so under MSAA the
+// walk runs once per sample (grass.lod's middle_per_sample) and the slices' texels are anti-aliased.
+#ifdef GRASS_VOLUME_PER_SAMPLE
+layout(location = 0) sample in vec3 exit_q;
+#else
 layout(location = 0) in vec3 exit_q;
+#endif
 layout(location = 1) flat in vec3 eye_q;
 layout(location = 2) flat in ivec4 macro_cells;
 layout(location = 0) out vec4 out_color;
