@@ -10,6 +10,8 @@
 
 #include <doctest/doctest.h>
 
+#include <cmath>
+
 using namespace canopy;
 
 TEST_CASE("a scene variant's camera replaces the keys it gives and keeps the others") {
@@ -46,6 +48,36 @@ TEST_CASE("a scene variant's camera mistakes name their line and the fix") {
              {"{ near = 5, far = 1 }", "greater than 'near'"}}) {
         CAPTURE(camera);
         const auto error = error_of(camera);
+        REQUIRE(error.has_value());
+        CAPTURE(error->formatted());
+        CHECK(error->line() == 4);
+        CHECK(test::contains(error->formatted(), words));
+    }
+}
+
+TEST_CASE("a scene variant's light_direction moves the first light, a directional sun, and a wrong one names its line") {
+    test::TempFolder folder;
+    folder.write("scene.toml", "[[light]]\ntype = \"directional\"\ndirection = [0, -1, 0]\n");
+    folder.write("spot.toml", "[[light]]\ntype = \"spot\"\nposition = [0, 4, 0]\ndirection = [0, -1, 0]\n");
+    const std::filesystem::path file = folder.write(
+        "experiment.toml",
+        "[experiment]\nscenes = [\"scene.toml\", { file = \"scene.toml\", name = \"low\", light_direction = [-3, -0.3, 0] }]\n"
+        "[[technique]]\nname = \"shadow.hard\"\n");
+    const Experiment e = load_experiment(file, TechniqueRegistry::instance());
+    REQUIRE(e.scenes.size() == 2);
+    CHECK(e.scenes[0].lights.at(0).direction == glm::vec3(0, -1, 0));
+    const glm::vec3 low = e.scenes[1].lights.at(0).direction;
+    CHECK(glm::length(low) == doctest::Approx(1.0f));
+    CHECK(low.x == doctest::Approx(-3.0 / std::sqrt(9.09)));
+    CHECK(low.y == doctest::Approx(-0.3 / std::sqrt(9.09)));
+    for (const auto& [variant, words] : std::vector<std::pair<std::string, std::string>>{
+             {"{ file = \"scene.toml\", name = \"v\", light_direction = [0, 0, 0] }", "zero vector"},
+             {"{ file = \"scene.toml\", name = \"v\", light_direction = 1 }", "light_direction"},
+             {"{ file = \"spot.toml\", name = \"v\", light_direction = [0, -1, 0] }", "not directional"}}) {
+        CAPTURE(variant);
+        const std::filesystem::path bad = folder.write(
+            "bad.toml", "[experiment]\nscenes = [\n  \"scene.toml\",\n  " + variant + ",\n]\n[[technique]]\nname = \"shadow.hard\"\n");
+        const auto error = test::config_error_of([&] { load_experiment(bad, TechniqueRegistry::instance()); });
         REQUIRE(error.has_value());
         CAPTURE(error->formatted());
         CHECK(error->line() == 4);

@@ -38,7 +38,8 @@ const char* const kExperimentExample =
 // A scene variant's overrides: its name, the width of its shadow light (a rect's side, a
 // sphere's diameter: the width penumbra estimates use), e.g. to sweep the light size (Fig 6.9),
 // whether its objects cast shadows (false: a shadow-free variant, where every technique's
-// visibility should be 1 wherever the light reaches), whether its first light does, and its
+// visibility should be 1 wherever the light reaches), whether its first light does, the first
+// light's direction (directional lights), and its
 // camera (keys of [camera] given replace the scene's).
 void apply_scene_variant(TomlReader& variant, Scene& scene) {
     scene.name = variant.get_string("name", scene.name);
@@ -51,6 +52,16 @@ void apply_scene_variant(TomlReader& variant, Scene& scene) {
     // Before light_size, which resizes the shadow-casting light this may make.
     if (variant.has("light_casts_shadows"))
         scene.lights.front().casts_shadows = variant.get_bool("light_casts_shadows", true);
+    // Its first light's direction: a directional sun at another elevation (e.g. a sweep of it).
+    if (variant.has("light_direction")) {
+        Light& light = scene.lights.front();
+        if (light.type != LightType::directional)
+            throw variant.error("light_direction", fmt::format("scene '{}''s first light is not directional", scene.name),
+                                "light_direction moves a directional sun: make it the scene's first [[light]]");
+        light.direction = read_direction(variant, "light_direction", light.direction,
+                                         "the variant's 'light_direction' is the zero vector",
+                                         "give the direction the light travels, e.g. light_direction = [-0.4, -0.8, -0.45]");
+    }
     if (variant.has("light_size")) {
         const double size = variant.get_float("light_size", 0.0);
         // A rect's side or a sphere's diameter, within the limits of a light's size (scene_limits.hpp).

@@ -14,6 +14,14 @@
 
 namespace canopy {
 
+glm::vec3 read_direction(TomlReader& reader, std::string_view key, const glm::vec3& fallback,
+                         const std::string& zero_message, const std::string& zero_hint) {
+    const glm::dvec3 direction(reader.get_vec3(key, fallback, Broadcast::forbidden));
+    const double length = glm::length(direction);
+    if (!(length >= 1e-6)) throw reader.error(key, zero_message, zero_hint);
+    return glm::vec3(direction / length);
+}
+
 namespace {
 
 constexpr std::array kLightTypeNames{"directional", "spot", "rect", "sphere"};
@@ -110,16 +118,6 @@ void require_in_scene(TomlReader& reader, std::string_view key, const glm::vec3&
                            "canopy computes in single precision: keep every coordinate within 1e6 scene units "
                            "(configs/README.md, \"Limits\"); move the scene closer to the origin or change its units");
     }
-}
-
-// A direction read as given and normalised in double precision (a float length of huge
-// components would overflow); an error when it is (nearly) the zero vector.
-glm::vec3 read_direction(TomlReader& reader, std::string_view key, const glm::vec3& fallback,
-                         const std::string& zero_message, const std::string& zero_hint) {
-    const glm::dvec3 direction(reader.get_vec3(key, fallback, Broadcast::forbidden));
-    const double length = glm::length(direction);
-    if (!(length >= 1e-6)) throw reader.error(key, zero_message, zero_hint);
-    return glm::vec3(direction / length);
 }
 
 bool nearly_parallel(const glm::vec3& a, const glm::vec3& b) {
