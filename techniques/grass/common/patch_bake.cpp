@@ -3,6 +3,7 @@
 #include "grass_population.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace canopy::grass {
 
@@ -28,7 +29,10 @@ Bounds cell_frame(const Bounds& b) {
 }
 
 shader::PatchBake ortho_bake(const Bounds& bounds, BakeView view, bool tiled) {
-    const Bounds f = baked_frame(bounds, tiled);
+    return ortho_bake_over(baked_frame(bounds, tiled), view, tiled);
+}
+
+shader::PatchBake ortho_bake_over(const Bounds& f, BakeView view, bool tiled) {
     const glm::vec2 x(f.min.x, f.max.x), y(f.min.y, f.max.y), z(f.min.z, f.max.z);
     glm::mat4 m(0.0f);  // column-major: m[column][row]
     m[3][3] = 1.0f;
@@ -58,6 +62,35 @@ shader::PatchBake ortho_bake(const Bounds& bounds, BakeView view, bool tiled) {
     bake.section = glm::vec4(-1e30f, 1e30f, 0.0f, 0.0f);
     bake.tiles = glm::vec4(tiled ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f);
     return bake;
+}
+
+Bounds light_frame(const Bounds& bounds, bool tiled) {
+    if (!tiled) return bake_frame(bounds);
+    const Bounds cell = cell_frame(bounds);
+    Bounds f;
+    f.min = glm::vec3(-1.0f, 0.0f, -1.0f);
+    f.max = glm::vec3(2.0f, cell.max.y, 2.0f);
+    return f;
+}
+
+shader::PatchBake light_bake(const Bounds& bounds, uint32_t row, bool tiled) {
+    static constexpr BakeView kViews[] = {BakeView::down, BakeView::along_x, BakeView::along_z, BakeView::along_x,
+                                          BakeView::along_z};
+    shader::PatchBake bake = ortho_bake_over(light_frame(bounds, tiled), kViews[row % 5], tiled);
+    if (row == 3 || row == 4) {  // X-, Z-: looking along +axis, the same image, depth reversed
+        const int axis = row == 3 ? 0 : 2;
+        bake.view_proj[axis][2] = -bake.view_proj[axis][2];
+        bake.view_proj[3][2] = 1.0f - bake.view_proj[3][2];
+        bake.toward_viewer = -bake.toward_viewer;
+    }
+    return bake;
+}
+
+glm::mat4 light_lookup(const Bounds& bounds, uint32_t row, bool tiled, float bias) {
+    glm::mat4 m = light_bake(bounds, row, tiled).view_proj;
+    const int axis = row == 0 ? 1 : (row == 1 || row == 3) ? 0 : 2;
+    m[3][2] -= bias * std::abs(m[axis][2]);  // depth per unit along the light, times the bias
+    return m;
 }
 
 float bake_section_start(const Bounds& frame, int axis, uint32_t k, uint32_t n, bool tiled) {

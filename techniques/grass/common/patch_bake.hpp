@@ -32,6 +32,21 @@ Bounds cell_frame(const Bounds& bounds);
 // patch's 8 neighbours drawn too.
 shader::PatchBake ortho_bake(const Bounds& bounds, BakeView view, bool tiled = false);
 
+// The same camera framing any `frame` (patch space), e.g. a light's (light_frame).
+shader::PatchBake ortho_bake_over(const Bounds& frame, BakeView view, bool tiled);
+
+// What a shadowed bake's light views frame: tiled, the cell and its 8 neighbours (x and z in
+// [-1, 2], y from 0 to the prototype's top), else bake_frame(bounds).
+Bounds light_frame(const Bounds& bounds, bool tiled);
+
+// The camera of baked light `row` (btf_light_direction's order: Y+, X+, Z+, X-, Z-): looking along
+// -L over light_frame, depth 0 on the light's side. Tiled, it draws the 9 copies.
+shader::PatchBake light_bake(const Bounds& bounds, uint32_t row, bool tiled);
+
+// light_bake's view_proj with its depth moved `bias` (patch units) towards the light: what a bake
+// fragment compares its own depth with (bake_shadows.h's lookup).
+glm::mat4 light_lookup(const Bounds& bounds, uint32_t row, bool tiled, float bias);
+
 // Where section k of n along `axis` (0 x, 2 z) of the baked frame begins; k = n is where the last
 // ends. Tiled, the sections split the cell exactly: what lies beyond is a neighbouring copy's,
 // which that cell's own slices show. Alone, the outer sections reach past the frame (+-1e30), so a

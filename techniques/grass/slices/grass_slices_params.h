@@ -10,7 +10,8 @@
     PLAN(integer, height_resolution, (64, 4, 4096), "texels of a vertical slice up the patch's height") \
     SHADER(real, slice_height, (0.1, 0.01, 1.0),                                                             \
          "the horizontal slice's height above the ground, a fraction of the tallest blade (Boulanger: 'close to the bottom of the patch')") \
-    PLAN(boolean, neighbours, (true), "bake the patch with its 8 neighbours, cut to the cell (Boulanger §4.2.3: else blades are cut between patches), or the patch alone over its bounds")
+    PLAN(boolean, neighbours, (true), "bake the patch with its 8 neighbours, cut to the cell (Boulanger §4.2.3: else blades are cut between patches), or the patch alone over its bounds") \
+    PLAN(integer, shadow_resolution, (0, 0, 8192), "0: no shadows in the bake (the family's local shading); else bake the blades' shadows into the rows (Boulanger L1034), from one depth view per baked light direction this many texels a side")
 
 CANOPY_BEGIN_NAMESPACE
 CANOPY_PARAM_BLOCK(GrassSlicesParams, GRASS_SLICES_PARAMS)

@@ -1,43 +1,4 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// grass.slices, load phase: one side of one slice (Boulanger §4.2.3, Figure 4.5): the blades of
-// the patch (and its 8 neighbours) between the slice's two clipping planes, seen by an
-// orthographic camera along the slice's axis, storing Figure 4.6's data for that view: the
-// blade's albedo (the ambient row) and density threshold (Figure 4.9's texture), and its colour
-// under each of the five baked light directions (btf_interpolation.h), shaded on the side the
-// bake sees. The population's transmission gamma (eq 4.1) is baked into the rows. No
-// blade-on-blade shadows: the family's shading is local (shaders/grass_shading.glsl).
-#include "frame_uniforms.glsl"
-#include "draw_constants.glsl"
-#include "blade_alpha.h"
-#include "btf_interpolation.h"
-#include "patch_bake.h"
-
-layout(set = 0, binding = 1, std140) uniform BakeBlock { PatchBake bake; };
-
-layout(location = 0) in vec3 patch_position;
-layout(location = 1) in vec3 patch_normal;
-layout(location = 2) in vec2 strip_uv;
-layout(location = 3) in float colour;
-layout(location = 4) flat in float taper;
-layout(location = 5) flat in float threshold;
-layout(location = 0) out vec4 out_albedo;  // rgb albedo, a threshold
-layout(location = 1) out vec4 out_row0;    // Y+
-layout(location = 2) out vec4 out_row1;    // X+
-layout(location = 3) out vec4 out_row2;    // Z+
-layout(location = 4) out vec4 out_row3;    // X-
-layout(location = 5) out vec4 out_row4;    // Z-
-
-void main() {
-    if (!patch_bake_keeps(bake, patch_position) || !blade_opaque(strip_uv, taper)) discard;
-    vec3 n = normalize(patch_normal);
-    if (dot(n, bake.toward_viewer.xyz) < 0.0) n = -n;
-    vec3 albedo = draw.albedo.rgb * colour;
-    float gamma = draw.albedo.w;
-    out_albedo = vec4(albedo, threshold);
-    out_row0 = vec4(btf_baked_row(albedo, n, 0, gamma), 1.0);
-    out_row1 = vec4(btf_baked_row(albedo, n, 1, gamma), 1.0);
-    out_row2 = vec4(btf_baked_row(albedo, n, 2, gamma), 1.0);
-    out_row3 = vec4(btf_baked_row(albedo, n, 3, gamma), 1.0);
-    out_row4 = vec4(btf_baked_row(albedo, n, 4, gamma), 1.0);
-}
+// grass.slices, load phase: a slice side's bake under local shading (slices_bake_fragment.glsl).
+#include "slices_bake_fragment.glsl"

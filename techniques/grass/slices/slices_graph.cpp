@@ -9,10 +9,15 @@
 #include "../common/patch_bake.hpp"
 #include "../shaders/btf_interpolation.h"
 
+#include "../shaders/bake_shadows.h"
+
 #include "shaders/grass/slices_bake_frag.h"
+#include "shaders/grass/slices_bake_shadowed_frag.h"
+#include "shaders/grass/slices_light_depth_frag.h"
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <vector>
 
 namespace canopy::grass {
@@ -25,9 +30,12 @@ struct Names {
     std::string top_lit;     // RGBA16F x 5 layers
     std::string bake_depth, top_depth;
     std::string quads;       // (2n + 1) x 6 QuadVertex
+    std::string light_depth;  // D32 x 5 layers: a shadowed bake's light views
+    std::string shadows;      // BakeShadows
     explicit Names(const std::string& p)
         : albedo(p + "slices_albedo"), lit(p + "slices_lit"), top_albedo(p + "top_albedo"), top_lit(p + "top_lit"),
-          bake_depth(p + "bake_depth"), top_depth(p + "top_bake_depth"), quads(p + "slice_quads") {}
+          bake_depth(p + "bake_depth"), top_depth(p + "top_bake_depth"), quads(p + "slice_quads"),
+          light_depth(p + "bake_light_depth"), shadows(p + "bake_shadows") {}
 };
 
 // One bake pass: a vertical slice's side, or (axis 2) the horizontal slice seen from above.
@@ -39,6 +47,12 @@ struct SliceBake {
     std::string camera;
     std::string name;
 };
+
+const char* const kLightNames[] = {"y+", "x+", "z+", "x-", "z-"};  // btf_light_direction's order
+
+std::string light_camera_name(const std::string& prefix, uint32_t row) {
+    return prefix + "bake_light_camera_" + kLightNames[row];
+}
 
 std::vector<SliceBake> slice_bakes(uint32_t n, const std::string& prefix) {
     std::vector<SliceBake> bakes;
@@ -125,12 +139,32 @@ void declare_slices_bake(FrameGraph& g, const SlicesSettings& s) {
     const std::vector<SliceBake> bakes = slice_bakes(n, s.prefix);
     for (const SliceBake& b : bakes)
         g.buffers.push_back({.name = b.camera, .bytes = sizeof(shader::PatchBake), .usage = kUniformBuffer});
+    const bool shadowed = s.bake_shadows;
+    const uint32_t shadow_resolution = s.shadow_resolution;
+    const float shadow_bias = kBakeShadowBias;
+    if (shadowed) {
+        g.images.push_back({.name = names.light_depth, .format = VK_FORMAT_D32_SFLOAT,
+                            .extent = ImageExtent::square(shadow_resolution), .layers = lights});
+        for (uint32_t row = 0; row < lights; ++row)
+            g.buffers.push_back({.name = light_camera_name(s.prefix, row), .bytes = sizeof(shader::PatchBake),
+                                 .usage = kUniformBuffer});
+        g.buffers.push_back({.name = names.shadows, .bytes = sizeof(shader::BakeShadows), .usage = kUniformBuffer});
+    }
 
     PassDecl setup{.name = s.prefix + "bake_setup", .kind = PassKind::copy, .phase = Phase::load};
     setup.uses = {use(names.quads, Use::transfer_write)};
     for (const SliceBake& b : bakes) setup.uses.push_back(use(b.camera, Use::transfer_write));
+    if (shadowed) {
+        for (uint32_t row = 0; row < lights; ++row)
+            setup.uses.push_back(use(light_camera_name(s.prefix, row), Use::transfer_write));
+        setup.uses.push_back(use(names.shadows, Use::transfer_write));
+    }
     setup.settings = fmt::format("slices={} slice_height={} neighbours={}", n, slice_height, tiled);
-    setup.record = [bakes, n, slice_height, tiled, names](PassContext& pc) {
+    if (shadowed)
+        setup.settings += fmt::format(" shadows: {} texels, bias {} texels, normal offset {} texels", shadow_resolution,
+                                      shadow_bias, kBakeShadowNormalOffset);
+    setup.record = [bakes, n, slice_height, tiled, names, shadowed, shadow_resolution, shadow_bias,
+                    prefix = s.prefix](PassContext& pc) {
         const Bounds bounds = prototype_bounds(first_grass(pc.populations()));
         const std::vector<QuadVertex> quads = slice_quads(bounds, n, slice_height, tiled);
         pc.upload(names.quads, quads.data(), quads.size() * sizeof(QuadVertex));
@@ -138,12 +172,40 @@ void declare_slices_bake(FrameGraph& g, const SlicesSettings& s) {
             const shader::PatchBake camera = slice_camera(bounds, b, n, tiled);
             pc.upload(b.camera, &camera, sizeof(camera));
         }
+        if (!shadowed) return;
+        // The bias in patch units: `shadow_bias` texels of the light view's widest side.
+        const Bounds frame = light_frame(bounds, tiled);
+        const glm::vec3 extent = frame.max - frame.min;
+        const float texel = std::max({extent.x, extent.y, extent.z}) / float(shadow_resolution);
+        shader::BakeShadows block{};
+        for (uint32_t row = 0; row < uint32_t(shader::BTF_LIGHTS); ++row) {
+            const shader::PatchBake camera = light_bake(bounds, row, tiled);
+            pc.upload(light_camera_name(prefix, row), &camera, sizeof(camera));
+            block.lookup[row] = light_lookup(bounds, row, tiled, shadow_bias * texel);
+        }
+        block.offsets = glm::vec4(kBakeShadowNormalOffset * texel, 0.0f, 0.0f, 0.0f);
+        pc.upload(names.shadows, &block, sizeof(block));
     };
     g.passes.push_back(std::move(setup));
 
+    // A shadowed bake's light views: the blades' depth seen from each baked light direction.
+    if (shadowed) {
+        const RasterState light_view = bake_state(slices_light_depth_frag);
+        for (uint32_t row = 0; row < lights; ++row) {
+            PassDecl p{.name = s.prefix + "bake_light_" + kLightNames[row], .kind = PassKind::raster, .phase = Phase::load};
+            p.push_constant_bytes = sizeof(DrawConstants);
+            p.uses = {use(graph_names::kFrameUniforms, Use::uniform, 0), use(light_camera_name(s.prefix, row), Use::uniform, 1),
+                      cleared(names.light_depth, Use::depth_attachment, kFarDepth, true, row)};
+            p.settings = fmt::format("{} {}x{}{}", kLightNames[row], shadow_resolution, shadow_resolution,
+                                     tiled ? " tiled" : "");
+            p.record = [light_view, tiled](PassContext& pc) { record_prototype_bake(pc, light_view, tiled); };
+            g.passes.push_back(std::move(p));
+        }
+    }
+
     // Each bake writes the slice side's albedo and threshold and its five lit rows at once: one
     // drawing of the blades between the slice's clipping planes, shaded under every baked light.
-    const RasterState bake = bake_state(slices_bake_frag);
+    const RasterState bake = shadowed ? bake_state(slices_bake_shadowed_frag) : bake_state(slices_bake_frag);
     for (const SliceBake& b : bakes) {
         const bool horizontal = b.axis == 2;
         PassDecl p{.name = b.name, .kind = PassKind::raster, .phase = Phase::load};
@@ -151,12 +213,19 @@ void declare_slices_bake(FrameGraph& g, const SlicesSettings& s) {
         p.uses = {use(graph_names::kFrameUniforms, Use::uniform, 0), use(b.camera, Use::uniform, 1),
                   cleared(horizontal ? names.top_albedo : names.albedo, Use::color_attachment,
                           {0.0f, 0.0f, 0.0f, shader::PATCH_BAKE_EMPTY}, true, b.layer)};
+        if (shadowed) {
+            ResourceUse depth = use(names.light_depth, Use::sampled, 2);
+            depth.sampler = SamplerKind::compare_linear;
+            p.uses.push_back(depth);
+            p.uses.push_back(use(names.shadows, Use::uniform, 3));
+        }
         for (uint32_t row = 0; row < lights; ++row)
             p.uses.push_back(cleared(horizontal ? names.top_lit : names.lit, Use::color_attachment, {0.0f, 0.0f, 0.0f, 0.0f},
                                      true, horizontal ? row : b.layer * lights + row));
         p.uses.push_back(cleared(horizontal ? names.top_depth : names.bake_depth, Use::depth_attachment, kFarDepth, false));
         p.settings = horizontal ? fmt::format("down{}", tiled ? ", tiled" : "")
                                 : fmt::format("layer={}{}", b.layer, tiled ? " tiled" : "");
+        if (shadowed) p.settings += ", shadowed";
         p.record = [bake, tiled](PassContext& pc) { record_prototype_bake(pc, bake, tiled); };
         g.passes.push_back(std::move(p));
     }

@@ -14,12 +14,22 @@
 
 namespace canopy::grass {
 
+// A shadowed bake's depth bias, in texels of its light views, so that the blade a texel shows does
+// not shadow itself.
+inline constexpr float kBakeShadowBias = 1.0f;
+// And its normal offset (bake_shadows.h), in the same texels.
+inline constexpr float kBakeShadowNormalOffset = 1.5f;
+
 struct SlicesSettings {
     uint32_t slices = 8;              // vertical slices per direction
     uint32_t resolution = 256;        // texels across the patch (and each way of the horizontal slice)
     uint32_t height_resolution = 64;  // texels up a vertical slice
     float slice_height = 0.1f;        // the horizontal slice's height, a fraction of the tallest blade
     bool neighbours = true;           // bake the patch with its 8 neighbours, cut to the cell
+    // Bake the blades' shadows into the rows (bake_shadows.h): one depth layer per baked light,
+    // `shadow_resolution` texels a side, looked up with a bias of kBakeShadowBias texels.
+    bool bake_shadows = false;
+    uint32_t shadow_resolution = 1024;
     std::string prefix;               // before every resource and pass name ("" for grass.slices)
     // The frame pass draws the copies the cull of this prefix kept (grass_cull.hpp), not all.
     std::optional<std::string> culled_by;
@@ -32,6 +42,7 @@ inline uint32_t slices_cell_vertices(const SlicesSettings& s) { return 6 * (2 * 
 // per vertical slice and side (front: seen from +axis; back: from -axis) and one for the
 // horizontal slice, each writing the slice's albedo and density threshold (the ambient row of
 // Figure 4.6, and Figure 4.9's threshold texture) and its five lit rows (btf_interpolation.h).
+// With bake_shadows, first one depth pass per baked light direction (bake_light_<direction>).
 void declare_slices_bake(FrameGraph& g, const SlicesSettings& s);
 
 // The frame pass: with `ground`, the scene's objects first (grass::ground_state); then the 2n + 1

@@ -54,7 +54,7 @@ std::vector<TexelTruth> traced_bake(const Scene& scene, View view, uint32_t widt
             if (view != View::down && along < section.lo) continue;
             const uint32_t blade = (hit->primitive % family.prototype.triangle_count()) / per_blade;
             const uint32_t first_vertex = family.prototype.indices[size_t(blade) * per_blade * 3];
-            truth[size_t(j) * width + i] = {family.vertex_data[first_vertex].data[0].z, int64_t(blade)};
+            truth[size_t(j) * width + i] = {family.vertex_data[first_vertex].data[0].z, int64_t(blade), hit->surface.position};
         }
     return truth;
 }

@@ -8,6 +8,8 @@
 #include "core/image.hpp"
 #include "scene/scene.hpp"
 
+#include <glm/glm.hpp>
+
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -26,6 +28,7 @@ enum class View { along_z, along_x, down };
 struct TexelTruth {
     float threshold = 2.0f;  // the hit blade's, or the bakes' "empty" (2)
     int64_t blade = -1;      // -1: no blade
+    glm::vec3 position{0.0f};  // where the ray meets it
 };
 
 // A section of the patch along the axis a bake looks along (x for along_x, z for along_z): what a
