@@ -13,6 +13,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <optional>
 
 using namespace canopy;
@@ -96,6 +97,31 @@ TEST_CASE("ParamSet::resolve fills defaults and applies given values") {
 
     CHECK_THROWS_AS(given.integer("bias"), std::logic_error);  // wrong type
     CHECK_THROWS_AS(given.real("nope"), std::logic_error);     // wrong name
+}
+
+TEST_CASE("a path parameter is taken from the folder of the file that gives it, and must name a file") {
+    test::TempFolder folder;
+    folder.write("maps/a.png", "not really a png");
+    const std::vector<ParamSpec> specs{ParamSpec::path("map", "a map")};
+    CHECK(specs[0].type_and_range() == "file path");
+    const SourceLocation where{folder.path() / "scenes" / "scene.toml", 3};
+    CHECK(ParamSet::resolve(specs, {}, {}, where, "test").path("map").empty());  // default: none
+    const ParamSet given = ParamSet::resolve(specs, {{"map", std::string("../maps/a.png")}}, {}, where, "test");
+    CHECK(std::filesystem::path(given.path("map")) == std::filesystem::absolute(folder.path() / "maps" / "a.png").lexically_normal());
+    // Resolved again (an experiment's population override), an absolute path stays.
+    CHECK(ParamSet::resolve(specs, {{"map", given.path("map")}}, {}, {}, "test").path("map") == given.path("map"));
+    const auto missing = test::config_error_of(
+        [&] { ParamSet::resolve(specs, {{"map", std::string("../maps/b.png")}}, {{"map", 7}}, where, "test"); });
+    REQUIRE(missing);
+    CHECK(missing->line() == 7);
+    CHECK(contains(missing->what(), "names '../maps/b.png', which is not a file"));
+    CHECK(contains(missing->hint(), "relative path is taken from the folder of scene.toml"));
+    const auto folder_given = test::config_error_of(
+        [&] { ParamSet::resolve(specs, {{"map", std::string("../maps")}}, {}, where, "test"); });
+    CHECK(folder_given);
+    const auto number = test::config_error_of([&] { ParamSet::resolve(specs, {{"map", 3LL}}, {}, where, "test"); });
+    REQUIRE(number);
+    CHECK(contains(number->what(), "must be a file path in quotes"));
 }
 
 TEST_CASE("ParamSet::resolve explains every kind of bad value") {

@@ -21,6 +21,7 @@ std::vector<ParamValue> alternatives(const ParamSpec& spec) {
     std::vector<ParamValue> values;
     switch (spec.type) {
     case ParamType::boolean: values.push_back(!std::get<bool>(spec.default_value)); break;
+    case ParamType::path: break;  // no technique declares one: a file is a scene's (a population's map)
     case ParamType::choice:
         for (const std::string& choice : spec.choices) values.push_back(choice);
         break;

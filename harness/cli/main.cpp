@@ -65,7 +65,7 @@ int list_techniques() {
         for (const ParamSpec& p : specs) {
             name_width = std::max(name_width, p.name.size());
             type_width = std::max(type_width, p.type_and_range().size());
-            default_width = std::max(default_width, to_string(p.default_value).size());
+            default_width = std::max(default_width, default_text(p).size());
         }
     };
     for (const Technique* t : TechniqueRegistry::instance().all()) widen(t->params());
@@ -80,7 +80,7 @@ int list_techniques() {
         fmt::print("  requires: {}\n  parameters:\n", requires_text.empty() ? "nothing beyond the scene" : requires_text);
         for (const ParamSpec& p : specs)
             fmt::print("    {:<{}}  {:<{}}  default {:<{}}  {}\n", p.name, name_width, p.type_and_range(), type_width,
-                       to_string(p.default_value), default_width, p.doc);
+                       default_text(p), default_width, p.doc);
         fmt::print("\n");
     }
     // The population kinds families define, with the parameters a scene's [[population]] gives
@@ -90,7 +90,7 @@ int list_techniques() {
                    kind->name(), kind->summary());
         for (const ParamSpec& p : kind->params())
             fmt::print("    {:<{}}  {:<{}}  default {:<{}}  {}\n", p.name, name_width, p.type_and_range(), type_width,
-                       to_string(p.default_value), default_width, p.doc);
+                       default_text(p), default_width, p.doc);
         fmt::print("\n");
     }
     return kExitOk;
@@ -548,7 +548,7 @@ int main(int argc, char** argv) {
         for (const ParamSpec& spec : b->params())
             c.command->add_option_function<std::string>(
                 "--" + spec.name, [&c, name = spec.name](const std::string& v) { c.given[name] = v; },
-                fmt::format("{} ({}, default {})", spec.doc, spec.type_and_range(), to_string(spec.default_value)));
+                fmt::format("{} ({}, default {})", spec.doc, spec.type_and_range(), default_text(spec)));
         c.command->add_option("--out", c.out, "also write <name>.md and <name>.json (numbers, parameters, environment) into this folder");
         c.command->add_option("--device", c.device, "Vulkan device: index or part of its name (default: lavapipe)");
     }

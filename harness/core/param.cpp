@@ -6,6 +6,7 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <stdexcept>
 
 namespace canopy {
@@ -51,6 +52,15 @@ ParamSpec ParamSpec::choice(std::string name, std::string def, std::vector<std::
     return spec;
 }
 
+ParamSpec ParamSpec::path(std::string name, std::string doc) {
+    ParamSpec spec;
+    spec.name = std::move(name);
+    spec.type = ParamType::path;
+    spec.default_value = std::string();
+    spec.doc = std::move(doc);
+    return spec;
+}
+
 namespace {
 
 // Shortest text that reads back as the same double ("0.05", "1", "1e-06").
@@ -77,6 +87,7 @@ std::string describe(const ParamValue& value) {
 std::string example_assignment(const ParamSpec& spec) {
     if (spec.type == ParamType::choice)
         return fmt::format("{} = \"{}\"", spec.name, to_string(spec.default_value));
+    if (spec.type == ParamType::path) return fmt::format("{} = \"maps/{}.png\"", spec.name, spec.name);
     return fmt::format("{} = {}", spec.name, to_string(spec.default_value));
 }
 
@@ -89,7 +100,8 @@ bool holds_declared_type(const ParamSpec& spec, const ParamValue& value) {
         case ParamType::integer: return std::holds_alternative<long long>(value);
         case ParamType::real: return std::holds_alternative<double>(value);
         case ParamType::boolean: return std::holds_alternative<bool>(value);
-        case ParamType::choice: return std::holds_alternative<std::string>(value);
+        case ParamType::choice:
+        case ParamType::path: return std::holds_alternative<std::string>(value);
     }
     return false;
 }
@@ -106,6 +118,7 @@ public:
             case ParamType::real: return check_real(given);
             case ParamType::boolean: return check_boolean(given);
             case ParamType::choice: return check_choice(given);
+            case ParamType::path: return check_path(given);
         }
         throw std::logic_error("unhandled ParamType");
     }
@@ -175,6 +188,26 @@ private:
                                        : fmt::format("did you mean '{}'? allowed values: {}", suggestion, allowed));
     }
 
+    // A relative path is taken from the folder of the file that gives it; the file must exist.
+    ParamValue check_path(const ParamValue& given) const {
+        const std::string* text = std::get_if<std::string>(&given);
+        if (!text)
+            throw error(fmt::format("parameter '{}' must be a file path in quotes, got {}", spec_.name, describe(given)),
+                        fmt::format("for example: {}", example_assignment(spec_)));
+        if (text->empty()) return given;
+        std::filesystem::path file(*text);
+        if (file.is_relative() && !where_.file.empty()) file = where_.file.parent_path() / file;
+        file = std::filesystem::absolute(file).lexically_normal();
+        std::error_code ec;
+        if (!std::filesystem::is_regular_file(file, ec))
+            throw error(fmt::format("parameter '{}' names '{}', which is not a file (looked for {})", spec_.name, *text,
+                                    file.string()),
+                        where_.file.empty() ? "give the file's path"
+                                            : fmt::format("a relative path is taken from the folder of {}",
+                                                          where_.file.filename().string()));
+        return file.string();
+    }
+
     const ParamSpec& spec_;
     const SourceLocation& where_;
     const std::string& technique_;
@@ -188,6 +221,7 @@ std::string ParamSpec::type_and_range() const {
         case ParamType::real: return fmt::format("float in {}", range_text(*this));
         case ParamType::boolean: return "bool";
         case ParamType::choice: return fmt::format("one of {}", join(choices, "|"));
+        case ParamType::path: return "file path";
     }
     return "?";
 }
@@ -200,6 +234,11 @@ std::string to_string(const ParamValue& value) {
         std::string operator()(const std::string& v) const { return v; }
     };
     return std::visit(Format{}, value);
+}
+
+std::string default_text(const ParamSpec& spec) {
+    if (spec.type == ParamType::path && to_string(spec.default_value).empty()) return "none";
+    return to_string(spec.default_value);
 }
 
 ParamSet ParamSet::resolve(const std::vector<ParamSpec>& specs, const std::map<std::string, ParamValue>& given,
@@ -268,6 +307,7 @@ bool ParamSet::boolean(const std::string& name) const { return get_typed<bool>(a
 const std::string& ParamSet::choice(const std::string& name) const {
     return get_typed<std::string>(at(name), name, "choice");
 }
+const std::string& ParamSet::path(const std::string& name) const { return get_typed<std::string>(at(name), name, "path"); }
 
 std::string ParamSet::summary() const {
     std::vector<std::string> parts;

@@ -11,7 +11,9 @@
 
 namespace canopy {
 
-enum class ParamType { integer, real, boolean, choice };
+// path: a file; a relative one given in a config is taken from the folder of the file that gives it,
+// and must exist ("" names none).
+enum class ParamType { integer, real, boolean, choice, path };
 
 using ParamValue = std::variant<long long, double, bool, std::string>;
 
@@ -27,12 +29,15 @@ struct ParamSpec {
     static ParamSpec real(std::string name, double def, double min, double max, std::string doc);
     static ParamSpec boolean(std::string name, bool def, std::string doc);
     static ParamSpec choice(std::string name, std::string def, std::vector<std::string> choices, std::string doc);
+    static ParamSpec path(std::string name, std::string doc);  // default "": none
 
-    // "int in [1, 31]", "float in [0, 0.05]", "bool", "one of grid|poisson"
+    // "int in [1, 31]", "float in [0, 0.05]", "bool", "one of grid|poisson", "file path"
     std::string type_and_range() const;
 };
 
 std::string to_string(const ParamValue& value);
+// A spec's default as `canopy list` shows it: to_string, or "none" for a path naming no file.
+std::string default_text(const ParamSpec& spec);
 
 // Concrete values for every declared parameter of one technique, defaults filled in.
 class ParamSet {
@@ -51,6 +56,7 @@ public:
     double real(const std::string& name) const;
     bool boolean(const std::string& name) const;
     const std::string& choice(const std::string& name) const;
+    const std::string& path(const std::string& name) const;  // as resolved: absolute, or "" for none
 
     // In declaration order, for reports.
     const std::vector<std::pair<std::string, ParamValue>>& values() const { return values_; }

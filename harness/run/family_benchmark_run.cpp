@@ -35,7 +35,8 @@ std::map<std::string, ParamValue> parse_benchmark_params(const std::vector<Param
                     values[name] = text == "true";
                     used = text.size();
                     break;
-                case ParamType::choice: values[name] = text; used = text.size(); break;
+                case ParamType::choice:
+                case ParamType::path: values[name] = text; used = text.size(); break;
             }
             if (used != text.size()) throw refuse();
         } catch (const std::logic_error&) {  // stoll / stod: nothing or out of range

@@ -86,6 +86,23 @@ DensityMap density_map(DensityPattern pattern, float low, float high, uint32_t t
     return map;
 }
 
+DensityMap density_map_from_image(const Image& image, float low, float high, const std::string& file) {
+    if (image.width <= 0 || image.height <= 0) throw std::invalid_argument(fmt::format("density map {} is empty", file));
+    if (!(low >= 0.0f && high <= 1.0f && low <= high)) throw std::invalid_argument("density_map: densities lie in [0, 1]");
+    DensityMap map{uint32_t(image.width), uint32_t(image.height), {}};
+    map.values.reserve(size_t(image.width) * size_t(image.height));
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            const float v = image.at(x, y)[0];
+            if (!(v >= 0.0f && v <= 1.0f))
+                throw std::invalid_argument(fmt::format("density map {}: texel ({}, {}) holds {}, outside [0, 1]: a density map "
+                                                        "holds shares of the blades (an 8- or 16-bit image reads as [0, 1])",
+                                                        file, x, y, v));
+            map.values.push_back(low + (high - low) * v);
+        }
+    return map;
+}
+
 glm::vec2 mirror_signs(const GrassField& field, glm::ivec2 cell) {
     return field.mirror ? shader::grass_mirror_signs(cell, field.mirror_seed) : glm::vec2(1.0f);
 }

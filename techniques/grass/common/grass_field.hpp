@@ -3,12 +3,15 @@
 // enumerate exactly the blades every representation must show.
 #pragma once
 
+#include "core/image.hpp"
+
 #include "blade_patch.hpp"
 
 #include <glm/glm.hpp>
 
 #include <cstdint>
 #include <functional>
+#include <string>
 #include <vector>
 
 namespace canopy::grass {
@@ -28,6 +31,12 @@ struct DensityMap {
 // its median, with a smooth edge.
 enum class DensityPattern { uniform, ramp_x, clearings };
 DensityMap density_map(DensityPattern pattern, float low, float high, uint32_t texels, uint32_t periods, uint32_t seed);
+
+// A density map from an image's first channel, each texel v in [0, 1] giving low + (high - low) v,
+// its first row at the field's z = 0 edge (-z) and its first column at x = 0 (-x): the image as a
+// map seen from above with -z up. Throws std::invalid_argument, naming `file` and the texel, for a
+// value outside [0, 1] or not finite, or an empty image.
+DensityMap density_map_from_image(const Image& image, float low, float high, const std::string& file);
 
 struct GrassField {
     glm::uvec2 cells{32, 32};  // Lemme's Table 7.1 field (L1022)

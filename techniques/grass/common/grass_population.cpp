@@ -2,6 +2,7 @@
 
 #include "../shaders/blade_alpha.h"
 #include "../shaders/cell_mirroring.h"
+#include "report/image_files.hpp"
 #include "../shaders/grass_density.h"
 
 #include "scene/scene_limits.hpp"
@@ -52,10 +53,15 @@ std::vector<ParamSpec> grass_population_params() {
     s.push_back(ParamSpec::integer("mirror_seed", 1, 0, 0xffffffffll, "seed of the cells' mirror signs"));
     s.push_back(ParamSpec::real("density", 1.0, 0.0, 1.0,
                                 "the field's density: a blade is drawn when its threshold is at most this"));
-    s.push_back(ParamSpec::choice("density_map", "uniform", {"uniform", "ramp_x", "clearings"},
+    s.push_back(ParamSpec::choice("density_map", "uniform", {"uniform", "ramp_x", "clearings", "file"},
                                   "uniform: `density` everywhere; ramp_x: from `density_low` at the field's first column to "
-                                  "`density` at its last; clearings: `density` but for clearings of `density_low` (Lemme §6.4.1)"));
-    s.push_back(ParamSpec::real("density_low", 0.0, 0.0, 1.0, "ramp_x and clearings: the low end, at most `density`"));
+                                  "`density` at its last; clearings: `density` but for clearings of `density_low` (Lemme §6.4.1); "
+                                  "file: `density_map_file`, from `density_low` where it is 0 to `density` where it is 1"));
+    s.push_back(ParamSpec::real("density_low", 0.0, 0.0, 1.0, "ramp_x, clearings and file: the low end, at most `density`"));
+    s.push_back(ParamSpec::path("density_map_file",
+                                "density_map = file: a greyscale image over the whole field (PNG, EXR, ...; its first channel, "
+                                "in [0, 1]), its first row along the field's -z edge and its first column along -x, "
+                                "relative to the scene file"));
     s.push_back(ParamSpec::integer("density_map_texels", 64, 2, 4096, "ramp_x and clearings: the map's texels a side over the field"));
     s.push_back(ParamSpec::integer("density_map_periods", 4, 1, 1024, "clearings: noise lattice cells across the field"));
     s.push_back(ParamSpec::integer("density_map_seed", 1, 0, 0xffffffffll, "clearings: the noise's seed"));
@@ -131,11 +137,21 @@ GrassPopulationSpec grass_population_spec(const ParamSet& params) {
     if (pattern != "uniform" && low > high)
         throw std::invalid_argument(fmt::format("density_low = {} is above density = {}: the map's low end must be at most its high end",
                                                 low, high));
-    f.density = density_map(pattern == "ramp_x"      ? DensityPattern::ramp_x
-                            : pattern == "clearings" ? DensityPattern::clearings
-                                                     : DensityPattern::uniform,
-                            low, high, uint32_t(params.integer("density_map_texels")),
-                            uint32_t(params.integer("density_map_periods")), uint32_t(params.integer("density_map_seed")));
+    const std::string& map_file = params.path("density_map_file");
+    if (pattern == "file" && map_file.empty())
+        throw std::invalid_argument("density_map = \"file\" needs density_map_file = \"...\", the image to read");
+    if (pattern != "file" && !map_file.empty())
+        throw std::invalid_argument(fmt::format("density_map_file is given but density_map is \"{}\": set density_map = \"file\" "
+                                                "to read it, or remove it",
+                                                pattern));
+    if (pattern == "file")
+        f.density = density_map_from_image(read_image(map_file), low, high, map_file);
+    else
+        f.density = density_map(pattern == "ramp_x"      ? DensityPattern::ramp_x
+                                : pattern == "clearings" ? DensityPattern::clearings
+                                                         : DensityPattern::uniform,
+                                low, high, uint32_t(params.integer("density_map_texels")),
+                                uint32_t(params.integer("density_map_periods")), uint32_t(params.integer("density_map_seed")));
     spec.taper = float(params.real("taper"));
     spec.transmission = float(params.real("transmission"));
     return spec;

@@ -3,18 +3,22 @@
 // field_point places them), and the reference's alpha test thins and cuts exactly the blades
 // for_each_drawn_blade enumerates and blade_alpha.h outlines. Each breakage of the placement,
 // the mirror's corner permutation or the thinning fails a check here.
+#include "../common/grass_field.hpp"
 #include "../common/grass_population.hpp"
 #include "../shaders/blade_alpha.h"
 
 #include "config/scene_config.hpp"
 #include "reference/embree_scene.hpp"
 #include "scene/geometry.hpp"
+#include "report/image_files.hpp"
 #include "support/config_error_of.hpp"
+#include "support/temp_folder.hpp"
 #include "support/reference_hits.hpp"
 
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -167,6 +171,73 @@ TEST_CASE("grass population: bad parameters name the line and the fix") {
         REQUIRE(error);
         CHECK(error->hint().find("did you mean 'grass'") != std::string::npos);
         CHECK(error->hint().find("scatter") != std::string::npos);
+    }
+}
+
+TEST_CASE("grass population: density_map = \"file\" reads an image as the field's map, its first row along -z, its first column along -x") {
+    test::TempFolder folder;
+    std::filesystem::create_directories(folder.path() / "maps");
+    Image map(2, 2);  // row 0: 0.0 0.4; row 1: 0.6 1.0 (x, then z)
+    const float values[2][2] = {{0.0f, 0.4f}, {0.6f, 1.0f}};
+    for (int y = 0; y < 2; ++y)
+        for (int x = 0; x < 2; ++x) map.at(x, y)[0] = values[y][x];
+    write_exr(folder.path() / "maps" / "density.exr", map);
+    const auto scene_with = [&](const std::string& params) {
+        return folder.write("scenes/lawn.toml", std::string(kScene).substr(0, std::string(kScene).find("params = {")) +
+                                                    "params = { " + params + " }\n");
+    };
+    const std::string field = "cells_x = 2, cells_z = 2, cell_size = 1, centre_x = 0, blades = 20, mirror = false, ";
+    const Scene scene = load_scene(scene_with(field + "density_map = \"file\", density_map_file = \"../maps/density.exr\""));
+    const auto copies = generate_instances(scene.populations.at(0));
+    REQUIRE(copies->size() == 4);
+    int checked = 0;
+    for (const PopulationInstance& copy : *copies) {
+        // The corners the field's outer corners are (corner order x0z0, x1z0, x0z1, x1z1): the map's
+        // clamped corner texels.
+        const glm::vec3 origin(copy.model[3]);
+        CAPTURE(origin.x);
+        CAPTURE(origin.z);
+        if (origin.x < -0.5f && origin.z < -0.5f) { CHECK(copy.data.x == doctest::Approx(0.0f)); ++checked; }
+        if (origin.x > -0.5f && origin.z < -0.5f) { CHECK(copy.data.y == doctest::Approx(0.4f)); ++checked; }
+        if (origin.x < -0.5f && origin.z > -0.5f) { CHECK(copy.data.z == doctest::Approx(0.6f)); ++checked; }
+        if (origin.x > -0.5f && origin.z > -0.5f) { CHECK(copy.data.w == doctest::Approx(1.0f)); ++checked; }
+    }
+    CHECK(checked == 4);
+    // density_low and density map the image's 0 and 1.
+    const Scene scaled = load_scene(
+        scene_with(field + "density_map = \"file\", density_map_file = \"../maps/density.exr\", density_low = 0.2, density = 0.7"));
+    for (const PopulationInstance& copy : *generate_instances(scaled.populations.at(0)))
+        if (copy.model[3].x > -0.5f && copy.model[3].z > -0.5f) CHECK(copy.data.w == doctest::Approx(0.7f));
+    // The same as a direct call, value by value.
+    const grass::DensityMap direct = density_map_from_image(map, 0.0f, 1.0f, "map");
+    CHECK(direct.width == 2);
+    CHECK(direct.height == 2);
+    CHECK(direct.values == std::vector<float>{0.0f, 0.4f, 0.6f, 1.0f});
+
+    SUBCASE("mistakes name the line and the fix") {
+        const auto missing = test::config_error_of(
+            [&] { load_scene(scene_with(field + "density_map = \"file\", density_map_file = \"../maps/none.png\"")); });
+        REQUIRE(missing);
+        CHECK(std::string(missing->what()).find("not a file") != std::string::npos);
+        CHECK(missing->line() == 14);
+        const auto unnamed = test::config_error_of([&] { load_scene(scene_with(field + "density_map = \"file\"")); });
+        REQUIRE(unnamed);
+        CHECK(std::string(unnamed->what()).find("needs density_map_file") != std::string::npos);
+        const auto unread = test::config_error_of(
+            [&] { load_scene(scene_with(field + "density_map_file = \"../maps/density.exr\"")); });
+        REQUIRE(unread);
+        CHECK(std::string(unread->what()).find("set density_map = \"file\"") != std::string::npos);
+        Image bright(1, 1);
+        bright.at(0, 0)[0] = 1.5f;
+        write_exr(folder.path() / "maps" / "bright.exr", bright);
+        const auto out_of_range = test::config_error_of(
+            [&] { load_scene(scene_with(field + "density_map = \"file\", density_map_file = \"../maps/bright.exr\"")); });
+        REQUIRE(out_of_range);
+        CHECK(std::string(out_of_range->what()).find("outside [0, 1]") != std::string::npos);
+        const auto not_a_path = test::config_error_of(
+            [&] { load_scene(scene_with(field + "density_map = \"file\", density_map_file = 3")); });
+        REQUIRE(not_a_path);
+        CHECK(std::string(not_a_path->what()).find("file path") != std::string::npos);
     }
 }
 
