@@ -137,6 +137,16 @@ ColourAgreement compare_with_reference_colours(const Scene& scene, const Image& 
     return a;
 }
 
+// grass.slices (baked alone; shadowed with `shadow_resolution` > 0) on `scene` at 160 x 120, its
+// image in `color`, against the reference's colours.
+ColourAgreement slices_colours_against_reference(const Scene& scene, long long shadow_resolution, Image& color) {
+    FrameRenderer slices = slices_renderer(scene, 160, 120, false, shadow_resolution);
+    slices.render();
+    color = slices.read_color();
+    for (float v : color.pixels) REQUIRE(std::isfinite(v));
+    return compare_with_reference_colours(scene, color);
+}
+
 struct Agreement {
     int both = 0;       // pixels where both show grass
     int coverage = 0;   // where one shows grass and the other not
@@ -247,11 +257,8 @@ TEST_CASE("grass.slices: with the sun along each baked direction, the slices see
             CAPTURE(camera);
             Scene scene = one_cell_scene(camera, "density = 1.0");
             scene.lights.at(0).direction = -shader::btf_light_direction(row);
-            FrameRenderer slices = slices_renderer(scene, 160, 120);
-            slices.render();
-            const Image color = slices.read_color();
-            for (float v : color.pixels) REQUIRE(std::isfinite(v));
-            const ColourAgreement same = compare_with_reference_colours(scene, color);
+            Image color;
+            const ColourAgreement same = slices_colours_against_reference(scene, 0, color);
             CAPTURE(same.both);
             CAPTURE(same.off);
             CAPTURE(same.mean_relative);
@@ -276,11 +283,8 @@ TEST_CASE("grass.slices: a shadowed bake: with the sun along each baked directio
             Scene scene = one_cell_scene(camera, "density = 1.0");
             scene.lights.at(0).direction = -shader::btf_light_direction(row);
             scene.lights.at(0).casts_shadows = true;
-            FrameRenderer slices = slices_renderer(scene, 160, 120, false, 1024);
-            slices.render();
-            const Image color = slices.read_color();
-            for (float v : color.pixels) REQUIRE(std::isfinite(v));
-            const ColourAgreement same = compare_with_reference_colours(scene, color);
+            Image color;
+            const ColourAgreement same = slices_colours_against_reference(scene, 1024, color);
             CAPTURE(same.both);
             CAPTURE(same.off);
             CAPTURE(same.mean_relative);
