@@ -250,7 +250,7 @@ case $case in
     # Parameter rows: the type and the default start in the same column whatever the name's length.
     [ "$(grep -E '^    [a-z_]+ ' "$work/list" | awk '{ print index($0, " default ") }' | sort -u | wc -l)" -eq 1 ] \
       || fail "the default column drifts"
-    [ "$(grep -E '^    [a-z_]+ ' "$work/list" | awk '{ match($0, /(int|float|bool|one of)/); print RSTART }' | sort -u | wc -l)" -eq 1 ] \
+    [ "$(grep -E '^    [a-z_]+ ' "$work/list" | awk '{ match($0, /(int|float|bool|one of|file path)/); print RSTART }' | sort -u | wc -l)" -eq 1 ] \
       || fail "the type column drifts" ;;
 
   readme_files)
