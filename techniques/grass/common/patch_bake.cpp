@@ -64,21 +64,31 @@ shader::PatchBake ortho_bake_over(const Bounds& f, BakeView view, bool tiled) {
     return bake;
 }
 
-Bounds light_frame(const Bounds& bounds, bool tiled) {
+int light_axis(uint32_t row) { return row == 0 ? 1 : (row == 1 || row == 3) ? 0 : 2; }
+
+Bounds light_frame(const Bounds& bounds, uint32_t row, bool tiled, float margin) {
     if (!tiled) return bake_frame(bounds);
+    // An axis-aligned light's rays keep their other two coordinates: only blades over the cell
+    // (and the margin the lookup's offsets reach) shadow it, from as far as the neighbours reach
+    // along the light.
     const Bounds cell = cell_frame(bounds);
     Bounds f;
-    f.min = glm::vec3(-1.0f, 0.0f, -1.0f);
-    f.max = glm::vec3(2.0f, cell.max.y, 2.0f);
+    f.min = glm::vec3(-margin, 0.0f, -margin);
+    f.max = glm::vec3(1.0f + margin, cell.max.y, 1.0f + margin);
+    const int axis = light_axis(row);
+    if (axis != 1) {
+        f.min[axis] = -1.0f;
+        f.max[axis] = 2.0f;
+    }
     return f;
 }
 
-shader::PatchBake light_bake(const Bounds& bounds, uint32_t row, bool tiled) {
+shader::PatchBake light_bake(const Bounds& bounds, uint32_t row, bool tiled, float margin) {
     static constexpr BakeView kViews[] = {BakeView::down, BakeView::along_x, BakeView::along_z, BakeView::along_x,
                                           BakeView::along_z};
-    shader::PatchBake bake = ortho_bake_over(light_frame(bounds, tiled), kViews[row % 5], tiled);
+    shader::PatchBake bake = ortho_bake_over(light_frame(bounds, row, tiled, margin), kViews[row % 5], tiled);
     if (row == 3 || row == 4) {  // X-, Z-: looking along +axis, the same image, depth reversed
-        const int axis = row == 3 ? 0 : 2;
+        const int axis = light_axis(row);
         bake.view_proj[axis][2] = -bake.view_proj[axis][2];
         bake.view_proj[3][2] = 1.0f - bake.view_proj[3][2];
         bake.toward_viewer = -bake.toward_viewer;
@@ -86,9 +96,9 @@ shader::PatchBake light_bake(const Bounds& bounds, uint32_t row, bool tiled) {
     return bake;
 }
 
-glm::mat4 light_lookup(const Bounds& bounds, uint32_t row, bool tiled, float bias) {
-    glm::mat4 m = light_bake(bounds, row, tiled).view_proj;
-    const int axis = row == 0 ? 1 : (row == 1 || row == 3) ? 0 : 2;
+glm::mat4 light_lookup(const Bounds& bounds, uint32_t row, bool tiled, float margin, float bias) {
+    glm::mat4 m = light_bake(bounds, row, tiled, margin).view_proj;
+    const int axis = light_axis(row);
     m[3][2] -= bias * std::abs(m[axis][2]);  // depth per unit along the light, times the bias
     return m;
 }

@@ -35,17 +35,23 @@ shader::PatchBake ortho_bake(const Bounds& bounds, BakeView view, bool tiled = f
 // The same camera framing any `frame` (patch space), e.g. a light's (light_frame).
 shader::PatchBake ortho_bake_over(const Bounds& frame, BakeView view, bool tiled);
 
-// What a shadowed bake's light views frame: tiled, the cell and its 8 neighbours (x and z in
-// [-1, 2], y from 0 to the prototype's top), else bake_frame(bounds).
-Bounds light_frame(const Bounds& bounds, bool tiled);
+// Baked light `row` (btf_light_direction's order: Y+, X+, Z+, X-, Z-): the axis it lies along (0 x,
+// 1 y, 2 z).
+int light_axis(uint32_t row);
 
-// The camera of baked light `row` (btf_light_direction's order: Y+, X+, Z+, X-, Z-): looking along
-// -L over light_frame, depth 0 on the light's side. Tiled, it draws the 9 copies.
-shader::PatchBake light_bake(const Bounds& bounds, uint32_t row, bool tiled);
+// What a shadowed bake's light view `row` frames: tiled, the cell and `margin` around it across the
+// light (its rays keep those coordinates, so no other blade can shadow the cell), and along it as
+// far as the 8 neighbours reach (x or z in [-1, 2]; y from 0 to the prototype's top); alone,
+// bake_frame(bounds).
+Bounds light_frame(const Bounds& bounds, uint32_t row, bool tiled, float margin);
+
+// The camera of baked light `row`: looking along -L over light_frame, depth 0 on the light's side.
+// Tiled, it draws the 9 copies.
+shader::PatchBake light_bake(const Bounds& bounds, uint32_t row, bool tiled, float margin);
 
 // light_bake's view_proj with its depth moved `bias` (patch units) towards the light: what a bake
 // fragment compares its own depth with (bake_shadows.h's lookup).
-glm::mat4 light_lookup(const Bounds& bounds, uint32_t row, bool tiled, float bias);
+glm::mat4 light_lookup(const Bounds& bounds, uint32_t row, bool tiled, float margin, float bias);
 
 // Where section k of n along `axis` (0 x, 2 z) of the baked frame begins; k = n is where the last
 // ends. Tiled, the sections split the cell exactly: what lies beyond is a neighbouring copy's,

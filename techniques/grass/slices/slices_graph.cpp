@@ -49,6 +49,7 @@ struct SliceBake {
 };
 
 const char* const kLightNames[] = {"y+", "x+", "z+", "x-", "z-"};  // btf_light_direction's order
+static_assert(shader::BAKE_SHADOW_LIGHTS == shader::BTF_LIGHTS, "a shadowed bake looks up each baked light");
 
 std::string light_camera_name(const std::string& prefix, uint32_t row) {
     return prefix + "bake_light_camera_" + kLightNames[row];
@@ -173,15 +174,21 @@ void declare_slices_bake(FrameGraph& g, const SlicesSettings& s) {
             pc.upload(b.camera, &camera, sizeof(camera));
         }
         if (!shadowed) return;
-        // The bias in patch units: `shadow_bias` texels of the light view's widest side.
-        const Bounds frame = light_frame(bounds, tiled);
-        const glm::vec3 extent = frame.max - frame.min;
-        const float texel = std::max({extent.x, extent.y, extent.z}) / float(shadow_resolution);
+        // The offsets in patch units: texels across the coarsest light view (the extents across the
+        // light; along it a view may reach over the neighbours).
+        const float margin = kBakeShadowMargin / float(shadow_resolution);
+        float texel = 0.0f;
+        for (uint32_t row = 0; row < uint32_t(shader::BTF_LIGHTS); ++row) {
+            const Bounds frame = light_frame(bounds, row, tiled, margin);
+            for (int axis = 0; axis < 3; ++axis)
+                if (axis != light_axis(row))
+                    texel = std::max(texel, (frame.max[axis] - frame.min[axis]) / float(shadow_resolution));
+        }
         shader::BakeShadows block{};
         for (uint32_t row = 0; row < uint32_t(shader::BTF_LIGHTS); ++row) {
-            const shader::PatchBake camera = light_bake(bounds, row, tiled);
+            const shader::PatchBake camera = light_bake(bounds, row, tiled, margin);
             pc.upload(light_camera_name(prefix, row), &camera, sizeof(camera));
-            block.lookup[row] = light_lookup(bounds, row, tiled, shadow_bias * texel);
+            block.lookup[row] = light_lookup(bounds, row, tiled, margin, shadow_bias * texel);
         }
         block.offsets = glm::vec4(kBakeShadowNormalOffset * texel, 0.0f, 0.0f, 0.0f);
         pc.upload(names.shadows, &block, sizeof(block));

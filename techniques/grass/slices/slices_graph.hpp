@@ -19,6 +19,9 @@ namespace canopy::grass {
 inline constexpr float kBakeShadowBias = 1.0f;
 // And its normal offset (bake_shadows.h), in the same texels.
 inline constexpr float kBakeShadowNormalOffset = 1.5f;
+// A tiled light view's margin around the cell across the light, in its texels: room for the
+// offsets and the 2 x 2 compare of a lookup at the cell's edge.
+inline constexpr float kBakeShadowMargin = 4.0f;
 
 struct SlicesSettings {
     uint32_t slices = 8;              // vertical slices per direction

@@ -316,74 +316,139 @@ TEST_CASE("grass.slices: a shadowed bake: with the sun along each baked directio
     CHECK(shadowed > grass / 20);  // 12 %: most views have the sun behind or across them
 }
 
-TEST_CASE("grass.slices: a shadowed bake holds, texel by texel, whether Embree's ray towards each baked light leaves the patch") {
-    // The bake alone (as the one cell Embree holds), each vertical slice's front side: where the
-    // bake and the rays see the same blade, the row's alpha (the light's visibility) against a
-    // ray from the blade point towards the light, started 1e-4 along it.
-    const Scene scene = one_cell_scene(kAnyCamera, "density = 1.0");
-    FrameRenderer renderer = slices_renderer(scene, 64, 48, false, 1024);
+namespace {
+
+// 3 x 3 unmirrored cells of the one-cell patch around the cell at [0, 1]^2: what a tiled bake draws.
+Scene tiled_field() {
+    return parse_scene(std::string("[scene]\nname = \"tiled\"\nambient = 0.2\n") + kAnyCamera +
+                           "\n[[light]]\ntype = \"directional\"\ndirection = [0, -1, 0]\ncasts_shadows = false\n"
+                           "[[population]]\nname = \"patch\"\nkind = \"grass\"\nalbedo = [0.1, 0.8, 0.1]\n"
+                           "params = { cells_x = 3, cells_z = 3, centre_x = 0.5, centre_z = 0.5, mirror = false, "
+                           "blades = 60, subdivisions = 3, width_min = 0.06, width_max = 0.1, density = 1.0 }\n",
+                       "tiled.toml");
+}
+
+struct ShadowAgreement {
+    int compared = 0, shadowed = 0, off = 0;
+};
+
+// A shadowed bake of `scene`'s patch (tiled: with its 8 neighbours, `scene` being tiled_field()),
+// each vertical slice's front side and the horizontal slice: where the bake and Embree's
+// orthographic rays see the same blade, each row's alpha (the light's visibility) against a ray
+// from the blade point towards the light, started 1e-4 along it.
+ShadowAgreement shadowed_bake_against_rays(const Scene& scene, bool tiled) {
+    FrameRenderer renderer = slices_renderer(scene, 64, 48, tiled, 1024);
     renderer.render();
     const EmbreeScene embree(scene, build_scene_meshes(scene));
     Camera towards = scene.camera;
     towards.near_plane = 0.0f;
     towards.far_plane = 1e30f;
     const Bounds b = prototype_bounds(scene);
-    int compared = 0, shadowed = 0, off = 0;
-    for (uint32_t axis = 0; axis < 2; ++axis)
-        for (uint32_t k = 0; k < kSlices; ++k) {
-            const float lo = axis == 0 ? b.min.x : b.min.z, hi = axis == 0 ? b.max.x : b.max.z;
+    const Bounds frame = tiled ? grass::cell_frame(b) : b;
+    ShadowAgreement a;
+    // (axis, k) of the vertical slices' front sides, then the horizontal slice (axis 2).
+    for (uint32_t axis = 0; axis < 3; ++axis)
+        for (uint32_t k = 0; k < (axis == 2 ? 1 : kSlices); ++k) {
+            const bool top = axis == 2;
+            const uint32_t width = kWidth, height = top ? kWidth : kHeight;
+            const float lo = axis == 0 ? frame.min.x : frame.min.z, hi = axis == 0 ? frame.max.x : frame.max.z;
             const float step = (hi - lo) / float(kSlices);
-            const grass::test::Section section{k == 0 ? -1e30f : lo + step * float(k),
-                                               k + 1 == kSlices ? 1e30f : lo + step * float(k + 1)};
-            const auto truth = grass::test::traced_bake(scene, axis == 0 ? grass::test::View::along_x : grass::test::View::along_z,
-                                                        kWidth, kHeight, section);
-            const uint32_t layer = grass::slice_side_layer(axis, k, 0, kSlices);
-            const Image albedo = renderer.read_image("slices_albedo", 0, layer);
+            grass::test::Section section{lo + step * float(k), lo + step * float(k + 1)};
+            if (!tiled && k == 0) section.lo = -1e30f;
+            if (!tiled && k + 1 == kSlices) section.hi = 1e30f;
+            if (top) section = {};
+            const auto view = axis == 0 ? grass::test::View::along_x : axis == 1 ? grass::test::View::along_z : grass::test::View::down;
+            const auto truth = grass::test::traced_bake_over(scene, frame, view, width, height, section);
+            const uint32_t layer = top ? 0 : grass::slice_side_layer(axis, k, 0, kSlices);
+            const Image albedo = top ? renderer.read_image("top_albedo") : renderer.read_image("slices_albedo", 0, layer);
+            REQUIRE(albedo.width == int(width));
+            REQUIRE(albedo.height == int(height));
             for (int row = 0; row < shader::BTF_LIGHTS; ++row) {
                 CAPTURE(axis);
                 CAPTURE(k);
                 CAPTURE(row);
-                const Image lit = renderer.read_image("slices_lit", 0, layer * uint32_t(shader::BTF_LIGHTS) + uint32_t(row));
+                const Image lit = top ? renderer.read_image("top_lit", 0, uint32_t(row))
+                                      : renderer.read_image("slices_lit", 0, layer * uint32_t(shader::BTF_LIGHTS) + uint32_t(row));
                 const glm::vec3 l = shader::btf_light_direction(row);
-                for (int j = 1; j + 1 < int(kHeight); ++j)
-                    for (int i = 1; i + 1 < int(kWidth); ++i) {
-                        const auto& t = truth[size_t(j) * kWidth + size_t(i)];
+                for (int j = 1; j + 1 < int(height); ++j)
+                    for (int i = 1; i + 1 < int(width); ++i) {
+                        const auto& t = truth[size_t(j) * width + size_t(i)];
                         bool edge = false;
                         for (int dj = -1; dj <= 1; ++dj)
                             for (int di = -1; di <= 1; ++di)
-                                edge = edge || truth[size_t(j + dj) * kWidth + size_t(i + di)].blade != t.blade;
+                                edge = edge || truth[size_t(j + dj) * width + size_t(i + di)].blade != t.blade;
                         if (edge || t.blade < 0 || albedo.at(i, j)[3] != t.threshold) continue;
                         const float baked = lit.at(i, j)[3];
                         REQUIRE(baked >= 0.0f);
                         REQUIRE(baked <= 1.0f);
                         const Ray ray{t.position + 1e-4f * l, l};
                         const bool visible = !trace_primary(embree, towards, l, ray);
-                        ++compared;
-                        shadowed += !visible;
-                        off += std::abs(baked - (visible ? 1.0f : 0.0f)) > 0.5f;
+                        ++a.compared;
+                        a.shadowed += !visible;
+                        a.off += std::abs(baked - (visible ? 1.0f : 0.0f)) > 0.5f;
                     }
             }
         }
-    CAPTURE(compared);
-    CAPTURE(shadowed);
-    CAPTURE(off);
-    CHECK(compared > 5000);
-    CHECK(shadowed > compared / 10);
-    // 1.1 % differ: blades closer than the lookup's offsets (2.5 light-view texels) and the 2 x 2
-    // compare at shadow edges.
-    CHECK(off <= compared / 50);
+    return a;
+}
+
+}  // namespace
+
+TEST_CASE("grass.slices: a shadowed bake holds, texel by texel, whether Embree's ray towards each baked light leaves the patch") {
+    // Alone, as the one cell Embree holds; tiled (the default), as the cell of a 3 x 3 field.
+    for (const bool tiled : {false, true}) {
+        CAPTURE(tiled);
+        const ShadowAgreement a = shadowed_bake_against_rays(tiled ? tiled_field() : one_cell_scene(kAnyCamera, "density = 1.0"), tiled);
+        CAPTURE(a.compared);
+        CAPTURE(a.shadowed);
+        CAPTURE(a.off);
+        CHECK(a.compared > 5000);
+        CHECK(a.shadowed > a.compared / 10);
+        // About 1 % differ: blades closer than the lookup's offsets (2.5 light-view texels) and the
+        // 2 x 2 compare at shadow edges.
+        CHECK(a.off <= a.compared / 50);
+    }
+}
+
+TEST_CASE("grass.slices: a shadowed bake's shadows thin with the cell's density (eq 4.7)") {
+    // With the sun across the view: each pixel's colour with the shadowed bake over its colour with
+    // the unshadowed one, at the same density (the same blades). At density 1 a shadowed blade
+    // keeps only the ambient light; at 0.5, eq 4.7 keeps at least half of the direct light.
+    float lowest[2] = {1e30f, 1e30f};
+    for (const int half : {0, 1}) {
+        Scene scene = one_cell_scene(kFarAlongZ, half ? "density = 0.5" : "density = 1.0");
+        scene.lights.at(0).direction = -shader::btf_light_direction(1);
+        FrameRenderer shadowed = slices_renderer(scene, 160, 120, false, 1024);
+        FrameRenderer unshadowed = slices_renderer(scene, 160, 120);
+        shadowed.render();
+        unshadowed.render();
+        const Image a = shadowed.read_color(), b = unshadowed.read_color();
+        int both = 0;
+        for (int y = 0; y < a.height; ++y)
+            for (int x = 0; x < a.width; ++x)
+                if (grass::test::shows_grass(a.at(x, y)) && grass::test::shows_grass(b.at(x, y))) {
+                    ++both;
+                    lowest[half] = std::min(lowest[half], a.at(x, y)[1] / b.at(x, y)[1]);
+                }
+        CHECK(both > 200);
+    }
+    CAPTURE(lowest[0]);
+    CAPTURE(lowest[1]);
+    CHECK(lowest[0] < 0.45f);
+    CHECK(lowest[1] >= 0.5f - 1e-3f);
 }
 
 TEST_CASE("grass.slices: a shadowed bake's light views look along each baked direction, depth rising away from the light") {
     Bounds bounds;
     bounds.extend(glm::vec3(0.1f, 0.0f, 0.2f));
     bounds.extend(glm::vec3(0.9f, 0.4f, 0.7f));
+    const float margin = 0.01f;
     for (const bool tiled : {false, true})
         for (uint32_t row = 0; row < uint32_t(shader::BTF_LIGHTS); ++row) {
             CAPTURE(tiled);
             CAPTURE(row);
-            const Bounds frame = grass::light_frame(bounds, tiled);
-            const glm::mat4 view = grass::light_bake(bounds, row, tiled).view_proj;
+            const Bounds frame = grass::light_frame(bounds, row, tiled, margin);
+            const glm::mat4 view = grass::light_bake(bounds, row, tiled, margin).view_proj;
             const glm::vec3 centre = 0.5f * (frame.min + frame.max), l = shader::btf_light_direction(int(row));
             const glm::vec3 half = 0.5f * (frame.max - frame.min);
             const glm::vec4 near = view * glm::vec4(centre + l * glm::dot(glm::abs(l), half), 1.0f);
@@ -398,13 +463,28 @@ TEST_CASE("grass.slices: a shadowed bake's light views look along each baked dir
                 CHECK(std::abs(c.x) <= 1.0f + 1e-5f);
                 CHECK(std::abs(c.y) <= 1.0f + 1e-5f);
             }
+            if (tiled) {
+                // Across the light: the cell and the margin; along it: the neighbours (x, z in
+                // [-1, 2]) or the blades' height.
+                const int axis = grass::light_axis(row);
+                CHECK(std::abs(glm::dot(l, glm::vec3(axis == 0, axis == 1, axis == 2))) == 1.0f);
+                for (const int other : {0, 2})
+                    if (other != axis) {
+                        CHECK(frame.min[other] == doctest::Approx(-margin));
+                        CHECK(frame.max[other] == doctest::Approx(1.0f + margin));
+                    } else {
+                        CHECK(frame.min[other] == -1.0f);
+                        CHECK(frame.max[other] == 2.0f);
+                    }
+                CHECK(frame.min.y == 0.0f);
+                CHECK(frame.max.y == doctest::Approx(0.4f));
+            }
             // The lookup compares a point's depth moved `bias` towards the light.
-            const glm::mat4 lookup = grass::light_lookup(bounds, row, tiled, 0.01f);
+            const glm::mat4 lookup = grass::light_lookup(bounds, row, tiled, margin, 0.01f);
             const glm::vec3 moved = shader::bake_shadow_coord(lookup, centre);
             const glm::vec4 towards = view * glm::vec4(centre + 0.01f * l, 1.0f);
             CHECK(moved.z == doctest::Approx(towards.z).epsilon(1e-5));
         }
-    if (grass::light_frame(bounds, true).min.x != -1.0f) FAIL("a tiled light view frames the cell and its 8 neighbours");
 }
 
 TEST_CASE("grass.slices: eq 4.7 thins a baked shadow by the cell's density, and stays in [0, 1]") {

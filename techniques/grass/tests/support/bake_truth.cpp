@@ -24,11 +24,16 @@ Scene one_cell_scene(const std::string& camera, const std::string& extra_params)
 }
 
 std::vector<TexelTruth> traced_bake(const Scene& scene, View view, uint32_t width, uint32_t height, Section section) {
+    Bounds b;
+    for (const Vertex& v : scene.populations.at(0).family->prototype.vertices) b.extend(v.position);
+    return traced_bake_over(scene, b, view, width, height, section);
+}
+
+std::vector<TexelTruth> traced_bake_over(const Scene& scene, const Bounds& b, View view, uint32_t width, uint32_t height,
+                                         Section section) {
     const EmbreeScene embree(scene, build_scene_meshes(scene));
     const FamilyPopulation& family = *scene.populations.at(0).family;
     const uint32_t per_blade = 2 * (uint32_t(scene.populations[0].params.integer("subdivisions")) + 1);
-    Bounds b;
-    for (const Vertex& v : family.prototype.vertices) b.extend(v.position);
     // The rays start at the section's far side from the bake's camera, past the camera's near
     // plane (trace_primary clips there).
     const float near = scene.camera.near_plane;

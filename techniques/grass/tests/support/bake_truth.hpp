@@ -6,6 +6,7 @@
 #pragma once
 
 #include "core/image.hpp"
+#include "scene/geometry.hpp"
 #include "scene/scene.hpp"
 
 #include <glm/glm.hpp>
@@ -40,6 +41,10 @@ struct Section {
 // Row-major, width x height texels; a ray that first meets a blade outside `section` sees none.
 std::vector<TexelTruth> traced_bake(const Scene& scene, View view, uint32_t width, uint32_t height,
                                     Section section = {});
+// The same over `frame` (patch space) instead of the prototype's bounds: a tiled bake's, the cell
+// (x and z in [0, 1]) of a field whose copy at the origin is unmirrored.
+std::vector<TexelTruth> traced_bake_over(const Scene& scene, const Bounds& frame, View view, uint32_t width,
+                                         uint32_t height, Section section = {});
 inline std::vector<TexelTruth> traced_bake(const Scene& scene, View view, uint32_t size) {
     return traced_bake(scene, view, size, size);
 }
