@@ -2,9 +2,9 @@
 
 #include "../shaders/blade_alpha.h"
 #include "../shaders/cell_mirroring.h"
-#include "report/image_files.hpp"
 #include "../shaders/grass_density.h"
 
+#include "report/image_files.hpp"
 #include "scene/scene_limits.hpp"
 
 #include <fmt/format.h>

@@ -14,10 +14,11 @@ namespace canopy::grass {
 
 namespace {
 
-// The first grass population's field; a 0 x 0 field without one.
+// The first grass population's field's placement (its density, which the copies carry, is not
+// made again: no map is read or generated inside the load pass); a 0 x 0 field without one.
 GrassField field_of(const GeneratedPopulation* population) {
     if (!population) return GrassField{.cells = {0, 0}};
-    return grass_population_spec(population->params).field;
+    return grass_field_placement(population->params);
 }
 
 // Its cells alone, read from the parameters (every frame: no density map is made).

@@ -2,6 +2,8 @@
 
 #include "grass_population.hpp"
 
+#include "../shaders/btf_interpolation.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -64,7 +66,16 @@ shader::PatchBake ortho_bake_over(const Bounds& f, BakeView view, bool tiled) {
     return bake;
 }
 
-int light_axis(uint32_t row) { return row == 0 ? 1 : (row == 1 || row == 3) ? 0 : 2; }
+void reverse_bake_depth(shader::PatchBake& bake, int axis) {
+    bake.view_proj[axis][2] = -bake.view_proj[axis][2];
+    bake.view_proj[3][2] = 1.0f - bake.view_proj[3][2];
+    bake.toward_viewer = -bake.toward_viewer;
+}
+
+int light_axis(uint32_t row) {
+    const glm::vec3 l = shader::btf_light_direction(int(row));
+    return l.x != 0.0f ? 0 : l.y != 0.0f ? 1 : 2;
+}
 
 Bounds light_frame(const Bounds& bounds, uint32_t row, bool tiled, float margin) {
     if (!tiled) return bake_frame(bounds);
@@ -84,15 +95,11 @@ Bounds light_frame(const Bounds& bounds, uint32_t row, bool tiled, float margin)
 }
 
 shader::PatchBake light_bake(const Bounds& bounds, uint32_t row, bool tiled, float margin) {
-    static constexpr BakeView kViews[] = {BakeView::down, BakeView::along_x, BakeView::along_z, BakeView::along_x,
-                                          BakeView::along_z};
-    shader::PatchBake bake = ortho_bake_over(light_frame(bounds, row, tiled, margin), kViews[row % 5], tiled);
-    if (row == 3 || row == 4) {  // X-, Z-: looking along +axis, the same image, depth reversed
-        const int axis = light_axis(row);
-        bake.view_proj[axis][2] = -bake.view_proj[axis][2];
-        bake.view_proj[3][2] = 1.0f - bake.view_proj[3][2];
-        bake.toward_viewer = -bake.toward_viewer;
-    }
+    const int axis = light_axis(row);
+    const BakeView view = axis == 1 ? BakeView::down : axis == 0 ? BakeView::along_x : BakeView::along_z;
+    shader::PatchBake bake = ortho_bake_over(light_frame(bounds, row, tiled, margin), view, tiled);
+    // A light from the negative side (X-, Z-): looking along +axis, the same image, depth reversed.
+    if (shader::btf_light_direction(int(row))[axis] < 0.0f) reverse_bake_depth(bake, axis);
     return bake;
 }
 

@@ -35,6 +35,10 @@ shader::PatchBake ortho_bake(const Bounds& bounds, BakeView view, bool tiled = f
 // The same camera framing any `frame` (patch space), e.g. a light's (light_frame).
 shader::PatchBake ortho_bake_over(const Bounds& frame, BakeView view, bool tiled);
 
+// `bake` seen from the other side along `axis` (0 x, 1 y, 2 z): the same image coordinates, depth
+// reversed, toward_viewer turned round.
+void reverse_bake_depth(shader::PatchBake& bake, int axis);
+
 // Baked light `row` (btf_light_direction's order: Y+, X+, Z+, X-, Z-): the axis it lies along (0 x,
 // 1 y, 2 z).
 int light_axis(uint32_t row);

@@ -42,7 +42,6 @@ public:
                                              .height_resolution = uint32_t(params.integer("height_resolution")),
                                              .slice_height = block.slice_height,
                                              .neighbours = params.boolean("neighbours"),
-                                             .bake_shadows = params.integer("shadow_resolution") > 0,
                                              .shadow_resolution = uint32_t(params.integer("shadow_resolution"))};
         FrameGraph g;
         g.needs.populations = {grass::kGrassPopulationKind};

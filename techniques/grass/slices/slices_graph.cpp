@@ -78,9 +78,7 @@ shader::PatchBake slice_camera(const Bounds& bounds, const SliceBake& b, uint32_
     const float lo = bake_section_start(f, axis, b.section, n, tiled), hi = bake_section_start(f, axis, b.section + 1, n, tiled);
     bake.section = glm::vec4(lo, hi, 0.0f, 0.0f);
     if (b.side == 1) {
-        bake.view_proj[axis][2] = -bake.view_proj[axis][2];
-        bake.view_proj[3][2] = 1.0f - bake.view_proj[3][2];
-        bake.toward_viewer = -bake.toward_viewer;
+        reverse_bake_depth(bake, axis);
         bake.section = glm::vec4(-hi, -lo, 0.0f, 0.0f);  // along = -coordinate
     }
     return bake;
@@ -140,9 +138,8 @@ void declare_slices_bake(FrameGraph& g, const SlicesSettings& s) {
     const std::vector<SliceBake> bakes = slice_bakes(n, s.prefix);
     for (const SliceBake& b : bakes)
         g.buffers.push_back({.name = b.camera, .bytes = sizeof(shader::PatchBake), .usage = kUniformBuffer});
-    const bool shadowed = s.bake_shadows;
     const uint32_t shadow_resolution = s.shadow_resolution;
-    const float shadow_bias = kBakeShadowBias;
+    const bool shadowed = shadow_resolution > 0;
     if (shadowed) {
         g.images.push_back({.name = names.light_depth, .format = VK_FORMAT_D32_SFLOAT,
                             .extent = ImageExtent::square(shadow_resolution), .layers = lights});
@@ -163,9 +160,8 @@ void declare_slices_bake(FrameGraph& g, const SlicesSettings& s) {
     setup.settings = fmt::format("slices={} slice_height={} neighbours={}", n, slice_height, tiled);
     if (shadowed)
         setup.settings += fmt::format(" shadows: {} texels, bias {} texels, normal offset {} texels", shadow_resolution,
-                                      shadow_bias, kBakeShadowNormalOffset);
-    setup.record = [bakes, n, slice_height, tiled, names, shadowed, shadow_resolution, shadow_bias,
-                    prefix = s.prefix](PassContext& pc) {
+                                      kBakeShadowBias, kBakeShadowNormalOffset);
+    setup.record = [bakes, n, slice_height, tiled, names, shadowed, shadow_resolution, prefix = s.prefix](PassContext& pc) {
         const Bounds bounds = prototype_bounds(first_grass(pc.populations()));
         const std::vector<QuadVertex> quads = slice_quads(bounds, n, slice_height, tiled);
         pc.upload(names.quads, quads.data(), quads.size() * sizeof(QuadVertex));
@@ -188,7 +184,7 @@ void declare_slices_bake(FrameGraph& g, const SlicesSettings& s) {
         for (uint32_t row = 0; row < uint32_t(shader::BTF_LIGHTS); ++row) {
             const shader::PatchBake camera = light_bake(bounds, row, tiled, margin);
             pc.upload(light_camera_name(prefix, row), &camera, sizeof(camera));
-            block.lookup[row] = light_lookup(bounds, row, tiled, margin, shadow_bias * texel);
+            block.lookup[row] = light_lookup(bounds, row, tiled, margin, kBakeShadowBias * texel);
         }
         block.offsets = glm::vec4(kBakeShadowNormalOffset * texel, 0.0f, 0.0f, 0.0f);
         pc.upload(names.shadows, &block, sizeof(block));

@@ -29,10 +29,9 @@ struct SlicesSettings {
     uint32_t height_resolution = 64;  // texels up a vertical slice
     float slice_height = 0.1f;        // the horizontal slice's height, a fraction of the tallest blade
     bool neighbours = true;           // bake the patch with its 8 neighbours, cut to the cell
-    // Bake the blades' shadows into the rows (bake_shadows.h): one depth layer per baked light,
-    // `shadow_resolution` texels a side, looked up with a bias of kBakeShadowBias texels.
-    bool bake_shadows = false;
-    uint32_t shadow_resolution = 1024;
+    // Above 0: bake the blades' shadows into the rows (bake_shadows.h), from one depth layer per
+    // baked light this many texels a side, looked up with a bias of kBakeShadowBias texels.
+    uint32_t shadow_resolution = 0;
     std::string prefix;               // before every resource and pass name ("" for grass.slices)
     // The frame pass draws the copies the cull of this prefix kept (grass_cull.hpp), not all.
     std::optional<std::string> culled_by;
@@ -45,7 +44,7 @@ inline uint32_t slices_cell_vertices(const SlicesSettings& s) { return 6 * (2 * 
 // per vertical slice and side (front: seen from +axis; back: from -axis) and one for the
 // horizontal slice, each writing the slice's albedo and density threshold (the ambient row of
 // Figure 4.6, and Figure 4.9's threshold texture) and its five lit rows (btf_interpolation.h).
-// With bake_shadows, first one depth pass per baked light direction (bake_light_<direction>).
+// With a shadow_resolution, first one depth pass per baked light direction (bake_light_<direction>).
 void declare_slices_bake(FrameGraph& g, const SlicesSettings& s);
 
 // The frame pass: with `ground`, the scene's objects first (grass::ground_state); then the 2n + 1
