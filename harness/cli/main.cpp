@@ -4,6 +4,7 @@
 #include "config/scene_config.hpp"
 #include "reference/shadow_ray_benchmark.hpp"
 #include "report/image_files.hpp"
+#include "timing_only/timing_only.hpp"
 #include "run/reference_provider.hpp"
 #include "core/registry.hpp"
 #include "scene/population_kind.hpp"
@@ -136,7 +137,13 @@ fs::path cache_dir(const ReferenceOptions& o) {
     return o.cache_dir.empty() ? default_reference_cache_dir() : fs::path(o.cache_dir);
 }
 
+// Before anything is read or written: what a timing-only build lacks, as bad input (exit 2).
+void refuse_in_timing_only_build(bool wants_reference, bool writes_images) {
+    if (const auto refusal = timing_only_refusal(wants_reference, writes_images)) throw ConfigError({}, 0, *refusal);
+}
+
 int reference(const fs::path& scene_file, const std::string& out, const ReferenceOptions& o) {
+    refuse_in_timing_only_build(true, true);
     const Scene scene = load_scene(scene_file);
     const auto meshes = build_scene_meshes(scene);
     ReferenceProvider provider(cache_dir(o), o.settings);
@@ -165,6 +172,7 @@ int reference(const fs::path& scene_file, const std::string& out, const Referenc
 }
 
 int bench_reference(const fs::path& scene_file, const ReferenceOptions& o) {
+    refuse_in_timing_only_build(true, false);
     const Scene scene = load_scene(scene_file);
     const auto meshes = build_scene_meshes(scene);
     fmt::print(stderr, "benchmarking shadow rays on {} at {}x{} ({} light x {} pixel samples)...\n", scene.name, o.width,
@@ -320,6 +328,7 @@ int run(const RunCommand& command, const ReferenceOptions& reference_options) {
     const TechniqueRegistry& registry = TechniqueRegistry::instance();
     // Everything is checked (config, scenes, meshes, device support, the output folder) before
     // anything is written.
+    refuse_in_timing_only_build(command.with_reference, command.images != ImageOutput::none);
     const Experiment experiment = load_experiment(command.config, registry);
     GpuContext gpu(command.device);
     const PreparedExperiment prepared = prepare_experiment(experiment, registry, gpu);

@@ -1,8 +1,8 @@
 #include "metrics/flip.hpp"
 
 #include "metrics/comparable_pair.hpp"
+#include "reference/parallel_for.hpp"
 
-#include <OpenImageIO/parallel.h>
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -185,7 +185,8 @@ struct OpponentImage {
 OpponentImage to_opponent_space(const Image& image) {
     const size_t count = size_t(image.width) * size_t(image.height);
     OpponentImage out{Plane(count), Plane(count), Plane(count)};
-    OIIO::parallel_for(0, image.height, [&](int32_t y) {
+    parallel_for(size_t(image.height), 0, [&](size_t index, int) {
+        const int32_t y = int32_t(index);
         for (size_t i = size_t(y) * size_t(image.width), end = i + size_t(image.width); i < end; ++i) {
             const float* p = &image.pixels[i * 4];
             const Color ycxcz = xyz_to_ycxcz(linear_rgb_to_xyz(clamp01({p[0], p[1], p[2]})));
@@ -201,7 +202,8 @@ OpponentImage to_opponent_space(const Image& image) {
 Plane convolve_rows(const Plane& source, const std::vector<float>& kernel, int width, int height) {
     Plane destination(source.size());
     const int radius = int(kernel.size() / 2);
-    OIIO::parallel_for(0, height, [&](int32_t y) {
+    parallel_for(size_t(height), 0, [&](size_t index, int) {
+        const int32_t y = int32_t(index);
         const float* row = &source[size_t(y) * size_t(width)];
         float* out = &destination[size_t(y) * size_t(width)];
         for (int x = 0; x < width; ++x) {
@@ -224,7 +226,8 @@ Plane convolve_rows(const Plane& source, const std::vector<float>& kernel, int w
 Plane convolve_columns(const Plane& source, const std::vector<float>& kernel, int width, int height) {
     Plane destination(source.size(), 0.0f);
     const int radius = int(kernel.size() / 2);
-    OIIO::parallel_for(0, height, [&](int32_t y) {
+    parallel_for(size_t(height), 0, [&](size_t index, int) {
+        const int32_t y = int32_t(index);
         float* out = &destination[size_t(y) * size_t(width)];
         for (int k = -radius; k <= radius; ++k) {
             const float weight = kernel[size_t(k + radius)];
@@ -305,7 +308,8 @@ std::vector<float> compute_flip_map(const Image& test, const Image& reference, d
     const float breakpoint = p_c * c_max;
     const float nan = std::numeric_limits<float>::quiet_NaN();
     std::vector<float> flip_map(size_t(width) * size_t(height));
-    OIIO::parallel_for(0, height, [&](int32_t y) {
+    parallel_for(size_t(height), 0, [&](size_t index, int) {
+        const int32_t y = int32_t(index);
         for (size_t i = size_t(y) * size_t(width), end = i + size_t(width); i < end; ++i) {
             if (!pair.included[i]) {
                 flip_map[i] = nan;

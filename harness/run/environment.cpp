@@ -105,6 +105,8 @@ std::string cpus_allowed() {
 
 std::string git_command() { return std::string("git -C '") + CANOPY_SOURCE_DIR + "' "; }
 
+std::string git_head() { return command_output(git_command() + "rev-parse HEAD 2>/dev/null"); }
+
 }  // namespace
 
 std::string canopy_build_type() { return CANOPY_BUILD_TYPE; }
@@ -112,8 +114,10 @@ std::string canopy_build_type() { return CANOPY_BUILD_TYPE; }
 std::filesystem::path source_checkout() { return CANOPY_SOURCE_DIR; }
 
 std::string source_commit() {
-    const std::string commit = command_output(git_command() + "rev-parse HEAD 2>/dev/null");
-    return commit.empty() ? "unknown" : commit;
+    const std::string commit = git_head();
+    if (!commit.empty()) return commit;
+    // A bundle's copy of the checkout has no history: the commit it was configured with.
+    return *CANOPY_BUILD_COMMIT ? CANOPY_BUILD_COMMIT : "unknown";
 }
 
 Environment collect_environment(const GpuContext& gpu, const std::string& config_hash) {
@@ -137,7 +141,9 @@ Environment collect_environment(const GpuContext& gpu, const std::string& config
     e.git_commit = source_commit();
     // Changes to the sources, not to results/: regenerating committed results rewrites tracked files
     // there (--force removes a folder's old outputs first), which says nothing about the code.
-    if (e.git_commit != "unknown")
+    if (git_head().empty())
+        e.git_dirty = e.git_commit != "unknown" && CANOPY_BUILD_DIRTY != 0;
+    else
         e.git_dirty = !command_output(git_command() +
                                       "status --porcelain --untracked-files=no -- . ':(exclude)results' 2>/dev/null")
                            .empty();

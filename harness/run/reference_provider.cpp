@@ -79,9 +79,4 @@ const ReferenceImages& ReferenceProvider::images(const Scene& scene, const std::
     return images_.emplace(key, std::move(*cached)).first->second;
 }
 
-std::filesystem::path default_reference_cache_dir() {
-    if (const char* dir = std::getenv("CANOPY_CACHE_DIR"); dir && *dir) return std::filesystem::path(dir) / "reference";
-    return std::filesystem::path("results") / "cache" / "reference";
-}
-
 }  // namespace canopy
