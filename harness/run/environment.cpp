@@ -113,11 +113,14 @@ std::string canopy_build_type() { return CANOPY_BUILD_TYPE; }
 
 std::filesystem::path source_checkout() { return CANOPY_SOURCE_DIR; }
 
+// A bundle (scripts/gpu-bundle) is configured with the commit it is built from: that, not the git
+// state of the copy it runs in (stale or absent on the machine it travels to), says which code ran.
+bool built_from_recorded_commit() { return *CANOPY_BUILD_COMMIT != '\0'; }
+
 std::string source_commit() {
+    if (built_from_recorded_commit()) return CANOPY_BUILD_COMMIT;
     const std::string commit = git_head();
-    if (!commit.empty()) return commit;
-    // A bundle's copy of the checkout has no history: the commit it was configured with.
-    return *CANOPY_BUILD_COMMIT ? CANOPY_BUILD_COMMIT : "unknown";
+    return commit.empty() ? "unknown" : commit;
 }
 
 Environment collect_environment(const GpuContext& gpu, const std::string& config_hash) {
@@ -141,9 +144,9 @@ Environment collect_environment(const GpuContext& gpu, const std::string& config
     e.git_commit = source_commit();
     // Changes to the sources, not to results/: regenerating committed results rewrites tracked files
     // there (--force removes a folder's old outputs first), which says nothing about the code.
-    if (git_head().empty())
-        e.git_dirty = e.git_commit != "unknown" && CANOPY_BUILD_DIRTY != 0;
-    else
+    if (built_from_recorded_commit())
+        e.git_dirty = CANOPY_BUILD_DIRTY != 0;
+    else if (e.git_commit != "unknown")
         e.git_dirty = !command_output(git_command() +
                                       "status --porcelain --untracked-files=no -- . ':(exclude)results' 2>/dev/null")
                            .empty();
