@@ -139,7 +139,7 @@ fs::path cache_dir(const ReferenceOptions& o) {
 
 // Before anything is read or written: what a timing-only build lacks, as bad input (exit 2).
 void refuse_in_timing_only_build(bool wants_reference, bool writes_images) {
-    if (const auto refusal = timing_only_refusal(wants_reference, writes_images)) throw ConfigError({}, 0, *refusal);
+    if (const auto refusal = timing_only_refusal(kTimingOnlyBuild, wants_reference, writes_images)) throw ConfigError({}, 0, *refusal);
 }
 
 int reference(const fs::path& scene_file, const std::string& out, const ReferenceOptions& o) {

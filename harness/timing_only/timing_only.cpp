@@ -9,8 +9,8 @@ void throw_timing_only(const std::string& what) {
                            "OpenImageIO and Embree); main() should have refused the command");
 }
 
-std::optional<std::string> timing_only_refusal(bool wants_reference, bool writes_images) {
-    if (!kTimingOnlyBuild || (!wants_reference && !writes_images)) return std::nullopt;
+std::optional<std::string> timing_only_refusal(bool timing_only_build, bool wants_reference, bool writes_images) {
+    if (!timing_only_build || (!wants_reference && !writes_images)) return std::nullopt;
     std::string lacks, add;
     if (wants_reference) {
         lacks = "ray-trace references (no Embree)";

@@ -19,7 +19,8 @@ constexpr bool kTimingOnlyBuild =
 // Thrown by a stand-in; names what the build lacks.
 [[noreturn]] void throw_timing_only(const std::string& what);
 
-// What a timing-only build cannot do for a command given these options, or nothing when it can.
-std::optional<std::string> timing_only_refusal(bool wants_reference, bool writes_images);
+// What a build cannot do for a command given these options (a timing-only one: references and
+// image files), or nothing when it can. main() passes kTimingOnlyBuild.
+std::optional<std::string> timing_only_refusal(bool timing_only_build, bool wants_reference, bool writes_images);
 
 }  // namespace canopy
