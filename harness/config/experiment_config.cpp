@@ -1,5 +1,7 @@
 #include "config/experiment_config.hpp"
 
+#include "scene/population_kind.hpp"
+
 #include "config/camera_path_config.hpp"
 #include "config/file_name_rules.hpp"
 #include "config/scene_config.hpp"
@@ -408,15 +410,24 @@ Experiment load_experiment(const std::filesystem::path& file, const TechniqueReg
         experiment.techniques.push_back(read_technique(technique_section, registry));
     check_case_count(experiment);
 
-    // Mesh files change the results as much as the configs do.
-    const auto hash_mesh_file = [&](const Object& object) {
-        if (object.shape == ShapeType::mesh &&
-            std::find(hashed_files.begin(), hashed_files.end(), object.mesh_file) == hashed_files.end())
-            hashed_files.push_back(object.mesh_file);
+    // The files a scene reads (meshes, height maps, a population's maps) change the results as
+    // much as the configs do.
+    const auto hash_file = [&](const std::filesystem::path& path) {
+        if (!path.empty() && std::find(hashed_files.begin(), hashed_files.end(), path) == hashed_files.end())
+            hashed_files.push_back(path);
+    };
+    const auto hash_object_files = [&](const Object& object) {
+        if (object.shape == ShapeType::mesh) hash_file(object.mesh_file);
+        if (object.shape == ShapeType::heightfield) hash_file(object.height_map_file);
     };
     for (const Scene& scene : experiment.scenes) {
-        for (const Object& object : scene.objects) hash_mesh_file(object);
-        for (const Population& population : scene.populations) hash_mesh_file(population.prototype);
+        for (const Object& object : scene.objects) hash_object_files(object);
+        for (const Population& population : scene.populations) {
+            hash_object_files(population.prototype);
+            if (const PopulationKind* kind = PopulationKindRegistry::instance().find(population.kind))
+                for (const ParamSpec& spec : kind->params())
+                    if (spec.type == ParamType::path) hash_file(population.params.path(spec.name));
+        }
     }
     experiment.config_hash = hash_files(text, hashed_files);
     return experiment;

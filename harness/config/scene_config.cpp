@@ -2,6 +2,8 @@
 
 #include "config/file_name_rules.hpp"
 #include "config/toml_reader.hpp"
+#include "report/image_files.hpp"
+#include "scene/height_field.hpp"
 #include "scene/population_kind.hpp"
 #include "scene/scene_limits.hpp"
 
@@ -26,9 +28,9 @@ namespace {
 
 constexpr std::array kLightTypeNames{"directional", "spot", "rect", "sphere"};
 constexpr std::array kLightTypes{LightType::directional, LightType::spot, LightType::rect, LightType::sphere};
-constexpr std::array kShapeNames{"plane", "box", "sphere", "cylinder", "mesh"};
+constexpr std::array kShapeNames{"plane", "box", "sphere", "cylinder", "mesh", "heightfield"};
 constexpr std::array kShapes{ShapeType::plane, ShapeType::box, ShapeType::sphere, ShapeType::cylinder,
-                             ShapeType::mesh};
+                             ShapeType::mesh, ShapeType::heightfield};
 
 // Reads a required enum-like string, suggesting the closest name when it is misspelled.
 template <typename Enum, size_t N>
@@ -300,13 +302,71 @@ struct ShapeKeyUse {
 
 const std::vector<ShapeKeyUse>& shape_key_uses() {
     static const std::vector<ShapeKeyUse> uses{
-        {"size", {ShapeType::plane, ShapeType::box}, "plane ([x, z]) and box ([x, y, z]) shapes"},
+        {"size", {ShapeType::plane, ShapeType::box, ShapeType::heightfield},
+         "plane and heightfield ([x, z]) and box ([x, y, z]) shapes"},
         {"radius", {ShapeType::sphere, ShapeType::cylinder}, "sphere and cylinder shapes"},
         {"height", {ShapeType::cylinder}, "cylinder shapes"},
         {"segments", {ShapeType::sphere, ShapeType::cylinder}, "sphere and cylinder shapes"},
         {"file", {ShapeType::mesh}, "mesh shapes"},
+        {"height_map", {ShapeType::heightfield}, "heightfield shapes"},
+        {"height_map_file", {ShapeType::heightfield}, "heightfield shapes"},
+        {"height_scale", {ShapeType::heightfield}, "heightfield shapes"},
+        {"vertices", {ShapeType::heightfield}, "heightfield shapes"},
+        {"periods", {ShapeType::heightfield}, "heightfield shapes"},
+        {"seed", {ShapeType::heightfield}, "heightfield shapes"},
     };
     return uses;
+}
+
+// A heightfield's grid: smooth seeded hills, or an image's first channel (one pixel a vertex).
+std::shared_ptr<const HeightField> read_height_field(TomlReader& reader, Object& object,
+                                                     const std::filesystem::path& config_folder) {
+    const glm::vec2 size = object.plane_size;
+    const std::string map = reader.get_string("height_map", "hills");
+    if (map != "hills" && map != "file")
+        throw reader.error("height_map", fmt::format("{} must be \"hills\" or \"file\", got \"{}\"",
+                                                     reader.describe_key("height_map"), map),
+                           "height_map = \"hills\" (seeded value noise) or \"file\" with height_map_file = \"...\"");
+    const float scale = float(reader.get_float("height_scale", 1.0));
+    if (!(scale >= 0.0f) || scale > limits::kMaxCoordinate)
+        throw reader.error("height_scale", fmt::format("{} must lie in [0, {}], got {}", reader.describe_key("height_scale"),
+                                                       limits::kMaxCoordinate, scale),
+                           "the world height of a map value of 1, e.g. height_scale = 2");
+    if (map == "file") {
+        for (const char* key : {"vertices", "periods", "seed"})
+            reader.reject(key, "height_map = \"file\" (the image sets the grid)", "height_map = \"hills\"");
+        const std::string file = reader.require_string("height_map_file", "\"terrain/heights.png\"");
+        std::filesystem::path path(file);
+        if (path.is_relative()) path = config_folder / path;
+        path = std::filesystem::absolute(path).lexically_normal();
+        object.height_map_file = path;
+        if (!std::filesystem::is_regular_file(path))
+            throw reader.error("height_map_file", fmt::format("height map '{}' not found (looked for {})", file, path.string()),
+                               fmt::format("relative paths are resolved against the scene config's folder, {}",
+                                           config_folder.string()));
+        try {
+            return std::make_shared<const HeightField>(height_field_from_image(read_image(path), size, scale, file));
+        } catch (const std::exception& e) {
+            throw reader.error("height_map_file", e.what(), "a greyscale image whose values lie in [0, 1]");
+        }
+    }
+    reader.reject("height_map_file", "height_map = \"hills\"", "height_map = \"file\"");
+    glm::vec2 vertices = reader.get_vec2("vertices", glm::vec2(65.0f));
+    if (vertices != glm::floor(vertices) || vertices.x < 2.0f || vertices.y < 2.0f || vertices.x > 4096.0f ||
+        vertices.y > 4096.0f)
+        throw reader.error("vertices", fmt::format("{} must be whole numbers in [2, 4096], got [{}, {}]",
+                                                   reader.describe_key("vertices"), vertices.x, vertices.y),
+                           "grid vertices along x and z, e.g. vertices = 65 or [129, 65]");
+    const long long periods = reader.get_int("periods", 3);
+    if (periods < 1 || periods > 1024)
+        throw reader.error("periods", fmt::format("{} must lie in [1, 1024], got {}", reader.describe_key("periods"), periods),
+                           "noise lattice cells across the field, e.g. periods = 3");
+    const long long seed = reader.get_int("seed", 1);
+    if (seed < 0 || seed > 0xffffffffll)
+        throw reader.error("seed", fmt::format("{} must lie in [0, 4294967295], got {}", reader.describe_key("seed"), seed),
+                           "e.g. seed = 1");
+    return std::make_shared<const HeightField>(
+        hills_height_field(size, glm::uvec2(vertices), uint32_t(periods), uint32_t(seed), scale));
 }
 
 Object read_object(TomlReader& reader, size_t index, const std::filesystem::path& config_folder) {
@@ -326,6 +386,11 @@ Object read_object(TomlReader& reader, size_t index, const std::filesystem::path
         case ShapeType::plane:
             object.plane_size = reader.get_vec2("size", object.plane_size, Broadcast::forbidden);
             require_positive(reader, "size", object.plane_size);
+            break;
+        case ShapeType::heightfield:
+            object.plane_size = reader.get_vec2("size", object.plane_size, Broadcast::forbidden);
+            require_positive(reader, "size", object.plane_size);
+            object.height_field = read_height_field(reader, object, config_folder);
             break;
         case ShapeType::box:
             object.box_size = reader.get_vec3("size", object.box_size);

@@ -1,5 +1,7 @@
 #include "scene/geometry.hpp"
 
+#include "scene/height_field.hpp"
+
 #include "scene/population_kind.hpp"
 
 #include "core/error.hpp"
@@ -233,6 +235,7 @@ TriangleMesh build_object_mesh(const Object& object) {
         case ShapeType::sphere: return build_sphere(object.radius, std::max(3, object.segments));
         case ShapeType::cylinder: return build_cylinder(object.radius, object.height, std::max(3, object.segments));
         case ShapeType::mesh: return load_mesh_file(object);
+        case ShapeType::heightfield: return build_height_field_mesh(*object.height_field);
     }
     throw std::logic_error("unhandled ShapeType");
 }

@@ -4,6 +4,7 @@
 #include <glm/glm.hpp>
 
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -25,7 +26,9 @@ struct Transform {
     glm::mat4 matrix() const;  // outer * T * Rz * Ry * Rx * S
 };
 
-enum class ShapeType { plane, box, sphere, cylinder, mesh };
+enum class ShapeType { plane, box, sphere, cylinder, mesh, heightfield };
+
+struct HeightField;  // scene/height_field.hpp
 
 struct Material {
     glm::vec3 albedo{0.8f, 0.8f, 0.8f};  // diffuse reflectance in [0,1]
@@ -40,6 +43,8 @@ struct Object {
     float height = 1.0f;                 // cylinder, along +y, centred at the origin
     int segments = 32;                   // sphere and cylinder tessellation
     std::filesystem::path mesh_file;     // mesh: absolute path (resolved against the config's folder)
+    std::shared_ptr<const HeightField> height_field;  // heightfield: its grid, made when the scene is read
+    std::filesystem::path height_map_file;  // heightfield from an image: absolute path; empty for hills
     Material material;
     bool casts_shadows = true;
     // One transform per drawn copy; a plain object has exactly one.
