@@ -22,7 +22,7 @@ void override_population_params(Population& population, const std::map<std::stri
     for (const auto& [name, value] : overrides) given[name] = value;
     population.params = ParamSet::resolve(kind->params(), given, lines, where, fmt::format("population kind '{}'", kind->name()));
     try {
-        population.family = std::make_shared<const FamilyPopulation>(kind->generate(population.params));
+        population.family = std::make_shared<const FamilyPopulation>(kind->generate(population.params, population.ground));
     } catch (const std::invalid_argument& e) {
         throw ConfigError(where.file, where.line,
                           fmt::format("population '{}' (kind '{}') cannot be generated: {}", population.name, kind->name(),

@@ -485,7 +485,33 @@ AlphaMask read_alpha_mask(TomlReader& reader) {
 
 // A kind a technique family registered (scene/population_kind.hpp): name, material and the
 // kind's typed parameters in `params`, checked like a technique's; the copies are generated now.
-Population read_family_population(TomlReader& reader, Population population, const PopulationKind& kind) {
+// The heightfield object a population's `terrain` key names, moved by a translation alone.
+PopulationGround population_ground(const TomlReader& reader, const std::string& name, const std::vector<Object>& objects) {
+    const auto object = std::find_if(objects.begin(), objects.end(), [&](const Object& o) { return o.name == name; });
+    std::vector<std::string> heightfields;
+    for (const Object& o : objects)
+        if (o.shape == ShapeType::heightfield) heightfields.push_back(o.name);
+    const std::string which = heightfields.empty() ? "the scene has no heightfield object: add one ([[object]] with "
+                                                     "shape = \"heightfield\") before the population"
+                                                   : fmt::format("heightfield objects: {}", fmt::join(heightfields, ", "));
+    if (object == objects.end())
+        throw reader.error("terrain", fmt::format("terrain = \"{}\" names no object of the scene", name), which);
+    if (object->shape != ShapeType::heightfield)
+        throw reader.error("terrain", fmt::format("terrain = \"{}\" names a {}, not a heightfield", name,
+                                                  kShapeNames[size_t(object->shape)]), which);
+    const Transform& t = object->instances.front();
+    if (object->instances.size() != 1 || t.rotate_degrees != glm::vec3(0.0f) || t.scale != glm::vec3(1.0f) ||
+        t.outer != glm::mat4(1.0f))
+        throw reader.error("terrain", fmt::format("the heightfield '{}' is rotated, scaled or copied: a population can "
+                                                  "stand only on a heightfield moved by `translate` alone", name),
+                           "drop its rotate, scale and instances");
+    return {object->height_field, t.translate, name};
+}
+
+Population read_family_population(TomlReader& reader, Population population, const PopulationKind& kind,
+                                  const std::vector<Object>& objects) {
+    if (reader.has("terrain"))
+        population.ground = population_ground(reader, reader.get_string("terrain", ""), objects);
     Object& material = population.prototype;
     material.name = population.name;
     material.material.albedo = reader.get_vec3("albedo", material.material.albedo);
@@ -509,7 +535,7 @@ Population read_family_population(TomlReader& reader, Population population, con
     population.params =
         ParamSet::resolve(kind.params(), given, lines, population.where, fmt::format("population kind '{}'", kind.name()));
     try {
-        population.family = std::make_shared<const FamilyPopulation>(kind.generate(population.params));
+        population.family = std::make_shared<const FamilyPopulation>(kind.generate(population.params, population.ground));
     } catch (const std::invalid_argument& e) {
         throw ConfigError(population.where.file, population.where.line,
                           fmt::format("population '{}' (kind '{}') cannot be generated: {}", population.name,
@@ -519,7 +545,8 @@ Population read_family_population(TomlReader& reader, Population population, con
     return population;
 }
 
-Population read_population(TomlReader& reader, size_t index, const std::filesystem::path& config_folder) {
+Population read_population(TomlReader& reader, size_t index, const std::filesystem::path& config_folder,
+                           const std::vector<Object>& objects) {
     Population population;
     population.where = reader.where();
     population.name = reader.get_string("name", fmt::format("population{}", index));
@@ -530,7 +557,7 @@ Population read_population(TomlReader& reader, size_t index, const std::filesyst
         const PopulationKindRegistry& registry = PopulationKindRegistry::instance();
         if (const PopulationKind* kind = registry.find(kind_name)) {
             population.kind = kind_name;
-            return read_family_population(reader, std::move(population), *kind);
+            return read_family_population(reader, std::move(population), *kind, objects);
         }
         std::vector<std::string> names{population_kinds::kScatter};
         for (const std::string& name : registry.names()) names.push_back(name);
@@ -653,7 +680,7 @@ Scene parse_scene(const std::string& text, const std::filesystem::path& file) {
     for (size_t i = 0; i < object_sections.size(); ++i)
         scene.objects.push_back(read_object(object_sections[i], i, config_folder));
     for (size_t i = 0; i < population_sections.size(); ++i) {
-        Population population = read_population(population_sections[i], i, config_folder);
+        Population population = read_population(population_sections[i], i, config_folder, scene.objects);
         // Techniques draw a population by its name: two of one name would draw the first twice.
         for (const Population& earlier : scene.populations)
             if (earlier.name == population.name)

@@ -27,6 +27,7 @@ std::vector<std::string> graph_requirements(const FrameGraph& graph) {
     // A scene holding a population of a kind the graph does not render is refused (check_supported).
     if (graph.needs.populations.empty()) needs.emplace_back("a scene without populations");
     for (const std::string& kind : graph.needs.populations) needs.push_back(fmt::format("renders '{}' populations", kind));
+    if (graph.needs.populations_on_terrain) needs.emplace_back("stands populations on a terrain");
     return needs;
 }
 

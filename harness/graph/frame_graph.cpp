@@ -189,6 +189,7 @@ std::string describe(const FrameGraph& graph) {
     if (n.area_light) out += "needs area-light\n";
     for (const std::string& kind : n.populations) out += fmt::format("renders population {}\n", kind);
     if (!n.populations.empty() && !n.population_copies_on_gpu) out += "keeps population copies on the CPU\n";
+    if (n.populations_on_terrain) out += "stands populations on a terrain\n";
     return out;
 }
 

@@ -144,6 +144,10 @@ struct GraphNeeds {
     // selection) says false: the copies then stay on the CPU (PassContext::populations), and the
     // services that read the scene's copies (draw_population, draw_over_population) refuse them.
     bool population_copies_on_gpu = true;
+    // Whether the technique draws those populations standing on a terrain (a population's
+    // `terrain` key: copies lifted vertex by vertex, FamilyPopulation::vertex_offset). A scene
+    // whose population stands on one is refused by a technique that does not.
+    bool populations_on_terrain = false;
 };
 
 struct FrameGraph {

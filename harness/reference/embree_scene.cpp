@@ -220,6 +220,23 @@ void EmbreeScene::add_population(const Scene& scene, const std::vector<TriangleM
 
     const auto shared_copies = generate_instances(population);
     const std::vector<PopulationInstance>& copies = *shared_copies;
+    // Copies that leave the prototype (grass on a terrain) keep their own positions, and their box
+    // grows by the most any copy moves a vertex.
+    const auto& vertex_offset = population.family ? population.family->vertex_offset : nullptr;
+    if (vertex_offset) {
+        record.copy_positions.resize(copies.size());
+        Bounds moved = prototype_bounds;
+        for (size_t copy = 0; copy < copies.size(); ++copy) {
+            std::vector<float>& positions = record.copy_positions[copy];
+            positions = record.positions;
+            for (size_t vertex = 0; vertex < mesh.vertices.size(); ++vertex) {
+                const glm::vec3 offset = vertex_offset(uint32_t(copy), uint32_t(vertex));
+                for (int axis = 0; axis < 3; ++axis) positions[3 * vertex + size_t(axis)] += offset[axis];
+                moved.extend(glm::vec3(positions[3 * vertex], positions[3 * vertex + 1], positions[3 * vertex + 2]));
+            }
+        }
+        prototype_bounds = moved;
+    }
     record.copy_models.reserve(copies.size());
     record.copy_normal_matrices.reserve(copies.size());
     for (size_t copy = 0; copy < copies.size(); ++copy) {
@@ -241,7 +258,7 @@ void EmbreeScene::add_population(const Scene& scene, const std::vector<TriangleM
                                                  copies[copy].normal_matrix[2]);
     }
     triangle_count_ += copies.size() * triangles;
-    stored_triangle_count_ += triangles;
+    stored_triangle_count_ += record.copy_positions.empty() ? triangles : copies.size() * triangles;
     records_.push_back(std::move(record));
 }
 
@@ -278,14 +295,22 @@ void EmbreeScene::build_embree_scenes(const std::string& device_config) {
                 copy_filters_.push_back({&copy_alpha_tests_[size_t(record.copy_alpha_test)], record.first_instance});
                 filter = &copy_filters_.back();
             }
-            RTCScene prototype = rtcNewScene(device_);
-            prototype_scenes_.push_back(prototype);
-            rtcSetSceneBuildQuality(prototype, RTC_BUILD_QUALITY_HIGH);
-            RTCGeometry geometry = create_geometry(record, nullptr, filter);
-            rtcAttachGeometryByID(prototype, geometry, 0);
-            rtcReleaseGeometry(geometry);
-            rtcCommitScene(prototype);
-            attach_copies(record, prototype);
+            // One prototype scene for every copy, or, for copies with their own positions, one each.
+            const size_t scenes = record.copy_positions.empty() ? 1 : record.copy_positions.size();
+            for (size_t scene_index = 0; scene_index < scenes; ++scene_index) {
+                RTCScene prototype = rtcNewScene(device_);
+                prototype_scenes_.push_back(prototype);
+                rtcSetSceneBuildQuality(prototype, RTC_BUILD_QUALITY_HIGH);
+                RTCGeometry geometry = create_geometry(
+                    record, nullptr, filter, record.copy_positions.empty() ? nullptr : &record.copy_positions[scene_index]);
+                rtcAttachGeometryByID(prototype, geometry, 0);
+                rtcReleaseGeometry(geometry);
+                rtcCommitScene(prototype);
+                if (record.copy_positions.empty())
+                    attach_copies(record, prototype, 0, record.copy_models.size());
+                else
+                    attach_copies(record, prototype, scene_index, 1);
+            }
             instance_owner_.insert(instance_owner_.end(), record.copy_models.size(), unsigned(geom_id));
             continue;
         }
@@ -307,10 +332,10 @@ void EmbreeScene::build_embree_scenes(const std::string& device_config) {
 
 // One instance of `prototype` per copy, in the visible scene and, when the population casts
 // shadows, in a separate shadow scene under the same ID.
-void EmbreeScene::attach_copies(const Record& record, RTCScene prototype) {
+void EmbreeScene::attach_copies(const Record& record, RTCScene prototype, size_t first, size_t count) {
     std::vector<RTCScene> targets{visible_scene_};
     if (shadow_scene_ != visible_scene_ && record.casts_shadows) targets.push_back(shadow_scene_);
-    for (size_t copy = 0; copy < record.copy_models.size(); ++copy) {
+    for (size_t copy = first; copy < first + count; ++copy) {
         for (RTCScene target : targets) {
             RTCGeometry instance = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_INSTANCE);
             rtcSetGeometryInstancedScene(instance, prototype);
@@ -324,10 +349,11 @@ void EmbreeScene::attach_copies(const Record& record, RTCScene prototype) {
 }
 
 RTCGeometry EmbreeScene::create_geometry(const Record& record, const AlphaTest* alpha_test,
-                                         const CopyFilter* copy_filter) const {
+                                         const CopyFilter* copy_filter, const std::vector<float>* positions) const {
     RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
     const size_t vertex_count = record.normals.size();
-    rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, record.positions.data(), 0,
+    rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                               (positions ? *positions : record.positions).data(), 0,
                                3 * sizeof(float), vertex_count);
     rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, record.indices->data(), 0,
                                3 * sizeof(uint32_t), record.indices->size() / 3);

@@ -131,6 +131,9 @@ private:
         // A population: its copies' transforms, whose instances hold geometry IDs
         // [first_instance, first_instance + copies) in the top-level scenes, and its test.
         std::vector<glm::mat4> copy_models;
+        // A family's copies whose vertices leave the prototype (FamilyPopulation::vertex_offset):
+        // each copy's own positions, prototype space (same layout as `positions`); empty: shared.
+        std::vector<std::vector<float>> copy_positions;
         std::vector<glm::mat3> copy_normal_matrices;  // turn prototype normals into world space
         unsigned first_instance = 0;
         int copy_alpha_test = -1;  // index into copy_alpha_tests_, or -1: opaque
@@ -140,8 +143,10 @@ private:
     void add_population(const Scene& scene, const std::vector<TriangleMesh>& meshes, size_t index,
                         const EmbreeSceneOptions& options);
     void build_embree_scenes(const std::string& device_config);
-    RTCGeometry create_geometry(const Record& record, const AlphaTest* alpha_test, const CopyFilter* copy_filter) const;
-    void attach_copies(const Record& record, RTCScene prototype);
+    RTCGeometry create_geometry(const Record& record, const AlphaTest* alpha_test, const CopyFilter* copy_filter,
+                                const std::vector<float>* positions = nullptr) const;
+    // Instances of `prototype` for copies [first, first + count) of the record.
+    void attach_copies(const Record& record, RTCScene prototype, size_t first, size_t count);
     void release();
 
     RTCDevice device_ = nullptr;

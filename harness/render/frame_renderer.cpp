@@ -80,7 +80,15 @@ std::optional<Unsupported> check_supported(const GpuContext& gpu, const Scene& s
     // Before the light checks: a population the technique cannot draw is refused whatever the light.
     for (const Population& population : scene.populations) {
         const std::vector<std::string>& kinds = graph.needs.populations;
-        if (std::find(kinds.begin(), kinds.end(), population.kind) != kinds.end()) continue;
+        if (std::find(kinds.begin(), kinds.end(), population.kind) != kinds.end()) {
+            if (!population.ground.terrain || graph.needs.populations_on_terrain) continue;
+            return Unsupported{
+                fmt::format("population '{}' of scene '{}' stands on the heightfield '{}', and this technique does not "
+                            "follow a terrain",
+                            population.name, scene.name, population.ground.name),
+                scene_hint(population.where, "remove the population's `terrain`, or pick a technique that follows one "
+                                             "(`canopy list`: \"stands populations on a terrain\")")};
+        }
         return Unsupported{
             fmt::format("scene '{}' holds population '{}' of kind '{}', which this technique does not render ({})",
                         scene.name, population.name, population.kind,

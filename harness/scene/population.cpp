@@ -1,5 +1,7 @@
 #include "scene/population.hpp"
 
+#include "scene/height_field.hpp"
+
 #include "scene/population_kind.hpp"
 
 #include "alpha_mask.h"
@@ -8,6 +10,11 @@
 #include <cmath>
 
 namespace canopy {
+
+float PopulationGround::height_at(glm::vec2 world_xz) const {
+    if (!terrain) return 0.0f;
+    return origin.y + terrain->at(world_xz - glm::vec2(origin.x, origin.z));
+}
 
 namespace {
 

@@ -40,6 +40,16 @@ struct AlphaMask {
 // +y (when random_yaw) and scaled uniformly by a factor drawn from [scale_min, scale_max].
 // A copy's world matrix is placement * prototype.instances[0].matrix(): the prototype's own
 // transform (e.g. a translate lifting a box onto the ground) applies first.
+// What a family's population stands on: the scene's heightfield object its `terrain` key names
+// (moved by a translation alone), or nothing: the kind's own ground.
+struct PopulationGround {
+    std::shared_ptr<const HeightField> terrain;  // local heights, centred on `origin` in x and z
+    glm::vec3 origin{0.0f};                      // the heightfield object's translation
+    std::string name;                            // the object's, for messages
+    // World height of the terrain at a world (x, z); 0 without a terrain.
+    float height_at(glm::vec2 world_xz) const;
+};
+
 struct Population {
     std::string name;
     std::string kind = population_kinds::kScatter;
@@ -61,6 +71,7 @@ struct Population {
     // prototype.material and prototype.casts_shadows.
     ParamSet params;
     std::shared_ptr<const FamilyPopulation> family;
+    PopulationGround ground;  // the `terrain` key's heightfield, or none
 };
 
 // One generated copy: its world matrix and the inverse-transpose of its linear part (for normals),

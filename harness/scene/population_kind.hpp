@@ -40,6 +40,11 @@ struct FamilyPopulation {
     // (Boulanger 2008 eq 4.1's gamma, for thin blades and leaves): shading adds gamma times the
     // irradiance the other side receives. 0: opaque, as every other surface.
     float transmission = 0.0f;
+    // Where a copy's vertices leave the shared prototype (grass on a terrain: each blade lifted
+    // onto the ground under its root), as an offset in the prototype's local space added before
+    // the copy's model matrix; empty: every copy is the prototype moved by its matrix. The
+    // reference then stores each copy's triangles apart.
+    std::function<glm::vec3(uint32_t copy, uint32_t vertex)> vertex_offset;
 };
 
 class PopulationKind {
@@ -51,9 +56,10 @@ public:
     // reference cache's key).
     virtual int version() const = 0;
     virtual std::vector<ParamSpec> params() const = 0;
-    // Deterministic in `params`. Throws std::invalid_argument, saying which parameter to change,
-    // for values that are each in range but together cannot be generated.
-    virtual FamilyPopulation generate(const ParamSet& params) const = 0;
+    // Deterministic in `params` and `ground`. Throws std::invalid_argument, saying which parameter
+    // to change, for values that are each in range but together cannot be generated (or cannot
+    // stand on this ground).
+    virtual FamilyPopulation generate(const ParamSet& params, const PopulationGround& ground) const = 0;
 };
 
 class PopulationKindRegistry {

@@ -37,7 +37,18 @@ void declare_grass_cull(FrameGraph& g, const std::vector<CullBand>& bands) {
         for (const CullBand& band : bands) {
             shader::GrassCull cull{};
             if (any) {
-                const Bounds bounds = prototype_bounds(grass);
+                Bounds bounds = prototype_bounds(grass);
+                // On a terrain the blades rise above their cell's (x0, z0) corner by up to the
+                // other corners' heights (grass_terrain.h): the box, in patch space, grows by that.
+                float low = 0.0f, high = 0.0f;
+                for (const PopulationInstance& copy : grass->instances)
+                    for (int corner = 0; corner < 3; ++corner) {
+                        const float lift = copy.normal_matrix[corner].w / copy.model[1][1];
+                        low = std::min(low, lift);
+                        high = std::max(high, lift);
+                    }
+                bounds.min.y += low;
+                bounds.max.y += high;
                 cull.box_min = glm::vec4(bounds.min, 0.0f);
                 cull.box_max = glm::vec4(bounds.max, 0.0f);
                 if (band.vertex_count == 0) {

@@ -4,6 +4,8 @@
 #include "../shaders/grass_density.h"
 #include "density_thresholds.hpp"
 
+#include "scene/height_field.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -119,6 +121,36 @@ glm::vec4 cell_corner_densities(const GrassField& field, glm::ivec2 cell) {
     return {at(0, 0), at(1, 0), at(0, 1), at(1, 1)};
 }
 
+void check_terrain_fits(const GrassField& field) {
+    if (!field.ground.terrain) return;
+    const HeightField& t = *field.ground.terrain;
+    const glm::vec2 extent = field.cell_size * glm::vec2(field.cells);
+    const glm::vec2 centre = glm::vec2(field.origin.x, field.origin.z) + 0.5f * extent;
+    const glm::vec2 terrain_centre(field.ground.origin.x, field.ground.origin.z);
+    const float tolerance = 1e-4f * std::max(1.0f, std::max(extent.x, extent.y));
+    const bool grid = t.vertices == field.cells + 1u;
+    const bool size = glm::all(glm::lessThanEqual(glm::abs(t.size - extent), glm::vec2(tolerance)));
+    const bool centred = glm::all(glm::lessThanEqual(glm::abs(terrain_centre - centre), glm::vec2(tolerance)));
+    if (grid && size && centred) return;
+    throw std::invalid_argument(fmt::format(
+        "the field stands on the heightfield '{}', whose grid must be its cells (one grid quad a cell, "
+        "shaders/grass_terrain.h): give it vertices = [{}, {}] (it has [{}, {}]), size = [{}, {}] (it has [{}, {}]) "
+        "and translate x, z = {}, {} (it has {}, {}), or change cells_x, cells_z, cell_size, centre_x and centre_z",
+        field.ground.name, field.cells.x + 1, field.cells.y + 1, t.vertices.x, t.vertices.y, extent.x, extent.y, t.size.x,
+        t.size.y, centre.x, centre.y, terrain_centre.x, terrain_centre.y));
+}
+
+float terrain_height(const GrassField& field, glm::vec2 world_xz) { return field.ground.height_at(world_xz); }
+
+glm::vec4 cell_corner_heights(const GrassField& field, glm::ivec2 cell) {
+    if (!field.ground.terrain) return glm::vec4(0.0f);
+    const auto at = [&](int dx, int dz) {
+        return terrain_height(field, {field.origin.x + field.cell_size * float(cell.x + dx),
+                                      field.origin.z + field.cell_size * float(cell.y + dz)});
+    };
+    return {at(0, 0), at(1, 0), at(0, 1), at(1, 1)};
+}
+
 uint64_t for_each_drawn_blade(const GrassField& field, const BladePatch& patch,
                               const std::function<void(const FieldBlade&)>& visit) {
     uint64_t drawn = 0;
@@ -132,6 +164,7 @@ uint64_t for_each_drawn_blade(const GrassField& field, const BladePatch& patch,
                 b.cell = cell;
                 b.blade = i;
                 b.root = cell_point(field, cell, signs, patch.blades[i].root);
+                b.root.y += terrain_height(field, {b.root.x, b.root.z});
                 b.density = shader::grass_root_density(corners, {patch.blades[i].root.x, patch.blades[i].root.z});
                 if (!drawn_at_density(patch.blades[i].threshold, b.density)) continue;
                 ++drawn;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "core/image.hpp"
+#include "scene/population.hpp"
 
 #include "blade_patch.hpp"
 
@@ -45,7 +46,21 @@ struct GrassField {
     bool mirror = true;        // false: every cell shows the patch as it is
     uint32_t mirror_seed = 1;
     DensityMap density;
+    // A terrain under the field (the population's `terrain`), its grid the field's cells
+    // (check_terrain_fits): each blade stands on it, `origin.y` above it (shaders/grass_terrain.h).
+    PopulationGround ground;
 };
+
+// Throws std::invalid_argument, saying what to set, unless the field's terrain (if any) has one
+// grid quad a cell: vertices = cells + 1, size = cells x cell_size, centred on the field.
+void check_terrain_fits(const GrassField& field);
+
+// The terrain's height at a world (x, z) (0 without one): what a blade rooted there is lifted by.
+float terrain_height(const GrassField& field, glm::vec2 world_xz);
+
+// A cell's terrain heights at its corners in world order, (x0, z0), (x1, z0), (x0, z1), (x1, z1);
+// zeros without a terrain.
+glm::vec4 cell_corner_heights(const GrassField& field, glm::ivec2 cell);
 
 // Where a patch point lands in the world in `cell`: mirrored about the patch centre, then
 // scaled and moved to the cell. (A mirrored blade is the same strip seen the other way round:
@@ -63,7 +78,7 @@ glm::vec4 cell_corner_densities(const GrassField& field, glm::ivec2 cell);
 struct FieldBlade {
     glm::ivec2 cell{0};
     uint32_t blade = 0;      // index in the patch
-    glm::vec3 root{0.0f};    // world
+    glm::vec3 root{0.0f};    // world, on the terrain when there is one
     float density = 1.0f;    // at the root: the bilinear blend of the cell's corner densities
 };
 

@@ -3,6 +3,7 @@
 #include "../shaders/blade_alpha.h"
 #include "../shaders/cell_mirroring.h"
 #include "../shaders/grass_density.h"
+#include "../shaders/grass_terrain.h"
 
 #include "report/image_files.hpp"
 #include "scene/scene_limits.hpp"
@@ -31,8 +32,8 @@ public:
     }
     int version() const override { return 1; }
     std::vector<ParamSpec> params() const override { return grass_population_params(); }
-    FamilyPopulation generate(const ParamSet& params) const override {
-        return generate_grass_population(grass_population_spec(params));
+    FamilyPopulation generate(const ParamSet& params, const PopulationGround& ground) const override {
+        return generate_grass_population(grass_population_spec(params, ground));
     }
 };
 
@@ -48,7 +49,7 @@ std::vector<ParamSpec> grass_population_params() {
     s.push_back(ParamSpec::real("cell_size", 1.0, 1e-3, 1e4, "world units a cell, and so the patch, is wide"));
     s.push_back(ParamSpec::real("centre_x", 0.0, -1e5, 1e5, "world x of the field's centre"));
     s.push_back(ParamSpec::real("centre_z", 0.0, -1e5, 1e5, "world z of the field's centre"));
-    s.push_back(ParamSpec::real("ground", 0.0, -1e5, 1e5, "world y of the blades' roots"));
+    s.push_back(ParamSpec::real("ground", 0.0, -1e5, 1e5, "world y of the blades' roots (on a terrain: their height above it)"));
     s.push_back(ParamSpec::boolean("mirror", true, "mirror each cell's patch in x and/or z by a hash of the cell (eq 6.4-6.7)"));
     s.push_back(ParamSpec::integer("mirror_seed", 1, 0, 0xffffffffll, "seed of the cells' mirror signs"));
     s.push_back(ParamSpec::real("density", 1.0, 0.0, 1.0,
@@ -106,7 +107,7 @@ GrassField grass_field_placement(const ParamSet& params) {
     return f;
 }
 
-GrassPopulationSpec grass_population_spec(const ParamSet& params) {
+GrassPopulationSpec grass_population_spec(const ParamSet& params, const PopulationGround& ground) {
     GrassPopulationSpec spec;
     BladePatchParams& p = spec.patch;
     p.blades = uint32_t(params.integer("blades"));
@@ -132,6 +133,8 @@ GrassPopulationSpec grass_population_spec(const ParamSet& params) {
 
     spec.field = grass_field_placement(params);
     GrassField& f = spec.field;
+    f.ground = ground;
+    check_terrain_fits(f);
     const std::string& pattern = params.choice("density_map");
     const float low = float(params.real("density_low")), high = float(params.real("density"));
     if (pattern != "uniform" && low > high)
@@ -171,6 +174,11 @@ FamilyPopulation generate_grass_population(const GrassPopulationSpec& spec) {
                                                 "{:.3g} a prototype may have: fewer blades or subdivisions",
                                                 spec.patch.blades, triangles_per_blade(spec.patch.subdivisions),
                                                 triangles, limits::kMaxPrototypeTriangles));
+    if (spec.field.ground.terrain && cell_count * triangles > limits::kMaxPrototypeTriangles)
+        throw std::invalid_argument(fmt::format("on a terrain the reference stores every cell's blades apart: {:.0f} cells of "
+                                                "{:.3g} triangles are {:.3g}, more than the {:.3g} it may hold; use fewer "
+                                                "cells, blades or subdivisions",
+                                                cell_count, triangles, cell_count * triangles, limits::kMaxPrototypeTriangles));
     const BladePatch patch = generate_blade_patch(spec.patch);
     const GrassField& field = spec.field;
     FamilyPopulation out;
@@ -198,13 +206,14 @@ FamilyPopulation generate_grass_population(const GrassPopulationSpec& spec) {
             m[0] = glm::vec4(size * s.x, 0.0f, 0.0f, 0.0f);
             m[1] = glm::vec4(0.0f, size, 0.0f, 0.0f);
             m[2] = glm::vec4(0.0f, 0.0f, size * s.y, 0.0f);
-            m[3] = glm::vec4(field.origin.x + size * (float(x) + 0.5f - 0.5f * s.x), field.origin.y,
+            const glm::vec4 heights = cell_corner_heights(field, cell);  // world order; zeros on flat ground
+            m[3] = glm::vec4(field.origin.x + size * (float(x) + 0.5f - 0.5f * s.x), field.origin.y + heights.x,
                              field.origin.z + size * (float(z) + 0.5f - 0.5f * s.y), 1.0f);
             PopulationInstance& copy = out.instances[size_t(z) * field.cells.x + x];
             copy.model = m;
-            copy.normal_matrix[0] = glm::vec4(1.0f / (size * s.x), 0.0f, 0.0f, 0.0f);
-            copy.normal_matrix[1] = glm::vec4(0.0f, 1.0f / size, 0.0f, 0.0f);
-            copy.normal_matrix[2] = glm::vec4(0.0f, 0.0f, 1.0f / (size * s.y), 0.0f);
+            copy.normal_matrix[0] = glm::vec4(1.0f / (size * s.x), 0.0f, 0.0f, heights.y - heights.x);
+            copy.normal_matrix[1] = glm::vec4(0.0f, 1.0f / size, 0.0f, heights.z - heights.x);
+            copy.normal_matrix[2] = glm::vec4(0.0f, 0.0f, 1.0f / (size * s.y), heights.w - heights.x);
             copy.data = shader::grass_patch_corner_densities(cell_corner_densities(field, cell), s);
         }
 
@@ -236,6 +245,27 @@ FamilyPopulation generate_grass_population(const GrassPopulationSpec& spec) {
     out.albedo_scale = [shared, interpolate](uint32_t, uint32_t triangle, float u, float v) {
         return interpolate(*shared, triangle, u, v).w;
     };
+    if (field.ground.terrain) {
+        // Each blade lifted by the ground under its root, as grass_blades_vertex.glsl lifts it: in
+        // the prototype's space, where a world unit up is 1 / cell_size.
+        struct Lifts {
+            std::vector<glm::vec2> roots;  // per prototype vertex, patch x and z
+            std::vector<glm::vec3> lifts;  // per copy
+            std::vector<glm::vec2> signs;  // per copy
+            float cell_size;
+        };
+        auto lifts = std::make_shared<Lifts>();
+        for (const PopulationVertexData& d : out.vertex_data) lifts->roots.emplace_back(d.data[1].x, d.data[1].y);
+        for (const PopulationInstance& copy : out.instances) {
+            lifts->lifts.emplace_back(copy.normal_matrix[0].w, copy.normal_matrix[1].w, copy.normal_matrix[2].w);
+            lifts->signs.emplace_back(glm::sign(copy.model[0][0]), glm::sign(copy.model[2][2]));
+        }
+        lifts->cell_size = field.cell_size;
+        out.vertex_offset = [lifts](uint32_t copy, uint32_t vertex) {
+            const float lift = shader::grass_terrain_lift(lifts->lifts[copy], lifts->roots[vertex], lifts->signs[copy]);
+            return glm::vec3(0.0f, lift / lifts->cell_size, 0.0f);
+        };
+    }
     return out;
 }
 

@@ -25,13 +25,15 @@ struct GrassPopulationSpec {
     float taper = 2.0f;  // the outline's taper exponent k (blade_alpha.h)
     float transmission = 0.0f;  // Boulanger eq 4.1's gamma (FamilyPopulation::transmission)
 };
-GrassPopulationSpec grass_population_spec(const ParamSet& params);
+GrassPopulationSpec grass_population_spec(const ParamSet& params, const PopulationGround& ground = {});
 // Its field's cells, size, corner and mirror alone, without the density map (cheap: per frame).
 GrassField grass_field_placement(const ParamSet& params);
 
 // Copy c is cell (c % cells.x, c / cells.x). Its model matrix maps the patch's unit square onto
 // the cell, mirrored about the patch centre by the cell's signs; its data are the cell's corner
-// densities in patch order. Per vertex: data[0] = (u, v, threshold, colour), data[1] =
+// densities in patch order. On a terrain the model lifts the cell to its (x0, z0) corner's height
+// and the normal matrix's w components carry the other corners' (shaders/grass_terrain.h); the
+// reference lifts each blade the same way (FamilyPopulation::vertex_offset). Per vertex: data[0] = (u, v, threshold, colour), data[1] =
 // (root x, root z, taper, 0) in patch coordinates (shaders/grass_population.glsl reads them).
 FamilyPopulation generate_grass_population(const GrassPopulationSpec& spec);
 

@@ -48,6 +48,7 @@ public:
         const float max_distance = float(params.real("max_distance"));
         FrameGraph g;
         g.needs.populations = {grass::kGrassPopulationKind};
+        g.needs.populations_on_terrain = true;  // grass_blades_vertex.glsl lifts each blade (grass_terrain.h)
         g.shader_params.set_block(block);
         g.report["coverage"] = to_coverage ? "alpha-to-coverage" : "alpha-test";
         g.report["samples"] = std::to_string(samples);

@@ -8,6 +8,7 @@
 #include "frame_uniforms.glsl"
 #include "grass_density.h"
 #include "grass_lod_band.glsl"
+#include "grass_terrain.h"
 
 layout(location = 0) in vec3 in_position;
 layout(location = 1) in vec3 in_normal;
@@ -25,7 +26,10 @@ layout(location = 4) flat out float taper;
 
 void main() {
     float density = grass_root_density(corner_densities, blade_root.xy);
-    vec4 world = instance_model * vec4(in_position, 1.0);
+    // On a terrain, the blade stands on the ground under its root (Lemme eq 6.13, grass_terrain.h).
+    vec2 mirror = vec2(sign(instance_model[0][0]), sign(instance_model[2][2]));
+    vec3 lifts = vec3(instance_normal_matrix[0].w, instance_normal_matrix[1].w, instance_normal_matrix[2].w);
+    vec4 world = instance_model * vec4(in_position, 1.0) + vec4(0.0, grass_terrain_lift(lifts, blade_root.xy, mirror), 0.0, 0.0);
     world_position = world.xyz;
     world_normal = mat3(instance_normal_matrix[0].xyz, instance_normal_matrix[1].xyz, instance_normal_matrix[2].xyz) *
                    in_normal;

@@ -45,6 +45,20 @@ Scene field_scene() {
         "cull.toml");
 }
 
+// The same field on steep hills (one grid quad a cell), seen from low down: cells whose first
+// corner lies below the view show blades lifted into it by their other corners.
+Scene hilly_field_scene() {
+    return parse_scene(
+        "[scene]\nname = \"cull-hills\"\nambient = 0.2\n"
+        "[camera]\nposition = [-4.5, 1.0, -4.5]\ntarget = [0, 1.6, 0]\nfov = 25\n"
+        "[[light]]\ntype = \"directional\"\ndirection = [-0.3, -1, -0.2]\ncasts_shadows = false\n"
+        "[[object]]\nname = \"ground\"\nshape = \"heightfield\"\nsize = [8, 8]\nvertices = 9\nperiods = 2\n"
+        "height_scale = 3\nalbedo = [0.6, 0.3, 0.1]\n"
+        "[[population]]\nname = \"field\"\nkind = \"grass\"\nterrain = \"ground\"\nalbedo = [0.1, 0.8, 0.1]\n"
+        "params = { cells_x = 8, cells_z = 8, blades = 60, subdivisions = 2, width_min = 0.04, width_max = 0.06 }\n",
+        "cull-hills.toml");
+}
+
 struct Culled {
     Image image;
     uint32_t instances = 0;  // the indirect draw's instance count, as the cull wrote it
@@ -117,6 +131,16 @@ TEST_CASE("grass.geometry culling: the culled frame is the whole field's, drawn 
     CHECK(expected > 8);
     CHECK(expected < 56);  // the view leaves some of the 64 cells out
     CHECK(culled.instances == uint32_t(expected));
+    CHECK(grass::test::grass_pixels(whole.image) > int(kWidth * kHeight) / 20);
+    CHECK(differing_pixels(whole.image, culled.image) == 0);
+}
+
+TEST_CASE("grass.geometry culling on a terrain: a cell's box rises with its ground, so nothing in view is culled") {
+    const Scene scene = hilly_field_scene();
+    const Culled whole = render(scene, {});
+    const Culled culled = render(scene, {{"culling", std::string("gpu")}});
+    CAPTURE(culled.instances);
+    CHECK(culled.instances < 64);
     CHECK(grass::test::grass_pixels(whole.image) > int(kWidth * kHeight) / 20);
     CHECK(differing_pixels(whole.image, culled.image) == 0);
 }

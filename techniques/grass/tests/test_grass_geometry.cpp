@@ -58,6 +58,20 @@ params = { cells_x = 3, cells_z = 2, blades = 40, subdivisions = 3, width_min = 
 
 Scene lawn_scene(const std::string& params = "density = 0.6") { return parse_scene(lawn(params), "lawn-top.toml"); }
 
+// The lawn on hills: a heightfield one grid quad a cell under it (grass_terrain.h), `ground_keys`
+// shaping it; `on_terrain` false keeps the blades on flat ground (the heightfield still drawn).
+Scene hilly_lawn_scene(const std::string& ground_keys, bool on_terrain = true) {
+    std::string text = lawn("density = 0.6");
+    const auto replace = [&](const std::string& from, const std::string& to) {
+        const size_t at = text.find(from);
+        REQUIRE(at != std::string::npos);
+        text.replace(at, from.size(), to);
+    };
+    replace("shape = \"plane\"\nsize = [8, 8]\n", "shape = \"heightfield\"\nsize = [3, 2]\nvertices = [4, 3]\n" + ground_keys);
+    if (on_terrain) replace("kind = \"grass\"\n", "kind = \"grass\"\nterrain = \"ground\"\n");
+    return parse_scene(text, "lawn-hills.toml");
+}
+
 struct Raster {
     Image color, visibility;
 };
@@ -152,6 +166,29 @@ TEST_CASE("grass.geometry: the blades cover what the reference's primary rays hi
         const Disagreement d = compare(raster, reference_pixels(lawn_scene("density = 0.6, centre_x = 0.05")));
         CAPTURE(d.coverage);
         CHECK(d.coverage > 100);
+    }
+}
+
+TEST_CASE("grass.geometry on a terrain: each blade stands on the ground under its root, as in the reference") {
+    const std::string hills = "height_scale = 0.5\nperiods = 1\nseed = 3\n";
+    const Scene scene = hilly_lawn_scene(hills);
+    const Raster raster = render(scene);
+    const Disagreement same = compare(raster, reference_pixels(scene));
+    CAPTURE(same.compared);
+    CAPTURE(same.grass_pixels);
+    CHECK(same.grass_pixels > 1000);
+    CHECK(same.coverage == 0);
+    CHECK(same.depth == 0);
+
+    SUBCASE("the reference's blades on flat ground") {
+        const Disagreement d = compare(raster, reference_pixels(hilly_lawn_scene(hills, false)));
+        CAPTURE(d.coverage);
+        CHECK(d.coverage > 300);
+    }
+    SUBCASE("the reference on other hills") {
+        const Disagreement d = compare(raster, reference_pixels(hilly_lawn_scene("height_scale = 0.5\nperiods = 1\nseed = 4\n")));
+        CAPTURE(d.coverage);
+        CHECK(d.coverage > 300);
     }
 }
 

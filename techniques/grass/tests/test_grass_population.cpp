@@ -10,6 +10,7 @@
 #include "config/scene_config.hpp"
 #include "reference/embree_scene.hpp"
 #include "scene/geometry.hpp"
+#include "scene/height_field.hpp"
 #include "report/image_files.hpp"
 #include "support/config_error_of.hpp"
 #include "support/temp_folder.hpp"
@@ -79,6 +80,8 @@ Inside inside_blade(uint32_t blade, uint32_t triangles_per_blade) {
     // small share of left1.
     return {blade * triangles_per_blade, 0.45f, 0.05f};
 }
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 }  // namespace
 
@@ -272,6 +275,85 @@ TEST_CASE("grass population: the copies place every blade where field_point does
         CHECK(copy.model[0][0] > 0.0f);
         CHECK(copy.model[2][2] > 0.0f);
     }
+}
+
+TEST_CASE("grass population on a terrain: each blade's root is lifted onto the ground under it, in the field, the "
+          "copies and the reference's offsets alike") {
+    GrassPopulationSpec spec = small_spec();  // 5 x 4 cells of 0.8, corner (-2, -1.6): centred on (0, 0)
+    auto hills = std::make_shared<HeightField>(hills_height_field({4.0f, 3.2f}, {6, 5}, 2, 7, 1.2f));
+    spec.field.ground = {hills, glm::vec3(0.0f, 0.3f, 0.0f), "ground"};
+    const FamilyPopulation population = generate_grass_population(spec);
+    const BladePatch patch = generate_blade_patch(spec.patch);
+    REQUIRE(population.vertex_offset);
+    const auto ground_at = [&](glm::vec2 xz) { return 0.3f + hills->at(xz); };
+    // The field: every drawn root stands origin.y above the terrain.
+    uint64_t roots = 0;
+    for_each_drawn_blade(spec.field, patch, [&](const FieldBlade& b) {
+        ++roots;
+        CHECK(b.root.y == doctest::Approx(0.1f + ground_at({b.root.x, b.root.z})).epsilon(1e-5));
+    });
+    CHECK(roots > 100);
+    // The copies: model (lifted to the cell's first corner) plus the packed lift, at every vertex
+    // of every blade, put the root where the terrain is, whatever the cell's mirror.
+    for (uint32_t c = 0; c < population.instances.size(); ++c) {
+        const PopulationInstance& copy = population.instances[c];
+        for (uint32_t v = 0; v < patch.vertices.size(); v += 5) {
+            const BladeVertex& vertex = patch.vertices[v];
+            const glm::vec3 offset = population.vertex_offset(c, v);
+            CHECK(offset.x == 0.0f);
+            CHECK(offset.z == 0.0f);
+            const glm::vec3 root(copy.model * glm::vec4(vertex.root + offset, 1.0f));
+            CHECK(root.y == doctest::Approx(0.1f + ground_at({root.x, root.z})).epsilon(1e-5));
+            // The whole blade moves with its root.
+            const glm::vec3 moved(copy.model * glm::vec4(vertex.position + offset, 1.0f));
+            const glm::vec3 flat(copy.model * glm::vec4(vertex.position, 1.0f));
+            CHECK(moved.y - flat.y == doctest::Approx(root.y - glm::vec3(copy.model * glm::vec4(vertex.root, 1.0f)).y).epsilon(1e-5));
+        }
+    }
+    // On flat ground: no offsets, nothing packed.
+    const FamilyPopulation flat = generate_grass_population(small_spec());
+    CHECK_FALSE(flat.vertex_offset);
+    for (const PopulationInstance& copy : flat.instances)
+        for (int corner = 0; corner < 3; ++corner) CHECK(copy.normal_matrix[corner].w == 0.0f);
+}
+
+TEST_CASE("grass population on a terrain: the heightfield must be the field's cells, and a terrain key must name one") {
+    const auto scene_with = [](const std::string& ground, const std::string& population_keys, const std::string& params) {
+        return "[scene]\nname = \"t\"\n[[light]]\ntype = \"directional\"\n[[object]]\nname = \"ground\"\n" + ground +
+               "[[object]]\nname = \"ball\"\nshape = \"sphere\"\n[[population]]\nname = \"lawn\"\nkind = \"grass\"\n" +
+               population_keys + "params = { blades = 20, " + params + " }\n";
+    };
+    const std::string fits = "shape = \"heightfield\"\nsize = [3, 2]\nvertices = [4, 3]\n";
+    CHECK(parse_scene(scene_with(fits, "terrain = \"ground\"\n", "cells_x = 3, cells_z = 2"), "t.toml").populations[0].ground.terrain);
+
+    const auto misfit = test::config_error_of([&] {
+        parse_scene(scene_with(fits, "terrain = \"ground\"\n", "cells_x = 4, cells_z = 2"), "t.toml");
+    });
+    REQUIRE(misfit);
+    CHECK(contains(misfit->what(), "give it vertices = [5, 3] (it has [4, 3]), size = [4, 2] (it has [3, 2])"));
+    const auto off_centre = test::config_error_of([&] {
+        parse_scene(scene_with(fits + "translate = [0.5, 0, 0]\n", "terrain = \"ground\"\n", "cells_x = 3, cells_z = 2"),
+                    "t.toml");
+    });
+    REQUIRE(off_centre);
+    CHECK(contains(off_centre->what(), "translate x, z = 0, 0 (it has 0.5, 0)"));
+    const auto rotated = test::config_error_of([&] {
+        parse_scene(scene_with(fits + "rotate = [0, 90, 0]\n", "terrain = \"ground\"\n", "cells_x = 3, cells_z = 2"), "t.toml");
+    });
+    REQUIRE(rotated);
+    CHECK(contains(rotated->what(), "moved by `translate` alone"));
+    const auto no_object = test::config_error_of([&] {
+        parse_scene(scene_with(fits, "terrain = \"hill\"\n", "cells_x = 3, cells_z = 2"), "t.toml");
+    });
+    REQUIRE(no_object);
+    CHECK(no_object->line() == 16);
+    CHECK(contains(no_object->what(), "terrain = \"hill\" names no object"));
+    CHECK(contains(no_object->hint(), "heightfield objects: ground"));
+    const auto sphere = test::config_error_of([&] {
+        parse_scene(scene_with(fits, "terrain = \"ball\"\n", "cells_x = 3, cells_z = 2"), "t.toml");
+    });
+    REQUIRE(sphere);
+    CHECK(contains(sphere->what(), "names a sphere, not a heightfield"));
 }
 
 TEST_CASE("grass population: the reference thins exactly the blades the field draws and cuts their outline") {
