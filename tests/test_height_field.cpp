@@ -46,7 +46,7 @@ HeightField ramp_field() {  // 3 x 2 vertices over 4 x 2, heights chosen so the 
 
 }  // namespace
 
-TEST_CASE("a height field reads the surface its mesh draws, split along the quads' (0,0)-(1,1) diagonal") {
+TEST_CASE("a height field reads the surface its mesh draws, split along the quads' (1,0)-(0,1) diagonal") {
     const HeightField field = hills_height_field({6.0f, 4.0f}, {9, 7}, 2, 5, 1.5f);
     const TriangleMesh mesh = build_height_field_mesh(field);
     CHECK(mesh.vertices.size() == 63);

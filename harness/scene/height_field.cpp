@@ -117,7 +117,7 @@ TriangleMesh build_height_field_mesh(const HeightField& field) {
     for (uint32_t z = 0; z + 1 < n.y; ++z)
         for (uint32_t x = 0; x + 1 < n.x; ++x) {
             const uint32_t v00 = z * n.x + x, v10 = v00 + 1, v01 = v00 + n.x, v11 = v01 + 1;
-            // Counter-clockwise from +y, split along (0, 0)-(1, 1) as shaders/height_field.h reads it.
+            // Counter-clockwise from +y, split along (1, 0)-(0, 1) as shaders/height_field.h reads it.
             for (uint32_t i : {v00, v01, v10, v11, v10, v01}) mesh.indices.push_back(i);
         }
     for (size_t t = 0; t < mesh.indices.size(); t += 3) {

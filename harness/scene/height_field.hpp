@@ -39,7 +39,7 @@ HeightField hills_height_field(glm::vec2 size, glm::uvec2 vertices, uint32_t per
 // or an image under 2 x 2.
 HeightField height_field_from_image(const Image& image, glm::vec2 size, float scale, const std::string& file);
 
-// The ground itself: two triangles a grid quad, split along the (0, 0)-(1, 1) diagonal, with
+// The ground itself: two triangles a grid quad, split along the (1, 0)-(0, 1) diagonal, with
 // smooth normals (the area-weighted sum of the triangles' around each vertex).
 TriangleMesh build_height_field_mesh(const HeightField& field);
 

@@ -1,5 +1,5 @@
 // A height field's surface between four grid vertices, as its mesh triangulates it: the quad's
-// (0, 0)-(1, 1) diagonal splits it into the triangles (v00, v01, v10), where fx + fz <= 1, and
+// (1, 0)-(0, 1) diagonal splits it into the triangles (v00, v01, v10), where fx + fz <= 1, and
 // (v11, v10, v01). Anything standing on the terrain (grass roots, Lemme eq 6.13) reads the
 // height here, so it stands on the very triangles the ground is drawn and ray-traced with,
 // rather than on a bilinear blend that floats above or sinks below them. GLSL and C++
