@@ -12,6 +12,7 @@
 #include "grass_density.h"
 #include "grass_shading.glsl"
 #include "volume_walk.h"
+#include "grass_terrain.h"
 
 layout(set = 0, binding = 1) uniform sampler2DArray slice_albedo;  // NEAREST: thresholds are not blended
 layout(set = 0, binding = 2) uniform sampler2DArray slice_normal;  // NEAREST
@@ -29,6 +30,8 @@ layout(location = 2) flat in vec4 densities;
 layout(location = 3) flat in mat4 model;
 layout(location = 7) flat in vec3 normal_matrix[3];
 layout(location = 10) flat in vec2 band;  // grass_lod_band.glsl
+layout(location = 11) flat in vec3 lifts;   // grass_terrain.h
+layout(location = 12) flat in vec2 stretch; // the cuboid's bottom and top moved by (grass_volume_vertex.glsl)
 layout(location = 0) out vec4 out_color;
 
 void main() {
@@ -41,16 +44,26 @@ void main() {
     float alpha = 0.0;
     vec3 first_blade = vec3(0.0);
     ivec2 crossed = ivec2(0);
+    // The (possibly stretched) cuboid q spans, and the mirror that puts a patch point in world order.
+    vec3 origin = box.origin.xyz + vec3(0.0, stretch.x, 0.0);
+    vec3 extent = box.extent.xyz + vec3(0.0, stretch.y - stretch.x, 0.0);
+    vec2 mirror = vec2(sign(model[0][0]), sign(model[2][2]));
     for (int i = 0; i < 2 * n + 1; ++i) {
         VolumeHit hit = volume_next_hit(walk, e, crossed, float(n));
         if (hit.lambda > 1.0) break;  // the ray leaves the cuboid first
         crossed += hit.axis == 0 ? ivec2(1, 0) : ivec2(0, 1);
         vec3 q = e + hit.lambda * d;  // eq 5.18
         int slice = clamp(hit.slice, 0, n - 1);
+        vec3 p = origin + q * extent;
+        // On a terrain the lookup is shifted down by the ground under the hit (eq 6.16-6.18), and a
+        // hit below the ground or above the patch over it sees nothing. A flat cell reads exactly
+        // q.y, as without a terrain (the texel's clamped edge included).
+        float lift = grass_terrain_lift(lifts, p.xz, mirror) / model[1][1];
+        float height = q.y * (extent.y / box.extent.y) + (stretch.x - lift) / box.extent.y;
+        if (stretch != vec2(0.0) && (height < 0.0 || height > 1.0)) continue;
         // Slices along x are baked looking along x (u = z), those along z looking along z (u = x).
-        vec3 texel = hit.axis == 0 ? vec3(q.z, 1.0 - q.y, float(slice)) : vec3(q.x, 1.0 - q.y, float(n + slice));
+        vec3 texel = hit.axis == 0 ? vec3(q.z, 1.0 - height, float(slice)) : vec3(q.x, 1.0 - height, float(n + slice));
         vec4 albedo = texture(slice_albedo, texel);
-        vec3 p = box.origin.xyz + q * box.extent.xyz;
         if (!grass_blade_in_band(albedo.a, grass_root_density(densities, p.xz), band)) continue;
         // A level-0 texel shows a blade or none: its alpha is 1 (eq 5.19-5.20 keep the general form).
         float hit_alpha = 1.0;

@@ -8,6 +8,7 @@
 #include "frame_uniforms.glsl"
 #include "volume_walk.h"
 #include "grass_lod_band.glsl"
+#include "grass_terrain.h"
 
 layout(set = 0, binding = 3, std140) uniform BoxBlock { VolumeBox box; };
 
@@ -23,12 +24,21 @@ layout(location = 2) flat out vec4 densities;
 layout(location = 3) flat out mat4 model;              // locations 3-6
 layout(location = 7) flat out vec3 normal_matrix[3];  // locations 7-9
 layout(location = 10) flat out vec2 band;             // grass_lod_band.glsl
+layout(location = 11) flat out vec3 lifts;            // grass_terrain.h: the cell's other corners over its first
+layout(location = 12) flat out vec2 stretch;          // the cuboid's bottom and top moved by, patch units
 
 void main() {
-    vec3 p = box.origin.xyz + corner.xyz * box.extent.xyz;
+    // On a terrain (Lemme eq 6.14) the cuboid reaches from the cell's lowest ground to the patch's
+    // height over its highest: the model stands it on the first corner, the lifts give the others.
+    lifts = vec3(instance_normal_matrix[0].w, instance_normal_matrix[1].w, instance_normal_matrix[2].w);
+    stretch = vec2(min(0.0, min(lifts.x, min(lifts.y, lifts.z))), max(0.0, max(lifts.x, max(lifts.y, lifts.z)))) /
+              instance_model[1][1];
+    vec3 origin = box.origin.xyz + vec3(0.0, stretch.x, 0.0);
+    vec3 extent = box.extent.xyz + vec3(0.0, stretch.y - stretch.x, 0.0);
+    vec3 p = origin + corner.xyz * extent;
     vec3 eye = (inverse(instance_model) * vec4(frame.camera_position.xyz, 1.0)).xyz;
     exit_q = corner.xyz;
-    eye_q = (eye - box.origin.xyz) / box.extent.xyz;
+    eye_q = (eye - origin) / extent;
     densities = corner_densities;
     band = grass_representation_band(instance_model);
     model = instance_model;
