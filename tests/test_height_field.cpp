@@ -172,7 +172,7 @@ TEST_CASE("a heightfield object loads from its config, and its mistakes are name
     CHECK(contains(missing->what(), "height map 'maps/none.png' not found"));
     const auto grid = error_in("vertices = 1\n");
     REQUIRE(grid);
-    CHECK(contains(grid->what(), "whole numbers in [2, 4096]"));
+    CHECK(contains(grid->what(), "whole numbers in [2, 2048]"));
     const auto not_for_files = error_in("height_map = \"file\"\nheight_map_file = \"maps/h.exr\"\nperiods = 3\n");
     REQUIRE(not_for_files);
     CHECK(not_for_files->line() == 10);

@@ -352,10 +352,11 @@ std::shared_ptr<const HeightField> read_height_field(TomlReader& reader, Object&
     }
     reader.reject("height_map_file", "height_map = \"hills\"", "height_map = \"file\"");
     glm::vec2 vertices = reader.get_vec2("vertices", glm::vec2(65.0f));
-    if (vertices != glm::floor(vertices) || vertices.x < 2.0f || vertices.y < 2.0f || vertices.x > 4096.0f ||
-        vertices.y > 4096.0f)
-        throw reader.error("vertices", fmt::format("{} must be whole numbers in [2, 4096], got [{}, {}]",
-                                                   reader.describe_key("vertices"), vertices.x, vertices.y),
+    if (vertices != glm::floor(vertices) || vertices.x < 2.0f || vertices.y < 2.0f ||
+        vertices.x > float(limits::kMaxHeightFieldVertices) || vertices.y > float(limits::kMaxHeightFieldVertices))
+        throw reader.error("vertices", fmt::format("{} must be whole numbers in [2, {}], got [{}, {}]",
+                                                   reader.describe_key("vertices"), limits::kMaxHeightFieldVertices,
+                                                   vertices.x, vertices.y),
                            "grid vertices along x and z, e.g. vertices = 65 or [129, 65]");
     const long long periods = reader.get_int("periods", 3);
     if (periods < 1 || periods > 1024)

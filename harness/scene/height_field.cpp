@@ -1,5 +1,6 @@
 #include "scene/height_field.hpp"
 
+#include "scene/scene_limits.hpp"
 #include "shaders/height_field.h"
 
 #include <fmt/format.h>
@@ -86,9 +87,10 @@ HeightField hills_height_field(glm::vec2 size, glm::uvec2 vertices, uint32_t per
 }
 
 HeightField height_field_from_image(const Image& image, glm::vec2 size, float scale, const std::string& file) {
-    if (image.width < 2 || image.height < 2)
-        throw std::invalid_argument(fmt::format("height map {} is {}x{}: it needs at least 2 x 2 pixels, one a grid vertex",
-                                                file, image.width, image.height));
+    if (image.width < 2 || image.height < 2 || image.width > limits::kMaxHeightFieldVertices ||
+        image.height > limits::kMaxHeightFieldVertices)
+        throw std::invalid_argument(fmt::format("height map {} is {}x{}: it needs 2 to {} pixels a side, one a grid vertex",
+                                                file, image.width, image.height, limits::kMaxHeightFieldVertices));
     HeightField field;
     field.vertices = {uint32_t(image.width), uint32_t(image.height)};
     field.size = size;

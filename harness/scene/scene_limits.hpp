@@ -36,6 +36,8 @@ inline constexpr double kMaxRadiance = 1e6;
 // scenes), and its prototype's triangles, which the reference and the GPU store once (about 100
 // bytes each, with the BVH); the copies' triangles together are not limited.
 inline constexpr long long kMaxPopulationCount = 1000000;
+// A heightfield's grid vertices a side: 2048 x 2048 is 8.4 M triangles, drawn and ray-traced flat.
+inline constexpr long long kMaxHeightFieldVertices = 2048;
 inline constexpr double kMaxPrototypeTriangles = 2e7;
 
 }  // namespace canopy::limits
