@@ -6,16 +6,12 @@
 // the cuboid's face or the entry faces drawn (Lemme's) fails a check here.
 #include "support/bake_truth.hpp"
 
-#include "config/scene_config.hpp"
-#include "reference/embree_scene.hpp"
-#include "support/reference_hits.hpp"
 #include "core/registry.hpp"
 #include "render/frame_renderer.hpp"
 #include "scene/geometry.hpp"
 #include "support/test_gpu.hpp"
 
 #include <doctest/doctest.h>
-#include <fmt/format.h>
 
 #include <cmath>
 #include <string>
@@ -127,53 +123,22 @@ TEST_CASE("grass.volume: seen from afar along either slice direction, the volume
 
 TEST_CASE("grass.volume on a terrain: the stretched cuboid and the shifted lookup cover the reference's lifted blades "
           "as well as on flat ground") {
-    // 4 x 4 cells on hills one grid quad a cell (grass_terrain.h), seen obliquely; height_scale 0
-    // is the same scene flat. The slices are an approximation of the blades (and the lookup reads
-    // the ground under the hit, not under each root, eq 6.16), so the check compares the share
-    // of pixels whose coverage differs from the reference's with the flat field's.
-    const auto scene_at = [](double height_scale) {
-        return parse_scene(fmt::format(
-            "[scene]\nname = \"volume-hills\"\nambient = 0.2\n"
-            "[camera]\nposition = [0.0, 3.2, 5.0]\ntarget = [0.0, 0.5, 0.0]\nfov = 45\n"
-            "[[light]]\ntype = \"directional\"\ndirection = [-0.3, -1, -0.2]\ncasts_shadows = false\n"
-            "[[object]]\nname = \"ground\"\nshape = \"heightfield\"\nsize = [4, 4]\nvertices = 5\nperiods = 1\n"
-            "seed = 2\nheight_scale = {}\nalbedo = [0.6, 0.3, 0.1]\n"
-            "[[population]]\nname = \"field\"\nkind = \"grass\"\nterrain = \"ground\"\nalbedo = [0.1, 0.8, 0.1]\n"
-            "params = {{ cells_x = 4, cells_z = 4, blades = 300, subdivisions = 3 }}\n",
-            height_scale), "volume-hills.toml");
-    };
-    // Per 8 x 8 tile, the share of pixels showing grass against the share whose reference ray
-    // hits a blade; the mean difference over the tiles (blades thinner than a pixel make a
-    // pixel-by-pixel comparison mostly noise).
-    constexpr int kTile = 8, kW = 200, kH = 120;
-    const auto differing_share = [&](double height_scale) {
-        const Scene scene = scene_at(height_scale);
-        FrameRenderer renderer = renderer_for(scene, kW, kH, 8);
+    // Seen obliquely; height_scale 0 is the same field flat. The slices approximate the blades
+    // (and the lookup reads the ground under the hit, not under each root, eq 6.16), so the check
+    // compares the per-tile coverage error with the flat field's.
+    const char* camera = "[camera]\nposition = [0.0, 3.2, 5.0]\ntarget = [0.0, 0.5, 0.0]\nfov = 45";
+    const auto error_at = [&](double height_scale) {
+        const Scene scene = grass::test::hills_scene(camera, height_scale);
+        FrameRenderer renderer = renderer_for(scene, 200, 120, 8);
         renderer.render();
-        const Image color = renderer.read_color();
-        const EmbreeScene embree(scene, build_scene_meshes(scene));
-        const auto hits = canopy::test::reference_hits(scene, embree, kW, kH);
-        double total = 0.0;
-        int tiles = 0, blades = 0;
-        for (int ty = 0; ty + kTile <= kH; ty += kTile)
-            for (int tx = 0; tx + kTile <= kW; tx += kTile) {
-                int shown = 0, hit = 0;
-                for (int y = ty; y < ty + kTile; ++y)
-                    for (int x = tx; x < tx + kTile; ++x) {
-                        shown += grass::test::shows_grass(color.at(x, y));
-                        const auto& h = hits[size_t(y) * kW + size_t(x)];
-                        hit += h && h->what.population >= 0;
-                    }
-                total += std::abs(shown - hit) / double(kTile * kTile);
-                blades += hit;
-                ++tiles;
-            }
+        int blades = 0;
+        const double error = grass::test::tile_coverage_error(scene, renderer.read_color(), 8, &blades);
         CAPTURE(height_scale);
         CAPTURE(blades);
         CHECK(blades > 1500);
-        return total / tiles;
+        return error;
     };
-    const double flat = differing_share(0.0), hills = differing_share(1.2);
+    const double flat = error_at(0.0), hills = error_at(1.2);
     CAPTURE(flat);
     CAPTURE(hills);
     CHECK(flat > 0.0);

@@ -7,6 +7,8 @@
 #include "scene/population_kind.hpp"
 #include "support/reference_hits.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -122,6 +124,41 @@ CoverageAgreement compare_with_reference_hits(const Scene& scene, const Image& i
             }
         }
     return a;
+}
+
+double tile_coverage_error(const Scene& scene, const Image& image, int tile, int* blade_pixels) {
+    const EmbreeScene embree(scene, build_scene_meshes(scene));
+    const uint32_t width = uint32_t(image.width), height = uint32_t(image.height);
+    const auto hits = canopy::test::reference_hits(scene, embree, width, height);
+    double total = 0.0;
+    int tiles = 0, blades = 0;
+    for (int ty = 0; ty + tile <= int(height); ty += tile)
+        for (int tx = 0; tx + tile <= int(width); tx += tile) {
+            int shown = 0, hit = 0;
+            for (int y = ty; y < ty + tile; ++y)
+                for (int x = tx; x < tx + tile; ++x) {
+                    shown += shows_grass(image.at(x, y));
+                    const auto& h = hits[size_t(y) * width + size_t(x)];
+                    hit += h && h->what.population >= 0;
+                }
+            total += std::abs(shown - hit) / double(tile * tile);
+            blades += hit;
+            ++tiles;
+        }
+    if (blade_pixels) *blade_pixels = blades;
+    return tiles > 0 ? total / tiles : 0.0;
+}
+
+Scene hills_scene(const std::string& camera, double height_scale) {
+    return parse_scene(fmt::format("[scene]\nname = \"hills\"\nambient = 0.2\n{}\n"
+                                   "[[light]]\ntype = \"directional\"\ndirection = [-0.3, -1, -0.2]\ncasts_shadows = false\n"
+                                   "[[object]]\nname = \"ground\"\nshape = \"heightfield\"\nsize = [4, 4]\nvertices = 5\n"
+                                   "periods = 1\nseed = 2\nheight_scale = {}\nalbedo = [0.6, 0.3, 0.1]\n"
+                                   "[[population]]\nname = \"field\"\nkind = \"grass\"\nterrain = \"ground\"\n"
+                                   "albedo = [0.1, 0.8, 0.1]\n"
+                                   "params = {{ cells_x = 4, cells_z = 4, blades = 300, subdivisions = 3 }}\n",
+                                   camera, height_scale),
+                       "hills.toml");
 }
 
 }  // namespace canopy::grass::test

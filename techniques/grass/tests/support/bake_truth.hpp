@@ -75,4 +75,13 @@ struct CoverageAgreement {
 CoverageAgreement compare_with_reference_hits(const Scene& scene, const Image& image, const Image* visibility = nullptr,
                                               float depth_tolerance = 0.0f);
 
+// Per `tile` x `tile` block of pixels, the share showing grass against the share whose reference
+// ray hits a blade; the mean absolute difference over the blocks (blades thinner than a pixel make
+// a pixel-by-pixel comparison mostly noise). `blade_pixels`: how many reference rays hit a blade.
+double tile_coverage_error(const Scene& scene, const Image& image, int tile = 8, int* blade_pixels = nullptr);
+
+// A 4 x 4-cell field of 300-blade patches standing on hills up to `height_scale` high (one grid
+// quad a cell, grass_terrain.h), seen from `camera`; height_scale 0 is the same field flat.
+Scene hills_scene(const std::string& camera, double height_scale);
+
 }  // namespace canopy::grass::test
