@@ -37,6 +37,8 @@ public:
                                             .macro_cells = uint32_t(params.integer("macro_cells"))};
         FrameGraph g;
         g.needs.populations = {grass::kGrassPopulationKind};
+        // One quad a cell follows a terrain (grass_image_vertex.glsl); macro-cells do not yet.
+        g.needs.populations_on_terrain = settings.macro_cells == 0;
         g.shader_params.set_block(shader::GrassImageParams::from(params));
         if (settings.macro_cells > 0)
             g.report["macro_cells"] = fmt::format("{} x {}", settings.macro_cells, settings.macro_cells);

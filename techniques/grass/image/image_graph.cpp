@@ -34,15 +34,16 @@ struct Names {
 };
 
 // The quad over the bake's frame in x and z at `height` above the ground, its coordinates those
-// of the top-view bake (BakeView::down: u = x, v = z). Tiled, the frame is the cell, and the
-// macro-cells' vertex shader reads x and z as the corner of the macro-cell.
+// of the top-view bake (BakeView::down: u = x, v = z), then the frame's width in x and z (a cell
+// on a terrain reflects its quad across the frame: grass_image_vertex.glsl). Tiled, the frame is
+// the cell, and the macro-cells' vertex shader reads x and z as the corner of the macro-cell.
 std::array<QuadVertex, 6> slice_quad(const Bounds& bounds, float height, bool tiled) {
     const Bounds f = baked_frame(bounds, tiled);
     std::array<QuadVertex, 6> quad;
     for (size_t i = 0; i < 6; ++i) {
         const glm::vec2 c = kQuadCorners[i];
         quad[i] = {glm::vec4(f.min.x + c.x * (f.max.x - f.min.x), height, f.min.z + c.y * (f.max.z - f.min.z), 1.0f),
-                   glm::vec4(c.x, c.y, 0.0f, 0.0f)};
+                   glm::vec4(c.x, c.y, f.max.x - f.min.x, f.max.z - f.min.z)};
     }
     return quad;
 }

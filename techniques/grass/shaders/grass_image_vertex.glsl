@@ -3,9 +3,10 @@
 // (PassContext::draw_over_population). Included after the technique's parameter block.
 #include "frame_uniforms.glsl"
 #include "grass_lod_band.glsl"
+#include "grass_terrain.h"
 
 layout(location = 0) in vec4 quad_position;             // patch space
-layout(location = 1) in vec4 quad_uv;
+layout(location = 1) in vec4 quad_uv;                   // u, v; the frame's width in x and z
 layout(location = 2) in mat4 instance_model;             // locations 2-5
 layout(location = 6) in vec4 instance_normal_matrix[3];  // locations 6-8
 layout(location = 9) in vec4 corner_densities;           // patch order (grass_density.h)
@@ -18,10 +19,24 @@ layout(location = 4) flat out vec3 normal_matrix[3];  // locations 4-6
 layout(location = 7) flat out vec2 band;              // grass_lod_band.glsl
 
 void main() {
-    vec4 world = instance_model * vec4(quad_position.xyz, 1.0);
+    // On a terrain (Lemme L902) the quad's corners are lifted onto the ground under them, and its
+    // two triangles are split along the ground's own diagonal (height_field.h: (1, 0)-(0, 1) in
+    // world order), so the quad runs parallel to the ground's triangles. The buffer's quad splits
+    // along (0, 0)-(1, 1) in patch space, which is the ground's where exactly one axis mirrors;
+    // elsewhere the quad is reflected across its frame in x. A flat cell draws as before.
+    vec2 mirror = vec2(sign(instance_model[0][0]), sign(instance_model[2][2]));
+    vec3 lifts = vec3(instance_normal_matrix[0].w, instance_normal_matrix[1].w, instance_normal_matrix[2].w);
+    vec4 position = quad_position;
+    vec2 corner = quad_uv.xy;
+    if (lifts != vec3(0.0) && mirror.x * mirror.y > 0.0) {
+        position.x += (1.0 - 2.0 * corner.x) * quad_uv.z;
+        corner.x = 1.0 - corner.x;
+    }
+    vec4 world = instance_model * vec4(position.xyz, 1.0) +
+                 vec4(0.0, grass_terrain_lift(lifts, position.xz, mirror), 0.0, 0.0);
     world_position = world.xyz;
-    uv = quad_uv.xy;
-    patch_xz = quad_position.xz;
+    uv = corner;
+    patch_xz = position.xz;
     densities = corner_densities;
     band = grass_representation_band(instance_model);
     for (int c = 0; c < 3; ++c) normal_matrix[c] = instance_normal_matrix[c].xyz;
