@@ -341,7 +341,12 @@ int run(const RunCommand& command, const ReferenceOptions& reference_options) {
     options.images = command.images;
     options.reference_cache_dir = cache_dir(reference_options);
     options.ballast = ballast_from_environment();  // TEST-ONLY (run/test_ballast.hpp)
-    const RunIdentity identity = make_run_identity(experiment, options, collect_environment(gpu, experiment.config_hash));
+    const Environment environment = collect_environment(gpu, experiment.config_hash);
+    if (!environment.binary_older_than.empty())
+        fmt::print(stderr, "canopy: warning: this canopy binary is older than {} (changed after it was linked): rebuild "
+                           "(scripts/build) before trusting the numbers; results.json records it\n",
+                   environment.binary_older_than);
+    const RunIdentity identity = make_run_identity(experiment, options, environment);
     const OutputFolderPlan folder = plan_output_folder(options.out_dir, identity, command.force, command.resume);
     const OutputFolderLock lock(options.out_dir);  // one canopy process per folder
     if (folder.replace) {

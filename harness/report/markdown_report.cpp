@@ -49,6 +49,10 @@ std::string markdown_report(const RunRecord& run) {
     out += fmt::format("- heap while measuring: {}\n", e.heap);
     out += fmt::format("- canopy {} ({} build), commit {}{}, config hash {}\n", e.canopy_version, e.build_type,
                        e.git_commit, e.git_dirty ? " (with uncommitted changes)" : "", e.config_hash);
+    if (!e.binary_older_than.empty())
+        out += fmt::format("- **the canopy binary is older than {}**: these numbers may come from other code than the "
+                           "commit says\n",
+                           e.binary_older_than);
     std::string resumed;
     for (const std::string& at : run.resumed_at) resumed += (resumed.empty() ? ", resumed " : " and ") + at;
     out += fmt::format("- per case {} warm-up frames, then {} rounds of {} frame{} (each group's cases interleaved "

@@ -1,5 +1,7 @@
 #include "run/environment.hpp"
 
+#include "run/binary_freshness.hpp"
+
 #include "run/heap_settings.hpp"
 
 #include <fmt/chrono.h>
@@ -150,6 +152,8 @@ Environment collect_environment(const GpuContext& gpu, const std::string& config
         e.git_dirty = !command_output(git_command() +
                                       "status --porcelain --untracked-files=no -- . ':(exclude)results' 2>/dev/null")
                            .empty();
+    // A bundle's copy of the checkout has fresh file times and the bundle names its own commit.
+    if (!built_from_recorded_commit()) e.binary_older_than = source_newer_than_this_binary();
     char host[256] = {};
     gethostname(host, sizeof host - 1);
     e.hostname = host;
@@ -187,6 +191,7 @@ void to_json(nlohmann::json& j, const Environment& e) {
          {"canopy_version", e.canopy_version},
          {"commit", e.git_commit},
          {"commit_dirty", e.git_dirty},
+         {"binary_older_than", e.binary_older_than},
          {"hostname", e.hostname},
          {"config_hash", e.config_hash}};
 }
@@ -213,6 +218,7 @@ void from_json(const nlohmann::json& j, Environment& e) {
     read("canopy_version", e.canopy_version);
     read("commit", e.git_commit);
     read("commit_dirty", e.git_dirty);
+    read("binary_older_than", e.binary_older_than);
     read("hostname", e.hostname);
     read("config_hash", e.config_hash);
     if (j.contains("cpu_caches"))

@@ -36,6 +36,9 @@ struct Environment {
     std::string canopy_version;
     std::string git_commit;        // "unknown" outside a git checkout
     bool git_dirty = false;        // uncommitted changes in the source tree
+    // A source file changed after this binary was linked (run/binary_freshness.hpp), or "": the
+    // numbers then come from other code than `git_commit` says.
+    std::string binary_older_than;
     std::string hostname;
     std::string config_hash;
 };
