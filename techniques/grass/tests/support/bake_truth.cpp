@@ -161,4 +161,12 @@ Scene hills_scene(const std::string& camera, double height_scale) {
                        "hills.toml");
 }
 
+FlatAndHills flat_and_hills_coverage_error(const std::string& camera, const std::function<Image(const Scene&)>& render) {
+    FlatAndHills out;
+    const Scene flat = hills_scene(camera, 0.0), hills = hills_scene(camera, 1.2);
+    out.flat = tile_coverage_error(flat, render(flat), 8, &out.flat_blades);
+    out.hills = tile_coverage_error(hills, render(hills), 8, &out.hills_blades);
+    return out;
+}
+
 }  // namespace canopy::grass::test

@@ -5,6 +5,8 @@
 // again, apart from the techniques' bake cameras, so a wrong camera shows.
 #pragma once
 
+#include <functional>
+
 #include "core/image.hpp"
 #include "scene/geometry.hpp"
 #include "scene/scene.hpp"
@@ -83,5 +85,13 @@ double tile_coverage_error(const Scene& scene, const Image& image, int tile = 8,
 // A 4 x 4-cell field of 300-blade patches standing on hills up to `height_scale` high (one grid
 // quad a cell, grass_terrain.h), seen from `camera`; height_scale 0 is the same field flat.
 Scene hills_scene(const std::string& camera, double height_scale);
+
+// tile_coverage_error of a representation over hills_scene(camera, 0) (flat) and (camera, 1.2)
+// (hills), `render` drawing each scene; with the blade pixels the reference found in each.
+struct FlatAndHills {
+    double flat = 0.0, hills = 0.0;
+    int flat_blades = 0, hills_blades = 0;
+};
+FlatAndHills flat_and_hills_coverage_error(const std::string& camera, const std::function<Image(const Scene&)>& render);
 
 }  // namespace canopy::grass::test
