@@ -352,3 +352,37 @@ offset = 0.015
     CHECK(error_of("relation = \"about\"\nfactor = 2\n").find("go with less or greater") != std::string::npos);
     CHECK(error_of("factor = 0\n").find("must be positive") != std::string::npos);
 }
+
+TEST_CASE("paper.json holds paper.md's numbers as data: ratios with intervals, times, errors, verdicts") {
+    const Experiment e = load_experiment(write_experiment("data.toml", kPaper), TechniqueRegistry::instance());
+    RunRecord run;
+    run.experiment = "T1-run";
+    run.cases = {fake_case("shadow.hard", 0, constant(10.0), 0.06), fake_case("shadow.pcf", 3, constant(12.0), 0.04)};
+    const nlohmann::json data = paper_data(*e.paper, run);
+    CHECK(data["id"] == "T1");
+    CHECK(data["columns"] == nlohmann::json::array({"96x64"}));
+    REQUIRE(data["rows"].size() == 3);
+    const nlohmann::json& pcf3 = data["rows"][1];
+    CHECK(pcf3["label"] == "PCF 3");
+    CHECK(pcf3["params"]["kernel"] == "3");
+    CHECK(pcf3["paper_values"][0].get<double>() == 200);
+    CHECK(pcf3["paper_ratio"][0].get<double>() == doctest::Approx(2.0));  // 400 fps against 200: twice the time
+    CHECK(pcf3["canopy_ratio"][0]["median"].get<double>() == doctest::Approx(1.2));
+    CHECK(pcf3["canopy_ratio"][0]["low"].get<double>() == doctest::Approx(1.2));
+    CHECK(pcf3["canopy_ms"][0]["median"].get<double>() == doctest::Approx(12.0));
+    CHECK(pcf3["case_ids"][0] == "shadow.pcf_3");
+    CHECK(pcf3["errors"]["penumbra_rmse"][0].get<double>() == doctest::Approx(0.04));
+    // PCF 5 has no case: nulls, not zeros.
+    const nlohmann::json& pcf5 = data["rows"][2];
+    CHECK(pcf5["canopy_ratio"][0].is_null());
+    CHECK(pcf5["canopy_ms"][0].is_null());
+    CHECK(pcf5["errors"]["penumbra_rmse"][0].is_null());
+    // The claims, as judge_claims (and paper.md) has them.
+    const std::vector<ClaimVerdict> verdicts = judge_claims(*e.paper, run);
+    REQUIRE(data["claims"].size() == verdicts.size());
+    for (size_t i = 0; i < verdicts.size(); ++i) {
+        CHECK(data["claims"][i]["outcome"] == verdicts[i].outcome);
+        CHECK(data["claims"][i]["text"] == verdicts[i].text);
+    }
+    CHECK(data["claims"][1]["outcome"] == "does not hold");  // 1.2 is outside 10 % of hard
+}

@@ -327,14 +327,14 @@ TEST_CASE("replacing a run removes canopy's files only; a killed run's temporary
     const test::TempFolder folder;
     const fs::path dir = folder.path() / "replace";
     fs::create_directories(dir / "images");
-    for (const char* name : {"results.json", "results.csv", "results.md", "paper.md", "notes.txt", "images/a.exr",
+    for (const char* name : {"results.json", "results.csv", "results.md", "paper.md", "paper.json", "pareto.md", "report.html", "notes.txt", "images/a.exr",
                              "images/a.error.png", "images/.a.tmp123.png", ".results.tmp9.json", "images/keep.txt"})
         std::ofstream(dir / name) << "x";
     remove_temporary_files(dir);
     CHECK_FALSE(fs::exists(dir / "images/.a.tmp123.png"));
     CHECK_FALSE(fs::exists(dir / ".results.tmp9.json"));
     CHECK(fs::exists(dir / "results.json"));
-    CHECK(remove_run_outputs(dir) == 6);
+    CHECK(remove_run_outputs(dir) == 9);
     CHECK(fs::exists(dir / "notes.txt"));
     CHECK(fs::exists(dir / "images/keep.txt"));
     CHECK_FALSE(fs::exists(dir / "images/a.exr"));

@@ -30,6 +30,8 @@
 #include "run/heap_settings.hpp"
 #include "run/output_folder.hpp"
 #include "report/gbench_report.hpp"
+#include "report/html_report.hpp"
+#include "metrics/metric_registry.hpp"
 #include "run/run_identity.hpp"
 
 #include <CLI/CLI.hpp>
@@ -312,10 +314,71 @@ int export_gbench(const std::vector<std::string>& runs, bool force) {
     return kExitOk;
 }
 
+// paper.json of recorded paper runs, from their results.json and the experiment config they name
+// (which must still hash to what the run recorded).
+int export_paper(const std::vector<std::string>& runs, bool force) {
+    for (const std::string& where : runs) {
+        const RunRecord run = read_run(where);
+        const fs::path dir = fs::is_directory(where) ? fs::path(where) : fs::path(where).parent_path();
+        if (is_committed_results_folder(dir) && !force)
+            throw ConfigError(dir, 0, "this folder holds committed results; canopy does not write there unless told to",
+                              "add --force to write its paper.json (then review `git diff`)");
+        fs::path config = run.config_file;
+        if (config.is_relative()) config = source_checkout() / config;
+        const Experiment experiment = load_experiment(config, TechniqueRegistry::instance());
+        if (!experiment.paper)
+            throw ConfigError(config, 0, "this experiment has no [paper] table", "export-paper is for paper experiments");
+        if (experiment.config_hash != run.environment.config_hash)
+            throw ConfigError(config, 0,
+                              fmt::format("the config hashes to {}, the run recorded {}: it changed since the run",
+                                          experiment.config_hash, run.environment.config_hash),
+                              "rerun the experiment (scripts/reproduce --only ID), or check out the run's commit");
+        write_paper_data(dir / "paper.json", *experiment.paper, run);
+        fmt::print("{}\n", (dir / "paper.json").string());
+    }
+    return kExitOk;
+}
+
+struct ReportCommand {
+    std::string run, out;
+    std::vector<std::string> pareto;
+    bool link_images = false, force = false;
+};
+
+// The run folder's HTML report; its path.
+fs::path write_report(const ReportCommand& command) {
+    const fs::path dir = fs::is_directory(command.run) ? fs::path(command.run) : fs::path(command.run).parent_path();
+    const fs::path out = command.out.empty() ? dir / "report.html" : fs::path(command.out);
+    if (!fs::exists(dir / "results.json"))
+        throw ConfigError(dir, 0, "no results.json here", "give a run folder that `canopy run` wrote (or its results.json)");
+    if (is_committed_results_folder(out.parent_path().empty() ? fs::path(".") : out.parent_path()) && !command.force)
+        throw ConfigError(out, 0, "this folder holds committed results; canopy does not write there unless told to",
+                          "write the page elsewhere (--out /tmp/report.html), or add --force");
+    HtmlReportOptions options;
+    options.embed_images = !command.link_images;
+    options.pareto_metrics = command.pareto;
+    for (const std::string& metric : command.pareto)
+        if (!find_metric(metric))
+            throw ConfigError(fs::path(), 0, fmt::format("--pareto {}: no such error metric", metric),
+                              "give a results.json name from `canopy metrics`, e.g. --pareto flip_mean --pareto rmse");
+    if (command.link_images && fs::absolute(out).parent_path() != fs::absolute(dir))
+        throw ConfigError(out, 0, "--link-images links the images relative to the run folder, so the page must be in it",
+                          "drop --out, or drop --link-images to embed the images");
+    write_html_report(dir, out, options);
+    return out;
+}
+
+int report(const ReportCommand& command) {
+    const fs::path out = write_report(command);
+    fmt::print("{}\n  open it in a browser (file://{}); nothing else is needed{}\n", out.string(), fs::absolute(out).string(),
+               command.link_images ? " but the run folder's images/" : "");
+    return kExitOk;
+}
+
 struct RunCommand {
     fs::path config;
     std::string out, device;
-    bool quick = false, progress = true, with_reference = true, resume = false, force = false;
+    bool quick = false, progress = true, with_reference = true, resume = false, force = false, report = false;
     ImageOutput images = ImageOutput::all;
 };
 
@@ -368,11 +431,19 @@ int run(const RunCommand& command, const ReferenceOptions& reference_options) {
     for (const std::string& line : timing_check_warnings(record))
         fmt::print(stderr, "canopy: timing cross-check failed (results.md, \"Timing cross-check\"): {}\n", line);
     fmt::print("results: {}\n", fs::absolute(options.out_dir).string());
-    const char* images = options.images == ImageOutput::all   ? "; images in images/ (EXR linear, PNG sRGB)"
-                         : options.images == ImageOutput::png ? "; images in images/ (PNG sRGB)"
+    const char* images = options.images == ImageOutput::all   ? "  images in images/ (EXR linear, PNG sRGB)\n"
+                         : options.images == ImageOutput::png ? "  images in images/ (PNG sRGB)\n"
                                                               : "";
-    fmt::print("  results.json, results.csv, results.md (every column), results.gbench.json{}{}\n",
-               experiment.paper ? ", paper.md" : "", images);
+    fmt::print("  results.json, results.csv, results.md (every column), results.gbench.json{}\n{}",
+               experiment.paper ? ", paper.md, paper.json" : "", images);
+    if (fs::exists(options.out_dir / "pareto.md"))
+        fmt::print("  pareto.md: the Pareto fronts of time against error (`canopy report` draws them)\n");
+    if (command.report && record.status == "complete") {
+        ReportCommand report_command;
+        report_command.run = options.out_dir.string();
+        report_command.force = command.force;
+        fmt::print("  report.html (canopy report): {}\n", write_report(report_command).string());
+    }
     if (experiment.paper) {
         fmt::print("\n{} ({}): claims\n", experiment.paper->id, experiment.paper->source);
         for (const ClaimVerdict& v : judge_claims(*experiment.paper, record))
@@ -413,6 +484,7 @@ int main(int argc, char** argv) {
                "(finished groups of cases are kept; the same command resumes). Set CANOPY_VALIDATION=1 for Vulkan validation layers.");
 
     std::string config_path, out_dir, device, scene_path;
+    bool report_after_run = false;
     bool quick = false, no_progress = false, no_reference = false, resume = false, force = false;
     std::string images = "all";
     ReferenceOptions reference_options;
@@ -446,6 +518,7 @@ int main(int argc, char** argv) {
     run_cmd->add_flag("--force", force,
                       "write into a folder that holds another run (its canopy files are removed first) or into "
                       "committed results (results/paper/, results/baselines/)");
+    run_cmd->add_flag("--report", report_after_run, "write report.html at the end (as `canopy report` does)");
     add_reference_options(run_cmd, false);
     run_cmd->footer("Timing: the cases of one scene at one resolution (a group) are measured together, round by round;\n"
                     "each sample (frames_per_sample frames) sits between two samples of the group's first case (the\n"
@@ -575,6 +648,33 @@ int main(int argc, char** argv) {
     export_cmd->add_option("runs", export_runs, "run folders or their results.json")->required();
     export_cmd->add_flag("--force", export_force, "also into committed results (results/paper/, results/baselines/)");
 
+    ReportCommand report_command;
+    CLI::App* report_cmd = app.add_subcommand(
+        "report", "Write a run as one HTML page: environment, sortable tables, Pareto fronts, the paper comparison, "
+                  "and every case's image, reference, error and FLIP maps side by side (zoomed together).");
+    report_cmd->add_option("run", report_command.run, "a run folder or its results.json")->required();
+    report_cmd->add_option("--out", report_command.out, "the page (default RUN/report.html)");
+    report_cmd->add_option("--pareto", report_command.pareto,
+                           "an error axis of the Pareto fronts (a results.json name from `canopy metrics`; repeat for "
+                           "more); default: the axes the techniques' families declare");
+    report_cmd->add_flag("--link-images", report_command.link_images,
+                         "link the run's PNGs instead of embedding them (a smaller page that must stay in the run folder)");
+    report_cmd->add_flag("--force", report_command.force, "also into committed results (results/paper/, results/baselines/)");
+    report_cmd->footer(
+        "The page is self-contained (images embedded as data: URIs, no network, no external script): open it in any\n"
+        "browser. Pareto fronts: per scene and resolution, on the error axes the techniques' families declare\n"
+        "(shadows: visibility RMSE and penumbra RMSE; grass: FLIP, RMSE, coverage tile MAE); a configuration is\n"
+        "dominated only by one that is neither significantly worse in error nor significantly slower, and is\n"
+        "significantly better in one of the two (pareto.md beside results.md has the same tables).");
+
+    std::vector<std::string> paper_runs;
+    bool paper_force = false;
+    CLI::App* export_paper_cmd = app.add_subcommand(
+        "export-paper", "Write paper.json (paper.md's numbers as data, for plots) of recorded paper runs from their "
+                        "results.json and the experiment config, which must be unchanged since the run.");
+    export_paper_cmd->add_option("runs", paper_runs, "run folders or their results.json")->required();
+    export_paper_cmd->add_flag("--force", paper_force, "also into committed results (results/paper/)");
+
     CLI::App* list_cmd = app.add_subcommand("list", "List every technique with its parameters (type, range, default), then the population kinds technique families define for scenes.");
     std::string graph_technique;
     CLI::App* graph_cmd = app.add_subcommand(
@@ -617,12 +717,15 @@ int main(int argc, char** argv) {
             command.with_reference = !no_reference;
             command.resume = resume;
             command.force = force;
+            command.report = report_after_run;
             command.images = images == "none" ? ImageOutput::none : images == "png" ? ImageOutput::png : ImageOutput::all;
             return run(command, reference_options);
         }
         if (*reference_cmd) return reference(scene_path, out_dir, reference_options);
         if (*compare_cmd) return compare(compare_command);
+        if (*report_cmd) return report(report_command);
         if (*export_cmd) return export_gbench(export_runs, export_force);
+        if (*export_paper_cmd) return export_paper(paper_runs, paper_force);
         if (*bench_stability_cmd) return bench_stability(stability);
         if (*bench_reference_cmd)
             return bench_reference(scene_path.empty() ? find_default_bench_scene(current_executable()) : fs::path(scene_path),

@@ -8,6 +8,8 @@ namespace canopy {
 
 std::optional<ParamConflict> Technique::conflict(const ParamSet&) const { return std::nullopt; }
 
+std::vector<std::string> Technique::pareto_errors() const { return {"flip_mean"}; }
+
 ParamSet resolve_params(const Technique& technique, const std::vector<ParamSpec>& specs,
                         const std::map<std::string, ParamValue>& given, const std::map<std::string, int>& given_lines,
                         const SourceLocation& where) {

@@ -39,6 +39,10 @@ public:
     // Which error columns mean something for this technique: its family's declaration
     // (core/error_columns.hpp); reports show the others as "n/a".
     virtual ErrorColumns error_columns() const = 0;
+    // The error metrics (results.json names, `canopy metrics`) its family's Pareto fronts are drawn
+    // on by default (report/pareto.hpp): the errors that measure what the family changes. Every one
+    // must belong to a group error_columns() declares. Default: FLIP, which every technique has.
+    virtual std::vector<std::string> pareto_errors() const;
     // A refused combination of `params`, or nullopt. Checked by resolve_params when a config's
     // cases are expanded, before anything runs or is written.
     virtual std::optional<ParamConflict> conflict(const ParamSet& params) const;

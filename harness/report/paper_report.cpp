@@ -352,4 +352,76 @@ void write_paper_report(const std::filesystem::path& path, const PaperComparison
     write_text_atomically(path, paper_report(paper, run));
 }
 
+namespace {
+
+nlohmann::json number_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+}  // namespace
+
+nlohmann::json paper_data(const PaperComparison& paper, const RunRecord& run) {
+    using nlohmann::json;
+    json data{{"id", paper.id},         {"title", paper.title},     {"source", paper.source},
+              {"unit", paper.unit},     {"column_key", paper.column_key}, {"columns", paper.columns},
+              {"baseline", paper.baseline}, {"experiment", run.experiment}, {"device", run.environment.device.name},
+              {"quick", run.quick},     {"rounds", run.rounds}};
+    const PaperRow* base = paper.baseline.empty() ? nullptr : row_named(paper, paper.baseline);
+    json rows = json::array();
+    for (const PaperRow& row : paper.rows) {
+        json r{{"label", row.label}, {"technique", row.technique}, {"pass", row.pass}};
+        json params = json::object();
+        for (const auto& [name, value] : row.params) params[name] = to_string(value);
+        r["params"] = params;
+        json values = json::array(), paper_ratio = json::array(), ratio = json::array(), ms = json::array(),
+             ids = json::array();
+        json errors = json::object();
+        for (size_t col = 0; col < paper.columns.size(); ++col) {
+            values.push_back(row.values.empty() ? json(nullptr) : number_or_null(row.values[col]));
+            paper_ratio.push_back(base ? number_or_null(paper_time(paper, row, col) / paper_time(paper, *base, col)) : json(nullptr));
+            const CaseResult* mine = find_case(paper, run, row, col);
+            const CaseResult* mine_base = base ? find_case(paper, run, *base, col) : nullptr;
+            json canopy_ratio = nullptr;
+            if (mine && mine_base) {
+                const Estimate e = row_ratio(row, *mine, *base, *mine_base).estimate;
+                if (std::isfinite(e.value))
+                    canopy_ratio = json{{"median", e.value}, {"low", number_or_null(e.ci.low)}, {"high", number_or_null(e.ci.high)}};
+            }
+            ratio.push_back(canopy_ratio);
+            const TimingSeries* series = mine ? row_series(row, *mine) : nullptr;
+            ms.push_back(series ? json{{"median", series->stats.median}, {"mad", series->stats.mad}} : json(nullptr));
+            ids.push_back(mine ? json(mine->id) : json(nullptr));
+            for (const MetricInfo& metric : registered_metrics()) {
+                json& column_values = errors[std::string(metric.name)];
+                if (column_values.is_null()) column_values = json::array();
+                const bool frame_row = row.pass.empty();
+                column_values.push_back(mine && frame_row && mine->image_error
+                                            ? number_or_null(metric.meaningful_value(*mine->image_error))
+                                            : json(nullptr));
+            }
+        }
+        r["paper_values"] = values;
+        r["paper_ratio"] = paper_ratio;
+        r["canopy_ratio"] = ratio;
+        r["canopy_ms"] = ms;
+        r["case_ids"] = ids;
+        r["errors"] = errors;
+        rows.push_back(r);
+    }
+    data["rows"] = rows;
+    json claims = json::array();
+    const std::vector<ClaimVerdict> verdicts = judge_claims(paper, run);
+    for (size_t i = 0; i < verdicts.size(); ++i)
+        claims.push_back(json{{"text", verdicts[i].text},
+                              {"outcome", verdicts[i].outcome},
+                              {"because", verdicts[i].because},
+                              {"metric", paper.claims[i].metric},
+                              {"left", paper.claims[i].left},
+                              {"right", paper.claims[i].right}});
+    data["claims"] = claims;
+    return data;
+}
+
+void write_paper_data(const std::filesystem::path& path, const PaperComparison& paper, const RunRecord& run) {
+    write_text_atomically(path, paper_data(paper, run).dump(1) + "\n");
+}
+
 }  // namespace canopy

@@ -6,6 +6,8 @@
 #include "config/paper_comparison.hpp"
 #include "run/case_result.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -32,5 +34,12 @@ struct ClaimVerdict {
 std::vector<ClaimVerdict> judge_claims(const PaperComparison& paper, const RunRecord& run);
 std::string paper_report(const PaperComparison& paper, const RunRecord& run);
 void write_paper_report(const std::filesystem::path& path, const PaperComparison& paper, const RunRecord& run);
+
+// paper.json beside paper.md: the same numbers as data, for plots (scripts/plot-paper) — per row
+// and column the paper's value and time ratio, canopy's time ratio with its interval, its median
+// time, the case id and every registered error metric (null where not measured); the claims'
+// verdicts.
+nlohmann::json paper_data(const PaperComparison& paper, const RunRecord& run);
+void write_paper_data(const std::filesystem::path& path, const PaperComparison& paper, const RunRecord& run);
 
 }  // namespace canopy

@@ -6,6 +6,7 @@
 
 #include "config/experiment.hpp"
 #include "core/registry.hpp"
+#include "run/case_result.hpp"
 
 #include <map>
 #include <set>
@@ -17,12 +18,19 @@ namespace canopy {
 class CaseLabels {
 public:
     CaseLabels(const std::vector<Case>& cases, const TechniqueRegistry& registry);
+    // The cases of a recorded run (a results.json read back: report/json_record_reader.hpp).
+    CaseLabels(const std::vector<CaseResult>& cases, const TechniqueRegistry& registry);
 
-    // "kernel=3 resolution=256" in the technique's declaration order; "-" when nothing is shown.
+    // "kernel=3 resolution=256" in the order of `c`'s values; "-" when nothing is shown.
     std::string parameters(const Case& c) const;
+    std::string parameters(const CaseResult& c) const;
     bool swept(const std::string& technique, const std::string& parameter) const;
 
 private:
+    using Values = std::vector<std::pair<std::string, ParamValue>>;
+    void add(const std::string& technique, const Values& values);
+    std::string parameters(const std::string& technique, const Values& values) const;
+
     const TechniqueRegistry& registry_;
     std::map<std::string, std::map<std::string, std::set<std::string>>> values_;  // technique -> parameter -> values
 };

@@ -12,6 +12,7 @@
 #include "report/json_report.hpp"
 #include "report/markdown_report.hpp"
 #include "report/paper_report.hpp"
+#include "report/pareto_report.hpp"
 #include "run/interrupt.hpp"
 #include "run/case_labels.hpp"
 #include "run/output_folder.hpp"
@@ -64,7 +65,11 @@ void write_reports(const std::filesystem::path& dir, const RunRecord& run, const
     write_csv_report(dir / "results.csv", run);
     write_markdown_report(dir / "results.md", run);
     write_gbench_report(dir / "results.gbench.json", run);
-    if (experiment.paper) write_paper_report(dir / "paper.md", *experiment.paper, run);
+    if (experiment.paper) {
+        write_paper_report(dir / "paper.md", *experiment.paper, run);
+        write_paper_data(dir / "paper.json", *experiment.paper, run);
+    }
+    write_pareto_report(dir / "pareto.md", run);
 }
 
 }  // namespace

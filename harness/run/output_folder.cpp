@@ -20,7 +20,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr std::array kReportFiles = {"results.json", "results.csv", "results.md", "paper.md"};
+constexpr std::array kReportFiles = {"results.json", "results.csv", "results.md", "paper.md", "paper.json", "pareto.md", "report.html"};
 
 bool is_empty_folder(const fs::path& dir) { return fs::is_directory(dir) && fs::directory_iterator(dir) == fs::directory_iterator(); }
 

@@ -19,6 +19,7 @@ claims = tomllib.load(open(config, "rb")).get("paper", {}).get("claim", [])
 out.mkdir(parents=True, exist_ok=True)
 (out / "results.json").write_text("{}")
 (out / "paper.md").write_text("# stub\n\n## Claims\n\n" + "".join(f"- **holds** — {c['text']} (stub)\n" for c in claims))
+(out / "paper.json").write_text('{"id": "stub", "title": "", "columns": [], "baseline": "", "column_key": "scene", "rows": [], "claims": []}')
 PY
 chmod +x "$work/canopy"
 summary=$(python3 "$script" --only G-T7.1 L-T7.1 --out "$work/runs" --canopy "$work/canopy")
@@ -29,6 +30,9 @@ grep -q '^\[2/2\] L-T7.1 ' <<<"$summary"
 [ "$(grep -c '^| L-T7.1 | ' <<<"$summary")" -eq 3 ]
 grep -q '^| G-T7.1 | the power CDF removes light leaking better than VSM (ch. 7.4) | [a-z ]* | holds | ' <<<"$summary"
 grep -q '^now: 7 holds; ' <<<"$summary"
+if /usr/bin/python3 -c "import matplotlib" 2>/dev/null; then
+  grep -q '^plots: 2 folders' <<<"$summary"   # scripts/plot-paper ran over both runs' paper.json
+fi
 grep -q 'G-T7.1 --images png$' "$work/canopy.log"      # a new folder: no --resume
 python3 "$script" --only G-T7.1 --out "$work/runs" --canopy "$work/canopy" >/dev/null
 tail -1 "$work/canopy.log" | grep -q -- '--images png --resume$'   # a folder holding a run: resumed

@@ -60,6 +60,7 @@ public:
     std::string paper() const override { return "the classic baseline of Lemme 2012 ch. 2 and Boulanger 2008 §2"; }
     std::vector<ParamSpec> params() const override { return shader::GrassBillboardParams::specs(); }
     ErrorColumns error_columns() const override { return grass::kGrassErrorColumns; }
+    std::vector<std::string> pareto_errors() const override { return grass::pareto_errors(); }
 
     FrameGraph graph(const ParamSet& params) const override {
         const uint32_t resolution = uint32_t(params.integer("resolution"));

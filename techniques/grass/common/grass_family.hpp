@@ -8,10 +8,17 @@
 #include "core/error_columns.hpp"
 
 #include <array>
+#include <string>
+#include <vector>
 
 namespace canopy::grass {
 
 inline constexpr ErrorColumns kGrassErrorColumns{.coverage = true};
+
+// The Pareto fronts' default error axes (report/pareto.hpp): the whole image's FLIP and RMSE (in a
+// local-mode run: the representation's error, no blade shadowing) and the coverage error over 8x8
+// tiles (where the grass is, pixel-scale aliasing averaged out).
+inline std::vector<std::string> pareto_errors() { return {"flip_mean", "rmse", "coverage_tile_mae"}; }
 
 // The colour target's clear: the harness fills in the background's radiance; alpha 0, no blade.
 inline constexpr std::array<float, 4> kUncoveredClear{0.0f, 0.0f, 0.0f, 0.0f};

@@ -35,6 +35,7 @@ public:
     std::string paper() const override { return "Lemme 2012 ch. 4 and 6; Boulanger 2008 §4.2"; }
     std::vector<ParamSpec> params() const override { return shader::GrassGeometryParams::specs(); }
     ErrorColumns error_columns() const override { return grass::kGrassErrorColumns; }
+    std::vector<std::string> pareto_errors() const override { return grass::pareto_errors(); }
 
     std::optional<ParamConflict> conflict(const ParamSet& params) const override {
         return grass::blade_samples_conflict(params);

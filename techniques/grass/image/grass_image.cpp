@@ -30,6 +30,7 @@ public:
     std::string paper() const override { return "Lemme 2012 §4.2 and §5.3; Boulanger 2008 §4.2 (the far slice)"; }
     std::vector<ParamSpec> params() const override { return shader::GrassImageParams::specs(); }
     ErrorColumns error_columns() const override { return grass::kGrassErrorColumns; }
+    std::vector<std::string> pareto_errors() const override { return grass::pareto_errors(); }
 
     FrameGraph graph(const ParamSet& params) const override {
         const grass::ImageSettings settings{.resolution = uint32_t(params.integer("resolution")),

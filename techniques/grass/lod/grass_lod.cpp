@@ -84,6 +84,7 @@ public:
     }
     std::vector<ParamSpec> params() const override { return params_specs(); }
     ErrorColumns error_columns() const override { return grass::kGrassErrorColumns; }
+    std::vector<std::string> pareto_errors() const override { return grass::pareto_errors(); }
 
     std::optional<ParamConflict> conflict(const ParamSet& params) const override {
         if (auto c = grass::blade_samples_conflict(params)) return c;

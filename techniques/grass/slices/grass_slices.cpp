@@ -34,6 +34,7 @@ public:
     std::string paper() const override { return "Boulanger 2008 §4.2.3, eq 4.2 and App. A (spherical barycentric interpolation)"; }
     std::vector<ParamSpec> params() const override { return shader::GrassSlicesParams::specs(); }
     ErrorColumns error_columns() const override { return grass::kGrassErrorColumns; }
+    std::vector<std::string> pareto_errors() const override { return grass::pareto_errors(); }
 
     FrameGraph graph(const ParamSet& params) const override {
         const auto block = shader::GrassSlicesParams::from(params);

@@ -32,6 +32,7 @@ public:
     std::string paper() const override { return "Lemme 2012 §4.2.1 and §5.2 (eq 5.2-5.21), after Habel et al. 2007"; }
     std::vector<ParamSpec> params() const override { return shader::GrassVolumeParams::specs(); }
     ErrorColumns error_columns() const override { return grass::kGrassErrorColumns; }
+    std::vector<std::string> pareto_errors() const override { return grass::pareto_errors(); }
 
     FrameGraph graph(const ParamSet& params) const override {
         const auto block = shader::GrassVolumeParams::from(params);

@@ -6,8 +6,16 @@
 
 #include "core/error_columns.hpp"
 
+#include <string>
+#include <vector>
+
 namespace canopy {
 
 inline constexpr ErrorColumns kShadowErrorColumns{.visibility = true, .shadow_regions = true};
+
+// The Pareto fronts' default error axes (report/pareto.hpp): the technique-isolated visibility
+// error (the shadow alone, silhouettes and shading left out) and the luminance error in the
+// reference's penumbrae, where the filters differ.
+inline std::vector<std::string> shadow_pareto_errors() { return {"visibility_rmse", "penumbra_rmse"}; }
 
 }  // namespace canopy

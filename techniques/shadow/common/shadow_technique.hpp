@@ -14,6 +14,7 @@ public:
     virtual ShadowPlan plan(const ParamSet& params) const = 0;
     FrameGraph graph(const ParamSet& params) const final { return shadow_graph(plan(params)); }
     ErrorColumns error_columns() const override { return kShadowErrorColumns; }
+    std::vector<std::string> pareto_errors() const override { return shadow_pareto_errors(); }
 };
 
 }  // namespace canopy

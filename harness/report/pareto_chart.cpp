@@ -1,0 +1,113 @@
+#include "report/pareto_chart.hpp"
+
+#include "report/markdown_html.hpp"
+#include "report/text_table.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace canopy {
+
+namespace {
+
+constexpr double kWidth = 560, kHeight = 340;
+constexpr double kLeft = 70, kRight = 20, kTop = 16, kBottom = 46;
+
+struct Range {
+    double low, high;
+    double map(double v, double from, double to) const { return from + (v - low) / (high - low) * (to - from); }
+};
+
+// About five round tick values covering [low, high].
+std::vector<double> ticks(const Range& r) {
+    const double span = r.high - r.low;
+    const double raw = span / 5.0;
+    const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
+    double step = magnitude;
+    for (double m : {1.0, 2.0, 5.0, 10.0})
+        if (raw <= m * magnitude) {
+            step = m * magnitude;
+            break;
+        }
+    std::vector<double> values;
+    for (double v = std::ceil(r.low / step) * step; v <= r.high + 1e-9 * span; v += step) values.push_back(v);
+    return values;
+}
+
+Range padded(double low, double high) {
+    if (!(high > low)) {
+        const double pad = low == 0 ? 1.0 : std::abs(low) * 0.1;
+        return {low - pad, high + pad};
+    }
+    const double pad = 0.06 * (high - low);
+    return {low - pad, high + pad};
+}
+
+}  // namespace
+
+std::string pareto_svg(const ParetoFront& front, const MetricInfo& metric,
+                       const std::function<std::string(const CaseResult&)>& label) {
+    if (front.points.empty()) return "";
+    const double scale = metric.percent ? 100.0 : 1.0;
+    double x_low = INFINITY, x_high = -INFINITY, y_low = INFINITY, y_high = -INFINITY;
+    for (const ParetoPoint& p : front.points) {
+        x_low = std::min({x_low, p.time_ratio.value, std::isfinite(p.time_ratio.ci.low) ? p.time_ratio.ci.low : p.time_ratio.value});
+        x_high = std::max({x_high, p.time_ratio.value, std::isfinite(p.time_ratio.ci.high) ? p.time_ratio.ci.high : p.time_ratio.value});
+        y_low = std::min(y_low, scale * p.error);
+        y_high = std::max(y_high, scale * p.error);
+    }
+    const Range x = padded(x_low, x_high), y = padded(y_low, y_high);
+    const auto px = [&](double v) { return x.map(v, kLeft, kWidth - kRight); };
+    const auto py = [&](double v) { return y.map(v, kHeight - kBottom, kTop); };
+
+    std::string svg = fmt::format(
+        "<svg class=\"pareto\" viewBox=\"0 0 {} {}\" width=\"{}\" height=\"{}\" "
+        "role=\"img\" aria-label=\"Pareto front: {} against time ratio\">\n",
+        kWidth, kHeight, kWidth, kHeight, html_escape(metric.column));
+    svg += fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" stroke=\"#999\"/>\n", kLeft, kTop,
+                       kWidth - kLeft - kRight, kHeight - kTop - kBottom);
+    for (double t : ticks(x))
+        svg += fmt::format("<line x1=\"{0}\" x2=\"{0}\" y1=\"{1}\" y2=\"{2}\" stroke=\"#eee\"/><text x=\"{0}\" y=\"{3}\" "
+                           "font-size=\"11\" text-anchor=\"middle\">{4}</text>\n",
+                           px(t), kTop, kHeight - kBottom, kHeight - kBottom + 14, ratio_number(t));
+    for (double t : ticks(y))
+        svg += fmt::format("<line x1=\"{0}\" x2=\"{1}\" y1=\"{2}\" y2=\"{2}\" stroke=\"#eee\"/><text x=\"{3}\" y=\"{4}\" "
+                           "font-size=\"11\" text-anchor=\"end\">{5}</text>\n",
+                           kLeft, kWidth - kRight, py(t), kLeft - 4, py(t) + 4, metric_cell(t));
+    svg += fmt::format("<text x=\"{}\" y=\"{}\" font-size=\"12\" text-anchor=\"middle\">GPU time / group baseline "
+                       "(median, 95 % interval)</text>\n",
+                       (kLeft + kWidth - kRight) / 2, kHeight - 10);
+    svg += fmt::format("<text transform=\"translate(14 {}) rotate(-90)\" font-size=\"12\" text-anchor=\"middle\">{} "
+                       "({} is better)</text>\n",
+                       (kTop + kHeight - kBottom) / 2, html_escape(metric.column), to_string(metric.better));
+
+    std::vector<const ParetoPoint*> on_front;
+    for (const ParetoPoint& p : front.points)
+        if (!p.dominated) on_front.push_back(&p);
+    std::sort(on_front.begin(), on_front.end(),
+              [](const ParetoPoint* a, const ParetoPoint* b) { return a->time_ratio.value < b->time_ratio.value; });
+    if (on_front.size() > 1) {
+        std::string points;
+        for (const ParetoPoint* p : on_front) points += fmt::format("{:.1f},{:.1f} ", px(p->time_ratio.value), py(scale * p->error));
+        svg += fmt::format("<polyline points=\"{}\" fill=\"none\" stroke=\"#1f77b4\" stroke-width=\"1.5\"/>\n", points);
+    }
+    for (const ParetoPoint& p : front.points) {
+        const double cx = px(p.time_ratio.value), cy = py(scale * p.error);
+        const std::string colour = p.dominated ? "#888" : "#1f77b4";
+        if (std::isfinite(p.time_ratio.ci.low) && std::isfinite(p.time_ratio.ci.high))
+            svg += fmt::format("<line x1=\"{:.1f}\" x2=\"{:.1f}\" y1=\"{:.1f}\" y2=\"{:.1f}\" stroke=\"{}\"/>\n",
+                               px(p.time_ratio.ci.low), px(p.time_ratio.ci.high), cy, cy, colour);
+        svg += fmt::format(
+            "<circle class=\"{}\" data-case=\"{}\" cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"4.5\" fill=\"{}\" stroke=\"{}\"><title>{}: "
+            "time {}, {} {}{}</title></circle>\n",
+            p.dominated ? "dominated" : "front", html_escape(p.result->id), cx, cy, p.dominated ? "white" : colour, colour,
+            html_escape(label(*p.result)), ratio_cell(p.time_ratio), html_escape(metric.column), metric_cell(scale * p.error),
+            p.dominated ? " (dominated)" : "");
+    }
+    return svg + "</svg>\n";
+}
+
+}  // namespace canopy
