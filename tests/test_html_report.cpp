@@ -162,6 +162,10 @@ TEST_CASE("linked images point into the run folder; missing images leave an empt
     CHECK(html.find("src=\"images/a.png\"") != std::string::npos);
     CHECK(count(html, "src=\"images/reference_tiny_96x64.png\"") == 2);
     CHECK(html.find("FLIP: none") != std::string::npos);
+    // No paper.md here: neither a paper section nor a link to one.
+    CHECK(html.find("id=\"paper\"") == std::string::npos);
+    CHECK(html.find("href=\"#paper\"") == std::string::npos);
+    CHECK(html.find("href=\"#pareto\"") != std::string::npos);
     CHECK(count(html, "<img alt=") == 7);
 }
 

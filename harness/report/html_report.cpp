@@ -255,16 +255,24 @@ std::string images_section(const RunRecord& run, const CaseLabels& labels, Image
 std::string html_report(const RunRecord& run, const fs::path& run_dir, const HtmlReportOptions& options) {
     const CaseLabels labels(run.cases, TechniqueRegistry::instance());
     ImageStore images(run_dir, options.embed_images);
-    std::string body = fmt::format("<h1>{}</h1>\n<p>{}</p>\n", html_escape(run.experiment), html_escape(run.description));
-    body += "<p class=\"hint\"><a href=\"#environment\">environment</a> · <a href=\"#results\">results</a> · "
-            "<a href=\"#pareto\">Pareto fronts</a> · <a href=\"#paper\">paper</a> · <a href=\"#images\">images</a></p>\n";
-    body += environment_section(run);
-    body += results_section(run, labels);
-    body += pareto_section(run, labels, options.pareto_metrics);
+    // The sections this run has, in order, and a line of links to them.
+    std::vector<std::pair<std::string, std::string>> sections = {{"environment", environment_section(run)},
+                                                                 {"results", results_section(run, labels)},
+                                                                 {"Pareto fronts", pareto_section(run, labels, options.pareto_metrics)}};
     std::error_code error;
     if (fs::is_regular_file(run_dir / "paper.md", error))
-        body += "<h2 id=\"paper\">Paper comparison</h2>\n" + markdown_to_html(read_bytes(run_dir / "paper.md"), 2);
-    body += images_section(run, labels, images);
+        sections.emplace_back("paper", "<h2 id=\"paper\">Paper comparison</h2>\n" +
+                                           markdown_to_html(read_bytes(run_dir / "paper.md"), 2));
+    sections.emplace_back("images", images_section(run, labels, images));
+    std::string links, content;
+    for (const auto& [name, html] : sections) {
+        if (html.empty()) continue;
+        const std::string anchor = name == "Pareto fronts" ? "pareto" : name;
+        links += fmt::format("{}<a href=\"#{}\">{}</a>", links.empty() ? "" : " · ", anchor, name);
+        content += html;
+    }
+    const std::string body = fmt::format("<h1>{}</h1>\n<p>{}</p>\n<p class=\"hint\">{}</p>\n{}", html_escape(run.experiment),
+                                         html_escape(run.description), links, content);
     return fmt::format("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>{} — canopy "
                        "report</title>\n<style>{}</style>\n</head>\n<body>\n{}<pre id=\"selftest-result\"></pre>\n{}<script>{}"
                        "</script>\n</body>\n</html>\n",
