@@ -31,6 +31,9 @@
 #include "run/output_folder.hpp"
 #include "report/gbench_report.hpp"
 #include "report/html_report.hpp"
+#include "report/text_table.hpp"
+#include "run/run_merge.hpp"
+#include "run/run_plan.hpp"
 #include "metrics/metric_registry.hpp"
 #include "run/run_identity.hpp"
 
@@ -339,6 +342,90 @@ int export_paper(const std::vector<std::string>& runs, bool force) {
     return kExitOk;
 }
 
+// `canopy plan`: the cases, their keys and estimated costs, the groups and (with --shards) the split.
+int plan(const fs::path& config, size_t shards, bool quick) {
+    const TechniqueRegistry& registry = TechniqueRegistry::instance();
+    const Experiment experiment = load_experiment(config, registry);
+    const std::vector<Case> cases = expand_cases(experiment, registry);
+    RunOptions options;
+    options.quick = quick;
+    const RunPlan plan = plan_run(experiment, cases, registry, measurement_settings(experiment, options));
+    const std::vector<size_t> shard_of = assign_shards(plan.group_cost, std::max<size_t>(shards, 1));
+    double total = 0;
+    for (double c : plan.group_cost) total += c;
+    fmt::print("{}: {} cases in {} groups, estimated cost {:.1f} megapixel-frames{}\n\n", experiment.name, cases.size(),
+               plan.groups.size(), total, quick ? " (--quick)" : "");
+    std::vector<std::vector<std::string>> rows;
+    for (size_t g = 0; g < plan.groups.size(); ++g)
+        for (size_t k = 0; k < plan.groups[g].cases.size(); ++k) {
+            const size_t i = plan.groups[g].cases[k];
+            rows.push_back({plan.keys[i], cases[i].id, plan.groups[g].name, k == 0 ? "baseline" : "",
+                            fmt::format("{:.2f}", plan.case_cost[i]),
+                            shards > 1 ? fmt::format("{}/{}", shard_of[g] + 1, shards) : std::string("-")});
+        }
+    fmt::print("{}", render_table({"key", "case", "group", "", "cost", "shard"}, rows, {false, false, false, false, true, false}));
+    if (shards > 1) {
+        std::vector<double> load(shards, 0.0);
+        std::vector<size_t> count(shards, 0);
+        for (size_t g = 0; g < plan.groups.size(); ++g) {
+            load[shard_of[g]] += plan.group_cost[g];
+            count[shard_of[g]] += plan.groups[g].cases.size();
+        }
+        fmt::print("\nShards (whole groups, the most costly first to the least loaded shard):\n");
+        for (size_t s = 0; s < shards; ++s)
+            fmt::print("  --shard {}/{}: {} cases, cost {:.1f} ({:.0f} %)\n", s + 1, shards, count[s], load[s],
+                       total > 0 ? 100.0 * load[s] / total : 0.0);
+    }
+    fmt::print("\nCost: frames rendered x pixels the frame's passes cover, in millions; a ranking to balance shards "
+               "with, not seconds (geometry and the reference are left out).\n");
+    return kExitOk;
+}
+
+// `canopy merge`: shards' folders into one run folder.
+int merge(const std::vector<std::string>& shard_dirs, const std::string& out_dir, bool force) {
+    const TechniqueRegistry& registry = TechniqueRegistry::instance();
+    std::vector<RunRecord> shards;
+    std::vector<fs::path> folders;
+    for (const std::string& where : shard_dirs) {
+        shards.push_back(read_run(where));
+        folders.push_back(fs::is_directory(where) ? fs::path(where) : fs::path(where).parent_path());
+    }
+    fs::path config = shards.front().config_file;
+    if (config.is_relative()) config = source_checkout() / config;
+    const Experiment experiment = load_experiment(config, registry);
+    const std::vector<Case> cases = expand_cases(experiment, registry);
+    const MergedRun merged = merge_shards(shards, folders, experiment, cases, registry);
+
+    const fs::path out = out_dir;
+    if (is_committed_results_folder(out) && !force)
+        throw ConfigError(out, 0, "this folder holds committed results; canopy does not write there unless told to",
+                          "merge into results/runs/..., or add --force");
+    if (fs::exists(out / "results.json") && !force) {
+        // Merging the same shards again rewrites the same folder; anything else is refused.
+        const RunRecord there = read_run(out.string());
+        if (there.experiment != merged.run.experiment || there.environment.config_hash != merged.run.environment.config_hash ||
+            there.merged_from.empty())
+            throw ConfigError(out, 0, fmt::format("this folder holds another run ({}, config hash {})", there.experiment,
+                                                  there.environment.config_hash),
+                              "merge into a new or empty folder, or add --force to replace it");
+    }
+    const OutputFolderLock lock(out);
+    const size_t copied = copy_shard_images(merged, shards, folders, out);
+    write_run_reports(out, merged.run, experiment);
+    fmt::print("{}: {} of {} cases from {} shards ({} images copied)\n", out.string(), merged.run.cases.size(),
+               cases.size(), shards.size(), copied);
+    for (const RunRecord::MergedShard& m : merged.run.merged_from)
+        fmt::print("  shard {}: {} cases on {} ({} to {})\n", m.shard, m.cases, m.hostname, m.started_at, m.finished_at);
+    if (!merged.missing.empty()) {
+        fmt::print(stderr, "canopy merge: {} cases are in no shard given:\n", merged.missing.size());
+        for (const std::string& id : merged.missing) fmt::print(stderr, "    {}\n", id);
+        fmt::print(stderr, "  hint: run the missing shards (canopy plan --shards N says which groups each has), then merge "
+                           "again\n");
+        return kExitFailedCases;
+    }
+    return merged.run.status == "complete" ? kExitOk : kExitFailedCases;
+}
+
 struct ReportCommand {
     std::string run, out;
     std::vector<std::string> pareto;
@@ -377,7 +464,7 @@ int report(const ReportCommand& command) {
 
 struct RunCommand {
     fs::path config;
-    std::string out, device;
+    std::string out, device, shard;
     bool quick = false, progress = true, with_reference = true, resume = false, force = false, report = false;
     ImageOutput images = ImageOutput::all;
 };
@@ -393,8 +480,15 @@ int run(const RunCommand& command, const ReferenceOptions& reference_options) {
     // anything is written.
     refuse_in_timing_only_build(command.with_reference, command.images != ImageOutput::none);
     const Experiment experiment = load_experiment(command.config, registry);
+    std::optional<ShardSpec> shard;
+    if (!command.shard.empty()) try {
+            shard = parse_shard(command.shard);
+        } catch (const std::invalid_argument& e) {
+            throw ConfigError(fs::path(), 0, e.what(), "give --shard i/N, 1 <= i <= N; `canopy plan EXPERIMENT --shards N` "
+                                                       "shows the split");
+        }
     GpuContext gpu(command.device);
-    const PreparedExperiment prepared = prepare_experiment(experiment, registry, gpu);
+    PreparedExperiment prepared = prepare_experiment(experiment, registry, gpu);
 
     RunOptions options;
     options.out_dir = command.out.empty() ? default_out_dir(experiment.name) : fs::path(command.out);
@@ -404,6 +498,28 @@ int run(const RunCommand& command, const ReferenceOptions& reference_options) {
     options.images = command.images;
     options.reference_cache_dir = cache_dir(reference_options);
     options.ballast = ballast_from_environment();  // TEST-ONLY (run/test_ballast.hpp)
+    if (shard) {
+        // Whole groups, balanced by estimated cost (run/run_plan.hpp): this shard's cases alone.
+        const RunPlan plan = plan_run(experiment, prepared.cases, registry, measurement_settings(experiment, options));
+        const std::vector<size_t> shard_of = assign_shards(plan.group_cost, shard->count);
+        std::vector<Case> kept;
+        for (size_t g = 0; g < plan.groups.size(); ++g)
+            if (shard_of[g] == shard->index)
+                for (size_t i : plan.groups[g].cases) kept.push_back(prepared.cases[i]);
+        std::stable_sort(kept.begin(), kept.end(), [&](const Case& a, const Case& b) {
+            const auto pos = [&](const Case& c) {
+                return std::find_if(prepared.cases.begin(), prepared.cases.end(), [&](const Case& x) { return x.id == c.id; }) -
+                       prepared.cases.begin();
+            };
+            return pos(a) < pos(b);
+        });
+        if (kept.empty())
+            throw ConfigError(command.config, 0,
+                              fmt::format("shard {} has no group: the experiment has {} groups", shard->text(), plan.groups.size()),
+                              "use fewer shards (canopy plan --shards N shows the split)");
+        prepared.cases = std::move(kept);
+        options.shard = shard->text();
+    }
     const Environment environment = collect_environment(gpu, experiment.config_hash);
     if (!environment.binary_older_than.empty())
         fmt::print(stderr, "canopy: warning: this canopy binary is older than {} (changed after it was linked): rebuild "
@@ -483,7 +599,7 @@ int main(int argc, char** argv) {
                "(the message names file:line, or the output folder), 130 interrupted by Ctrl-C, 143 by SIGTERM\n"
                "(finished groups of cases are kept; the same command resumes). Set CANOPY_VALIDATION=1 for Vulkan validation layers.");
 
-    std::string config_path, out_dir, device, scene_path;
+    std::string config_path, out_dir, device, scene_path, shard_text;
     bool report_after_run = false;
     bool quick = false, no_progress = false, no_reference = false, resume = false, force = false;
     std::string images = "all";
@@ -519,6 +635,9 @@ int main(int argc, char** argv) {
                       "write into a folder that holds another run (its canopy files are removed first) or into "
                       "committed results (results/paper/, results/baselines/)");
     run_cmd->add_flag("--report", report_after_run, "write report.html at the end (as `canopy report` does)");
+    run_cmd->add_option("--shard", shard_text,
+                        "run one shard i/N of the experiment's groups, balanced by estimated cost (`canopy plan "
+                        "--shards N` shows the split; `canopy merge` puts the shards' folders together)");
     add_reference_options(run_cmd, false);
     run_cmd->footer("Timing: the cases of one scene at one resolution (a group) are measured together, round by round;\n"
                     "each sample (frames_per_sample frames) sits between two samples of the group's first case (the\n"
@@ -667,6 +786,29 @@ int main(int argc, char** argv) {
         "dominated only by one that is neither significantly worse in error nor significantly slower, and is\n"
         "significantly better in one of the two (pareto.md beside results.md has the same tables).");
 
+    std::string plan_config;
+    size_t plan_shards = 1;
+    bool plan_quick = false;
+    CLI::App* plan_cmd = app.add_subcommand(
+        "plan", "List an experiment's cases with stable keys (a hash of scene, technique, parameters and resolution), "
+                "their groups and estimated cost, and with --shards N how `canopy run --shard i/N` splits them.");
+    plan_cmd->add_option("experiment", plan_config, "experiment TOML")->required();
+    plan_cmd->add_option("--shards", plan_shards, "split the groups into this many shards")->check(CLI::Range(1, 10000));
+    plan_cmd->add_flag("--quick", plan_quick, "cost of a --quick run");
+
+    std::vector<std::string> merge_dirs;
+    std::string merge_out;
+    bool merge_force = false;
+    CLI::App* merge_cmd = app.add_subcommand(
+        "merge", "Merge the folders of `canopy run --shard i/N` runs into one run folder: the same files one run writes, "
+                 "groups in the experiment's order; lists the cases no shard has.");
+    merge_cmd->add_option("shards", merge_dirs, "the shards' run folders")->required();
+    merge_cmd->add_option("--out", merge_out, "the merged run's folder")->required();
+    merge_cmd->add_flag("--force", merge_force, "replace a folder holding another run, or write into committed results");
+    merge_cmd->footer("Refused (exit 2): shards of another experiment or config, commit, build, device or settings, a\n"
+                      "shard given twice, a folder that is not a shard. Merging the same shards again rewrites the same\n"
+                      "folder. Exit 1 when cases are missing (they are listed) or a case failed.");
+
     std::vector<std::string> paper_runs;
     bool paper_force = false;
     CLI::App* export_paper_cmd = app.add_subcommand(
@@ -718,6 +860,7 @@ int main(int argc, char** argv) {
             command.resume = resume;
             command.force = force;
             command.report = report_after_run;
+            command.shard = shard_text;
             command.images = images == "none" ? ImageOutput::none : images == "png" ? ImageOutput::png : ImageOutput::all;
             return run(command, reference_options);
         }
@@ -726,6 +869,8 @@ int main(int argc, char** argv) {
         if (*report_cmd) return report(report_command);
         if (*export_cmd) return export_gbench(export_runs, export_force);
         if (*export_paper_cmd) return export_paper(paper_runs, paper_force);
+        if (*plan_cmd) return plan(plan_config, plan_shards, plan_quick);
+        if (*merge_cmd) return merge(merge_dirs, merge_out, merge_force);
         if (*bench_stability_cmd) return bench_stability(stability);
         if (*bench_reference_cmd)
             return bench_reference(scene_path.empty() ? find_default_bench_scene(current_executable()) : fs::path(scene_path),

@@ -215,6 +215,12 @@ RunRecord read_json_report(const std::filesystem::path& file) {
         run.rounds = j.at("rounds").get<int>();
         run.frames_per_sample = j.at("frames_per_sample").get<int>();
         run.quick = j.at("quick").get<bool>();
+        run.shard = j.value("shard", "");  // absent in files older than the key
+        if (j.contains("merged_from"))
+            for (const json& m : j.at("merged_from"))
+                run.merged_from.push_back({m.at("shard").get<std::string>(), m.at("hostname").get<std::string>(),
+                                           m.at("started_at").get<std::string>(), m.at("finished_at").get<std::string>(),
+                                           m.at("cases").get<size_t>()});
         if (j.contains("camera_path") && !j.at("camera_path").is_null()) {
             const json& path = j.at("camera_path");
             CameraPath p;

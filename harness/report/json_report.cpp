@@ -191,6 +191,10 @@ std::string json_report(const RunRecord& run) {
     for (const auto& g : run.groups) groups.push_back(group_json(g));
     nlohmann::json references = nlohmann::json::array();
     for (const auto& r : run.references) references.push_back(reference_json(r));
+    nlohmann::json merged_from = nlohmann::json::array();
+    for (const auto& m : run.merged_from)
+        merged_from.push_back({{"shard", m.shard}, {"hostname", m.hostname}, {"started_at", m.started_at},
+                               {"finished_at", m.finished_at}, {"cases", m.cases}});
     nlohmann::json identity = nlohmann::json::object();
     for (const auto& [name, value] : run.identity.fields) identity[name] = value;
     nlohmann::json j = {{"canopy_results_version", kResultsVersion},
@@ -212,6 +216,8 @@ std::string json_report(const RunRecord& run) {
                                                                                        run.distance_bands->far_from})
                                                               : nlohmann::json()},
                         {"quick", run.quick},
+                        {"shard", run.shard},
+                        {"merged_from", merged_from},
                         {"planned_cases", run.planned_cases},
                         {"environment", run.environment},
                         {"reference_enabled", run.reference_enabled},

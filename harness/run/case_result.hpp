@@ -143,6 +143,17 @@ struct RunRecord {
     std::optional<CameraPath> camera_path;  // the frames of a sample follow it (then frames_per_sample = its frames)
     std::optional<DistanceBands> distance_bands;  // [reference] distance_bands: FLIP near / middle / far
     bool quick = false;
+    // "i/N" when this run measured one shard of the experiment's groups (`canopy run --shard`;
+    // `canopy merge` puts the shards together), "" for a whole run.
+    std::string shard;
+    // A merged run (`canopy merge`): where each shard ran, in shard order; empty otherwise.
+    struct MergedShard {
+        std::string shard;       // "i/N"
+        std::string hostname;    // the machine (a cluster's node) that measured it
+        std::string started_at, finished_at;
+        size_t cases = 0;
+    };
+    std::vector<MergedShard> merged_from;
     RunIdentity identity;                 // what a run continuing this one must match
     std::string started_at, finished_at;  // ISO 8601, UTC
     std::vector<std::string> resumed_at;  // when it was continued (--resume), ISO 8601, UTC

@@ -60,7 +60,9 @@ std::string reference_stem(const Scene& scene, const Resolution& r) {
     return fmt::format("reference_{}_{}x{}", scene.name, r.width, r.height);
 }
 
-void write_reports(const std::filesystem::path& dir, const RunRecord& run, const Experiment& experiment) {
+}  // namespace
+
+void write_run_reports(const std::filesystem::path& dir, const RunRecord& run, const Experiment& experiment) {
     write_json_report(dir / "results.json", run);
     write_csv_report(dir / "results.csv", run);
     write_markdown_report(dir / "results.md", run);
@@ -71,8 +73,6 @@ void write_reports(const std::filesystem::path& dir, const RunRecord& run, const
     }
     write_pareto_report(dir / "pareto.md", run);
 }
-
-}  // namespace
 
 PreparedExperiment prepare_experiment(const Experiment& experiment, const TechniqueRegistry& registry,
                                       const GpuContext& gpu) {
@@ -193,6 +193,7 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
     run.environment = collect_environment(gpu, experiment.config_hash);
     run.identity = make_run_identity(experiment, options, run.environment);
     run.quick = options.quick;
+    run.shard = options.shard;
     run.warmup_frames = settings.warmup_frames;
     run.rounds = settings.rounds;
     run.frames_per_sample = settings.frames_per_sample;
@@ -259,7 +260,7 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
     try {
         std::filesystem::create_directories(out / "images");
         if (options.previous) remove_temporary_files(out);
-        write_reports(out, run, experiment);
+        write_run_reports(out, run, experiment);
 
         for (size_t g = 0; g < groups.size() && !interrupt_requested(); ++g) {
             const PlannedGroup& planned = groups[g];
@@ -434,7 +435,7 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
             run.groups[g].chunks = std::move(measured->record.chunks);
             for (size_t k = 0; k < planned.cases.size(); ++k) slots[planned.cases[k]] = std::move(measured->cases[k]);
             record_cases();
-            write_reports(out, run, experiment);
+            write_run_reports(out, run, experiment);
             test_hooks::group_recorded(groups_measured);
             const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
             if (options.show_progress)
@@ -449,7 +450,7 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
         run.status = "failed";
         run.error = e.what();
         try {
-            write_reports(out, run, experiment);
+            write_run_reports(out, run, experiment);
         } catch (const std::exception& again) {
             run.error += fmt::format(" (results.json could not record this either: {})", again.what());
         }
@@ -461,7 +462,7 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
     const bool any_failed = std::any_of(run.cases.begin(), run.cases.end(), [](const CaseResult& c) { return !c.ok; });
     run.status = interrupt_requested() ? "interrupted" : any_failed ? "failed" : "complete";
     try {
-        write_reports(out, run, experiment);
+        write_run_reports(out, run, experiment);
     } catch (const std::exception& e) {
         run.status = "failed";
         run.error = e.what();

@@ -26,6 +26,9 @@ struct RunOptions {
     const RunRecord* previous = nullptr;
     ChunkLimits chunk_limits;
     std::optional<BallastSpec> ballast;  // TEST-ONLY (run/test_ballast.hpp)
+    // This run measures one shard of the experiment's groups (`canopy run --shard i/N`,
+    // run/run_plan.hpp): "i/N", or "" for the whole experiment. The cases given are the shard's.
+    std::string shard;
 };
 
 // The measurement an experiment gets with these options (--quick shortens it).
@@ -51,6 +54,10 @@ struct PreparedExperiment {
 // Throws ConfigError naming the experiment's file:line when a case cannot run here.
 PreparedExperiment prepare_experiment(const Experiment& experiment, const TechniqueRegistry& registry,
                                       const GpuContext& gpu);
+
+// Writes a run's reports into `dir`: results.json, results.csv, results.md, results.gbench.json,
+// pareto.md, and paper.md and paper.json for an experiment with a [paper] table.
+void write_run_reports(const std::filesystem::path& dir, const RunRecord& run, const Experiment& experiment);
 
 // Writes results.json, results.csv, results.md, results.gbench.json and images/ under
 // options.out_dir, rewriting the reports after every group. A failure to write (a full disk, ...) ends the run with status

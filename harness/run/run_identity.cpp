@@ -35,6 +35,7 @@ RunIdentity make_run_identity(const Experiment& experiment, const RunOptions& op
     add("experiment", experiment.name);
     add("config_hash", experiment.config_hash);
     add("quick", options.quick ? "true" : "false");
+    if (!options.shard.empty()) add("shard", options.shard);  // absent from whole runs (and runs older than shards)
     add("images", images_name(options.images));
     add("reference", options.reference && experiment.reference_enabled ? "on" : "off");
     // How the cases are timed: a run continuing another must pair its rounds the same way.
