@@ -220,7 +220,8 @@ RunRecord read_json_report(const std::filesystem::path& file) {
             for (const json& m : j.at("merged_from"))
                 run.merged_from.push_back({m.at("shard").get<std::string>(), m.at("hostname").get<std::string>(),
                                            m.at("started_at").get<std::string>(), m.at("finished_at").get<std::string>(),
-                                           m.at("cases").get<size_t>()});
+                                           m.at("cases").get<size_t>(),
+                                           m.value("groups", std::vector<std::string>{})});
         if (j.contains("camera_path") && !j.at("camera_path").is_null()) {
             const json& path = j.at("camera_path");
             CameraPath p;

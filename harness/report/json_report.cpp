@@ -194,7 +194,7 @@ std::string json_report(const RunRecord& run) {
     nlohmann::json merged_from = nlohmann::json::array();
     for (const auto& m : run.merged_from)
         merged_from.push_back({{"shard", m.shard}, {"hostname", m.hostname}, {"started_at", m.started_at},
-                               {"finished_at", m.finished_at}, {"cases", m.cases}});
+                               {"finished_at", m.finished_at}, {"cases", m.cases}, {"groups", m.groups}});
     nlohmann::json identity = nlohmann::json::object();
     for (const auto& [name, value] : run.identity.fields) identity[name] = value;
     nlohmann::json j = {{"canopy_results_version", kResultsVersion},

@@ -152,6 +152,7 @@ struct RunRecord {
         std::string hostname;    // the machine (a cluster's node) that measured it
         std::string started_at, finished_at;
         size_t cases = 0;
+        std::vector<std::string> groups;  // the groups it measured: which node measured which case
     };
     std::vector<MergedShard> merged_from;
     RunIdentity identity;                 // what a run continuing this one must match

@@ -100,7 +100,9 @@ MergedRun merge_shards(const std::vector<RunRecord>& shards, const std::vector<f
     bool all_complete = true;
     for (size_t k : order) {
         const RunRecord& s = shards[k];
-        run.merged_from.push_back({s.shard, s.environment.hostname, s.started_at, s.finished_at, s.cases.size()});
+        std::vector<std::string> groups;
+        for (const GroupRecord& g : s.groups) groups.push_back(g.name);
+        run.merged_from.push_back({s.shard, s.environment.hostname, s.started_at, s.finished_at, s.cases.size(), groups});
         run.started_at = std::min(run.started_at, s.started_at);
         run.finished_at = std::max(run.finished_at, s.finished_at);
         all_complete = all_complete && s.status == "complete";
