@@ -34,6 +34,7 @@
 #include "report/text_table.hpp"
 #include "run/run_merge.hpp"
 #include "run/run_plan.hpp"
+#include "run/reference_tiles.hpp"
 #include "metrics/metric_registry.hpp"
 #include "run/run_identity.hpp"
 
@@ -135,6 +136,8 @@ struct ReferenceOptions {
     ReferenceSettings settings{64, 4, 1, 0};
     std::string cache_dir;  // "" = default
     bool no_cache = false;
+    std::string tile;        // `canopy reference --tile i/N`: render one row band into --out
+    size_t merge_tiles = 0;  // `--merge-tiles N`: put --out's N tiles together into the cache
 };
 
 fs::path cache_dir(const ReferenceOptions& o) {
@@ -151,6 +154,33 @@ int reference(const fs::path& scene_file, const std::string& out, const Referenc
     refuse_in_timing_only_build(true, true);
     const Scene scene = load_scene(scene_file);
     const auto meshes = build_scene_meshes(scene);
+    if (!o.tile.empty() && o.merge_tiles > 0)
+        throw ConfigError(fs::path(), 0, "--tile and --merge-tiles together", "render the tiles first, then merge them");
+    if (!o.tile.empty()) {
+        ShardSpec tile;
+        try {
+            tile = parse_shard(o.tile);
+        } catch (const std::invalid_argument& e) {
+            throw ConfigError(fs::path(), 0, std::string(e.what()).replace(0, 7, "--tile"), "give --tile i/N, 1 <= i <= N");
+        }
+        if (out.empty())
+            throw ConfigError(fs::path(), 0, "--tile needs --out", "give the folder every tile of this reference goes to");
+        const RowBand rows = tile_rows(o.height, tile.index, tile.count);
+        const uint64_t rays = render_reference_tile(scene, meshes, o.width, o.height, o.settings, tile.index, tile.count, out);
+        fmt::print("reference {} {}x{}: tile {} (rows {} to {}), {} shadow rays, in {}\n  when every tile is there: canopy "
+                   "reference {} --merge-tiles {} --out {} (same size and sample options)\n",
+                   scene.name, o.width, o.height, tile.text(), rows.begin, rows.end - 1, rays, out, scene_file.string(),
+                   tile.count, out);
+        return kExitOk;
+    }
+    if (o.merge_tiles > 0) {
+        if (out.empty()) throw ConfigError(fs::path(), 0, "--merge-tiles needs --out", "give the folder holding the tiles");
+        if (cache_dir(o).empty())
+            throw ConfigError(fs::path(), 0, "--merge-tiles puts the reference into the cache", "drop --no-cache");
+        merge_reference_tiles(scene, meshes, o.width, o.height, o.settings, o.merge_tiles, out, cache_dir(o));
+        fmt::print(stderr, "canopy: {} tiles of {} {}x{} merged into the reference cache ({})\n", o.merge_tiles, scene.name,
+                   o.width, o.height, cache_dir(o).string());
+    }
     ReferenceProvider provider(cache_dir(o), o.settings);
     const bool terminal = isatty(STDERR_FILENO);
     const ReferenceEntry& entry = provider.get(scene, meshes, o.width, o.height, [&](double fraction) {
@@ -663,6 +693,12 @@ int main(int argc, char** argv) {
     CLI::App* reference_cmd = app.add_subcommand("reference", "Ray-trace the ground-truth image of a scene with Embree.");
     reference_cmd->add_option("scene", scene_path, "scene TOML, e.g. configs/scenes/spheres.toml")->required();
     reference_cmd->add_option("--out", out_dir, "output folder (default results/reference/)");
+    reference_cmd->add_option("--tile", reference_options.tile,
+                              "render only row band i of N into --out (no cache), for a reference too large for one job");
+    reference_cmd->add_option("--merge-tiles", reference_options.merge_tiles,
+                              "put the N tiles in --out together into the reference cache (bit for bit a whole "
+                              "render), then write the reference as without tiles")
+        ->check(CLI::Range(1, 100000));
     add_reference_options(reference_cmd, true);
 
     CLI::App* bench_cmd = app.add_subcommand("bench", "Benchmarks (not timed tests).");

@@ -55,7 +55,7 @@ PixelVisibilityRender render_pixel_visibility(const Scene& scene, const EmbreeSc
         const LightEstimate estimate =
             integrate_light(*light, hit->surface, random_key(settings.seed, kSampleDomain, pixel), false, tracer);
         out[pv::kVisibility] = estimate.weighted_visibility >= 0.0f ? estimate.weighted_visibility : pv::kNotLit;
-    });
+    }, 0.0, settings.rows);
 
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;

@@ -29,6 +29,7 @@ struct PixelVisibilitySettings {
     // Where each ray crosses its pixel, in pixel units from the pixel's top-left corner. The
     // rasteriser samples (0.5, 0.5); anything else is for showing that the two must agree.
     float position_in_pixel_x = 0.5f, position_in_pixel_y = 0.5f;
+    RowBand rows;  // the whole image unless rendering a tile (reference_settings.hpp)
 };
 
 struct PixelVisibilityRender {

@@ -59,7 +59,7 @@ ReferenceImages render_reference(const Scene& scene, const EmbreeScene& embree, 
         visibility[1] = pixel.facing;
         visibility[2] = pixel.population_coverage;
         visibility[3] = 1.0f;
-    });
+    }, 0.0, settings.rows);
 
     images.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return images;
