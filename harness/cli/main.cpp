@@ -35,6 +35,7 @@
 #include "run/run_merge.hpp"
 #include "run/run_plan.hpp"
 #include "run/reference_tiles.hpp"
+#include "run/reference_prefetch.hpp"
 #include "metrics/metric_registry.hpp"
 #include "run/run_identity.hpp"
 
@@ -496,6 +497,7 @@ struct RunCommand {
     fs::path config;
     std::string out, device, shard;
     bool quick = false, progress = true, with_reference = true, resume = false, force = false, report = false;
+    bool references_only = false;
     ImageOutput images = ImageOutput::all;
 };
 
@@ -549,6 +551,17 @@ int run(const RunCommand& command, const ReferenceOptions& reference_options) {
                               "use fewer shards (canopy plan --shards N shows the split)");
         prepared.cases = std::move(kept);
         options.shard = shard->text();
+    }
+    if (command.references_only) {
+        if (!command.with_reference)
+            throw ConfigError(fs::path(), 0, "--references-only with --no-reference", "drop one of them");
+        for (const PrefetchedReference& r : prefetch_references(prepared, options, [](const std::string& group) {
+                 fmt::print(stderr, "canopy: reference of {}...\n", group);
+             }))
+            fmt::print("reference {}: {} ({:.1f} s{})\n", r.group, r.from_cache ? "already in the cache" : "rendered",
+                       r.seconds, r.path_frames ? fmt::format(", {} camera-path frames", r.path_frames) : "");
+        fmt::print("reference cache: {}\n", options.reference_cache_dir.string());
+        return kExitOk;
     }
     const Environment environment = collect_environment(gpu, experiment.config_hash);
     if (!environment.binary_older_than.empty())
@@ -630,7 +643,7 @@ int main(int argc, char** argv) {
                "(finished groups of cases are kept; the same command resumes). Set CANOPY_VALIDATION=1 for Vulkan validation layers.");
 
     std::string config_path, out_dir, device, scene_path, shard_text;
-    bool report_after_run = false;
+    bool report_after_run = false, references_only = false;
     bool quick = false, no_progress = false, no_reference = false, resume = false, force = false;
     std::string images = "all";
     ReferenceOptions reference_options;
@@ -665,6 +678,9 @@ int main(int argc, char** argv) {
                       "write into a folder that holds another run (its canopy files are removed first) or into "
                       "committed results (results/paper/, results/baselines/)");
     run_cmd->add_flag("--report", report_after_run, "write report.html at the end (as `canopy report` does)");
+    run_cmd->add_flag("--references-only", references_only,
+                      "render the references the run (or its --shard) compares with into the reference cache, and "
+                      "nothing else (a cluster's reference jobs, before the timing jobs)");
     run_cmd->add_option("--shard", shard_text,
                         "run one shard i/N of the experiment's groups, balanced by estimated cost (`canopy plan "
                         "--shards N` shows the split; `canopy merge` puts the shards' folders together)");
@@ -897,6 +913,7 @@ int main(int argc, char** argv) {
             command.force = force;
             command.report = report_after_run;
             command.shard = shard_text;
+            command.references_only = references_only;
             command.images = images == "none" ? ImageOutput::none : images == "png" ? ImageOutput::png : ImageOutput::all;
             return run(command, reference_options);
         }

@@ -3,7 +3,8 @@
 # and munge, installed by scripts/install-deps): munged on a private socket with a generated key,
 # slurmctld and slurmd on 127.0.0.1 with a generated slurm.conf on non-default ports, as root
 # (SlurmUser=root, proctrack/linuxproc, task/none). A small sweep (the tiny scene at three
-# resolutions: 3 groups, 9 cases) is submitted as 2 shards and a dependent merge; the test waits
+# resolutions: 3 groups, 9 cases) is submitted: a reference job per group, 2 timing shards after
+# them and a dependent merge; the test waits
 # for the merge and checks that the merged results equal a single-process run's cases (same ids in
 # the same order, the same error values, timing statistics present, each shard's node recorded),
 # then stops its daemons.
@@ -79,14 +80,16 @@ sed -e 's/^name = "tiny"/name = "tiny-slurm"/' -e 's/resolutions = \[\[96, 64\]\
 "$submit" "$work/three.toml" --shards 2 --quick --out "$work/run" --cache "$work/cache" --canopy "$canopy" \
   >"$work/submitted" 2>&1 || fail "submit failed: $(cat "$work/submitted")"
 cat "$work/submitted"
-read -r array merge < <(sed -n 's/^jobs: //p' "$work/submitted")
-[ -n "$array" ] && [ -n "$merge" ] || fail "submit printed no job ids"
+read -r references array merge < <(sed -n 's/^jobs: //p' "$work/submitted")
+[ -n "$references" ] && [ -n "$array" ] && [ -n "$merge" ] || fail "submit printed no job ids"
 grep -q "squeue -j $array,$merge" "$work/submitted" || fail "submit does not say how to watch the jobs"
 for _ in $(seq 1 240); do
-  [ -z "$(squeue -h -j "$array,$merge" 2>/dev/null)" ] && break
+  [ -z "$(squeue -h -j "$references,$array,$merge" 2>/dev/null)" ] && break
   sleep 1
 done
-[ -z "$(squeue -h -j "$array,$merge" 2>/dev/null)" ] || fail "the jobs did not finish in 4 minutes: $(squeue)"
+[ -z "$(squeue -h -j "$references,$array,$merge" 2>/dev/null)" ] || fail "the jobs did not finish in 4 minutes: $(squeue)"
+# One reference job per group, each rendering its group's reference into the shared cache.
+for g in 1 2 3; do grep -q "^reference tiny .*: rendered" "$work/run/logs/references-$g.log" || fail "reference job $g rendered nothing"; done
 [ -s "$work/run/merged/results.json" ] || fail "the merge job wrote no results"
 
 CANOPY_CACHE_DIR="$work/cache" "$canopy" run "$work/three.toml" --out "$work/single" --quick --no-progress --images png \
@@ -102,6 +105,8 @@ assert merged["status"] == "complete", merged["status"]
 shards = merged["merged_from"]
 assert [s["shard"] for s in shards] == ["1/2", "2/2"], shards
 assert all(s["hostname"] and s["groups"] for s in shards), shards
+# The shards found every reference in the cache: the reference jobs rendered them.
+assert all(r["from_cache"] and r["pixel_visibility"]["from_cache"] for r in merged["references"]), merged["references"]
 print(f"Slurm: merged == single run: {len(merged['cases'])} cases; shards on", [s["hostname"] for s in shards])
 PY
 echo "slurm: ok"
