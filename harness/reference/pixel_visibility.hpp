@@ -9,6 +9,7 @@
 
 #include "core/pixel_visibility.hpp"
 #include "reference/embree_scene.hpp"
+#include "reference/reference_settings.hpp"
 #include "scene/scene.hpp"
 
 #include <cstdint>
