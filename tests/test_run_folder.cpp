@@ -64,6 +64,8 @@ RunRecord awkward_record(const RunIdentity& id) {
     run.rounds = 3;
     run.frames_per_sample = 1;
     run.quick = true;
+    run.shard = "2/3";  // as a merged run would not have it, but every field must read back
+    run.merged_from = {{"1/3", "node-1", "2026-01-01T00:00:00Z", "2026-01-01T00:01:00Z", 3, {"tiny 96x64"}}};
     run.started_at = "2026-01-01T00:00:00Z";
     run.resumed_at = {"2026-01-01T00:01:00Z"};
     run.status = "interrupted";
@@ -105,6 +107,7 @@ RunRecord awkward_record(const RunIdentity& id) {
     c.path_frames = {{c.gpu_frame, c.passes}, {c.wall, c.passes}};
     c.group = 0;
     c.chunk = 1;
+    c.node = "node-7";
     c.ratio.per_round = {1.5, 2.0 / 3.0, 1.75};
     c.ratio.estimate = {1.5, {2.0 / 3.0, 1.75}, 3};
     GroupRecord g;
@@ -202,6 +205,10 @@ TEST_CASE("results.json reads back exactly: every field, NaN, infinity, every di
         CHECK_MESSAGE(a[key].dump() == b[key].dump(), key);
     CHECK(back.cases[0].gpu_frame.samples_ms[2] == 1.0 / 7.0);
     CHECK(back.cases[0].ratio.per_round[1] == 2.0 / 3.0);
+    CHECK(back.cases[0].node == "node-7");
+    CHECK(back.shard == "2/3");
+    REQUIRE(back.merged_from.size() == 1);
+    CHECK(back.merged_from[0].groups == std::vector<std::string>{"tiny 96x64"});
     CHECK(back.cases[0].ratio.estimate.ci.high == 1.75);
     CHECK(back.cases[1].ratio.measured() == false);  // the failed case has none
     CHECK(back.groups[0].chunks[1].baseline_gpu_ms[2] == 1.0 / 11.0);

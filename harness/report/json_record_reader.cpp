@@ -104,6 +104,7 @@ CaseResult read_case(const json& j) {
     c.error = j.at("error").get<std::string>();
     c.group = j.at("group").get<size_t>();
     c.chunk = j.at("chunk").get<size_t>();
+    c.node = j.value("node", "");  // absent in files older than the key
     c.group_baseline = j.at("group_baseline").get<bool>();
     c.ratio = read_ratio(j.at("ratio"));
     const json& timing = j.at("timing");

@@ -154,6 +154,7 @@ nlohmann::json case_json(const CaseResult& c) {
             {"error", c.error},
             {"group", c.group},
             {"chunk", c.chunk},
+            {"node", c.node},
             {"group_baseline", c.group_baseline},
             {"ratio", ratio_json(c.ratio)},
             {"timing",

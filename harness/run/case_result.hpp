@@ -65,6 +65,9 @@ struct CaseResult {
     LoadPhase load;
     size_t group = 0;                  // index into RunRecord::groups
     size_t chunk = 0;                  // the group's chunk whose rounds measured it (the baseline's: the first)
+    // The machine that measured it, in a merged run (`canopy merge`: its shard's hostname, a
+    // cluster's node); "" in a run of one process, whose environment names the machine.
+    std::string node;
     bool group_baseline = false;       // the group's first case, which the others' ratios divide by
     RatioRecord ratio;                 // empty when the group's baseline failed
     MemoryUse memory;

@@ -110,11 +110,15 @@ MergedRun merge_shards(const std::vector<RunRecord>& shards, const std::vector<f
 
     // Every case by id, from the shard that measured it.
     std::map<std::string, const CaseResult*> measured;
+    std::map<std::string, std::string> node_of;  // case id -> the hostname of the shard that measured it
     std::map<std::string, const GroupRecord*> groups_by_name;
     std::vector<const ReferenceRecord*> references;
     for (size_t k : order) {
         const RunRecord& s = shards[k];
-        for (const CaseResult& c : s.cases) measured.emplace(c.id, &c);
+        for (const CaseResult& c : s.cases) {
+            measured.emplace(c.id, &c);
+            node_of.emplace(c.id, s.environment.hostname);
+        }
         for (const GroupRecord& g : s.groups)
             if (!g.chunks.empty()) groups_by_name.emplace(g.name, &g);
         for (const ReferenceRecord& r : s.references) references.push_back(&r);
@@ -144,6 +148,7 @@ MergedRun merge_shards(const std::vector<RunRecord>& shards, const std::vector<f
             }
             CaseResult result = *found->second;
             result.group = run.groups.size() - 1;
+            result.node = node_of.at(c.id);
             result.params = c.params.values();
             result.params_summary = c.params.summary();
             result.params_shown = labels.parameters(c);

@@ -52,6 +52,7 @@ for a, b in zip(whole["cases"], merged["cases"]):
     assert a["image_error"] == b["image_error"], (a["id"], "error values differ")
     assert b["timing"]["gpu_frame"]["stats_ms"]["count"] == a["timing"]["gpu_frame"]["stats_ms"]["count"] > 0, a["id"]
     assert b["params"] == a["params"], a["id"]
+    assert a["node"] == "" and b["node"] != "", (a["id"], "the node that measured a merged case")
     g = merged["groups"][b["group"]]
     assert b["id"] in g["cases"], (b["id"], "not in its group")
 ref = lambda r: (r["scene"], r["width"], r["height"], r["key"])

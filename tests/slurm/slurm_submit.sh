@@ -101,6 +101,7 @@ assert [c["id"] for c in merged["cases"]] == [c["id"] for c in single["cases"]],
 for a, b in zip(single["cases"], merged["cases"]):
     assert a["image_error"] == b["image_error"], (a["id"], "error values")
     assert b["timing"]["gpu_frame"]["stats_ms"]["count"] > 0, (b["id"], "no timing statistics")
+    assert b["node"], (b["id"], "no node recorded")
 assert merged["status"] == "complete", merged["status"]
 shards = merged["merged_from"]
 assert [s["shard"] for s in shards] == ["1/2", "2/2"], shards
