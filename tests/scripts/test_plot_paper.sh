@@ -53,7 +53,22 @@ done
 md5sum "$work"/lights/plots/* > "$work/first"
 "$script" "$work/lights" >/dev/null
 md5sum "$work"/lights/plots/* | diff -q - "$work/first" >/dev/null || fail "a second run drew other bytes"
-# A folder without paper.json.
+# A run without a [paper] table (its config is not in the checkout): error against time per group.
+mkdir -p "$work/grass"
+/usr/bin/python3 - "$work/grass/results.json" <<'PY'
+import json, sys
+def case(cid, technique, ratio, flip):
+    return {"id": cid, "technique": technique, "ok": True, "image_error": {"flip_mean": flip},
+            "ratio": {"median": ratio, "ci95_low": ratio * 0.95, "ci95_high": ratio * 1.05}}
+cases = [case("n-blades", "grass.geometry", 1.0, 0.02), case("n-volume", "grass.volume", 0.2, 0.05),
+         case("f-blades", "grass.geometry", 1.0, 0.03), case("f-image", "grass.image", 0.01, 0.06)]
+json.dump({"experiment": "grass-test", "config": "configs/no-such-experiment.toml", "cases": cases,
+           "groups": [{"name": "near 64x36", "cases": ["n-blades", "n-volume"]},
+                      {"name": "far 64x36", "cases": ["f-blades", "f-image"]}]}, open(sys.argv[1], "w"))
+PY
+"$script" "$work/grass" >"$work/out" || fail "plot-paper failed on a run without a paper table"
+[ -s "$work/grass/plots/error-vs-time.png" ] && [ -s "$work/grass/plots/error-vs-time.svg" ] || fail "no error-vs-time for a run"
+# A folder with neither paper.json nor results.json.
 mkdir -p "$work/empty"
 if "$script" "$work/empty" 2>"$work/err"; then fail "a folder without paper.json was accepted"; fi
 grep -q "canopy export-paper" "$work/err" || fail "the refusal does not say how to make paper.json: $(cat "$work/err")"
