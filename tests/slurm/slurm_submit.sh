@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # scripts/slurm/submit against a real Slurm: a single-node cluster started here (Debian's slurm-wlm
 # and munge, installed by scripts/install-deps): munged on a private socket with a generated key,
-# slurmctld and slurmd on 127.0.0.1 with a generated slurm.conf on non-default ports, as root
-# (SlurmUser=root, proctrack/linuxproc, task/none). A small sweep (the tiny scene at three
+# slurmctld and slurmd on 127.0.0.1 with a generated slurm.conf on non-default ports, as the user
+# running the test (SlurmUser: root in a container, or any other user: both checked),
+# proctrack/linuxproc, task/none. A small sweep (the tiny scene at three
 # resolutions: 3 groups, 9 cases) is submitted: a reference job per group, 2 timing shards after
 # them and a dependent merge; the test waits
 # for the merge and checks that the merged results equal a single-process run's cases (same ids in
@@ -42,8 +43,8 @@ memory=$(( $(awk '/MemTotal/ {print $2}' /proc/meminfo) / 1024 / 2 ))
 cat >"$work/slurm/slurm.conf" <<EOF
 ClusterName=canopytest
 SlurmctldHost=localhost(127.0.0.1)
-SlurmUser=root
-SlurmdUser=root
+SlurmUser=$(id -un)
+SlurmdUser=$(id -un)
 AuthType=auth/munge
 AuthInfo=socket=$work/slurm/munge/munge.socket
 CredType=cred/munge
