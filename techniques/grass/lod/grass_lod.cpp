@@ -92,6 +92,10 @@ public:
             return ParamConflict{{"culling", "middle"},
                                  "the quadtree draws the middle band as macro-cells, which the BTF slices do not have",
                                  "culling = \"gpu\" with middle = \"slices\", or middle = \"volume\" with the quadtree"};
+        if (params.integer("middle_shadow_resolution") > 0 && params.choice("middle") != "slices")
+            return ParamConflict{{"middle_shadow_resolution", "middle"},
+                                 "only the BTF slices bake the blades' shadows; the volume's bake is unshadowed",
+                                 "middle = \"slices\" with middle_shadow_resolution, or middle_shadow_resolution = 0"};
         if (params.boolean("middle_per_sample") && (params.integer("samples") != 4 || params.choice("middle") != "volume"))
             return ParamConflict{{"middle_per_sample", "samples", "middle"},
                                  "the middle band is ray-cast per sample only for the volume under 4x MSAA",
@@ -139,6 +143,7 @@ public:
         const grass::SlicesSettings slices{.slices = uint32_t(block.slices),
                                            .resolution = uint32_t(params.integer("resolution")),
                                            .height_resolution = uint32_t(params.integer("height_resolution")),
+                                           .shadow_resolution = uint32_t(params.integer("middle_shadow_resolution")),
                                            .prefix = "middle_",
                                            .culled_by = gpu_culled ? std::optional<std::string>("middle_") : std::nullopt};
         const grass::ImageSettings image{.resolution = uint32_t(params.integer("image_resolution")),
@@ -150,9 +155,15 @@ public:
         g.needs.populations = {grass::kGrassPopulationKind};
         g.shader_params.set_block(block);
         const bool per_sample = params.boolean("middle_per_sample");
-        g.report["bands"] = fmt::format("blades to {}-{}, {} ({} slices{}) to {}-{}, image beyond", block.geometry_full,
+        // The shadowed bake is the slices' alone; given with the volume (a config refuses that, conflict()) it is said unused.
+        const std::string middle_shadows =
+            slices.shadow_resolution == 0 ? ""
+            : btf ? fmt::format(", shadows baked from {}x{} light views", slices.shadow_resolution, slices.shadow_resolution)
+                  : fmt::format(" (middle_shadow_resolution {} unused: middle = \"slices\" only)", slices.shadow_resolution);
+        g.report["bands"] = fmt::format("blades to {}-{}, {} ({} slices{}{}) to {}-{}, image beyond", block.geometry_full,
                                         block.geometry_none, btf ? "BTF slices" : "volume", volume.slices,
-                                        per_sample ? ", ray-cast per sample" : "", block.image_start, block.image_full);
+                                        per_sample ? ", ray-cast per sample" : "", middle_shadows, block.image_start,
+                                        block.image_full);
         g.report["coverage"] = to_coverage ? "alpha-to-coverage" : "alpha-test";
         g.report["samples"] = std::to_string(samples);
         const bool culled = gpu_culled;
@@ -239,6 +250,7 @@ public:
         g.passes.push_back(btf ? grass::slices_frame_pass(slices, middle, false, band_attachments(samples, false, false))
                                : grass::volume_frame_pass(volume, middle, false, band_attachments(samples, false, false)));
         if (per_sample) g.passes.back().settings += "; ray-cast once per covered sample";
+        if (!btf && !middle_shadows.empty()) g.passes.back().settings += ";" + middle_shadows;  // said, as unused culling settings are
         RasterState quads;
         quads.vertex_spirv = quadtree ? std::span<const uint32_t>(grass_lod_image_macro_vert)
                                       : std::span<const uint32_t>(grass_lod_image_vert);

@@ -34,6 +34,7 @@
     SHADER(integer, slices, (8, 1, 64), "the middle band's vertical slices per direction (grass.volume's and grass.slices' slices)") \
     PLAN(integer, resolution, (256, 16, 4096), "texels of a middle-band slice across the patch (grass.volume's and grass.slices' resolution)") \
     PLAN(integer, height_resolution, (64, 4, 4096), "texels of a middle-band slice up the patch's height (grass.volume's and grass.slices')") \
+    PLAN(integer, middle_shadow_resolution, (0, 0, 8192), "middle = slices: grass.slices' shadow_resolution, the blades' shadows baked into the slices' rows from one depth view per baked light direction this many texels a side; 0: no shadows in the bake") \
     PLAN(integer, image_resolution, (256, 16, 4096), "texels across the far band's top-view bake (grass.image's resolution)") \
     PLAN(real, slice_height, (0.1, 0.01, 1.0), "the far band's slice height, a fraction of the tallest blade (grass.image's)")
 

@@ -80,6 +80,18 @@ TEST_CASE("grass.lod: with its bands at either end it draws what each representa
     CHECK(grass::test::grass_pixels(slices) > 1000);
     CHECK(max_difference(lod_slices, slices) <= 1e-5f);
     CHECK(max_difference(slices, volume) > 0.1f);
+    // The shadowed bake too: grass.lod's middle_shadow_resolution is grass.slices' shadow_resolution.
+    const Image shadowed = render(scene, "grass.slices",
+                                  {{"slices", 4LL}, {"resolution", 96LL}, {"height_resolution", 48LL}, {"shadow_resolution", 256LL}});
+    btf["middle_shadow_resolution"] = 256LL;
+    CHECK(max_difference(render(scene, "grass.lod", btf), shadowed) <= 1e-5f);
+    CHECK(max_difference(shadowed, slices) > 0.01f);  // the bake's shadows show: the check above tells them apart
+    // Only the slices bake shadows: with the volume the parameter is refused.
+    const Technique& lod = *TechniqueRegistry::instance().find("grass.lod");
+    Values volume_shadowed = lod_values(0, 0, 1e6, 1e6);
+    volume_shadowed["middle_shadow_resolution"] = 256LL;
+    CHECK(lod.conflict(ParamSet::resolve(lod.params(), volume_shadowed, {}, {}, "grass.lod")));
+    CHECK_FALSE(lod.conflict(ParamSet::resolve(lod.params(), btf, {}, {}, "grass.lod")));
     // and its blades and image bands unchanged.
     btf = lod_values(1e6, 1e6, 1e6, 1e6);
     btf["middle"] = std::string("slices");
