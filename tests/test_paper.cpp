@@ -357,9 +357,15 @@ TEST_CASE("paper.json holds paper.md's numbers as data: ratios with intervals, t
     const Experiment e = load_experiment(write_experiment("data.toml", kPaper), TechniqueRegistry::instance());
     RunRecord run;
     run.experiment = "T1-run";
+    run.environment.git_commit = "0123abcd";
+    run.environment.device.name = "llvmpipe (test)";
     run.cases = {fake_case("shadow.hard", 0, constant(10.0), 0.06), fake_case("shadow.pcf", 3, constant(12.0), 0.04)};
     const nlohmann::json data = paper_data(*e.paper, run);
     CHECK(data["id"] == "T1");
+    // Where the numbers come from: the run's commit and device, and its whole environment.
+    CHECK(data["commit"] == "0123abcd");
+    CHECK(data["device"] == "llvmpipe (test)");
+    CHECK(data["environment"]["commit"] == "0123abcd");
     CHECK(data["columns"] == nlohmann::json::array({"96x64"}));
     REQUIRE(data["rows"].size() == 3);
     const nlohmann::json& pcf3 = data["rows"][1];

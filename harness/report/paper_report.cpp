@@ -362,8 +362,12 @@ nlohmann::json paper_data(const PaperComparison& paper, const RunRecord& run) {
     using nlohmann::json;
     json data{{"id", paper.id},         {"title", paper.title},     {"source", paper.source},
               {"unit", paper.unit},     {"column_key", paper.column_key}, {"columns", paper.columns},
-              {"baseline", paper.baseline}, {"experiment", run.experiment}, {"device", run.environment.device.name},
-              {"quick", run.quick},     {"rounds", run.rounds}};
+              {"baseline", paper.baseline}, {"experiment", run.experiment}, {"config", run.config_file},
+              {"commit", run.environment.git_commit}, {"commit_dirty", run.environment.git_dirty},
+              {"device", run.environment.device.name}, {"driver", run.environment.device.driver_info},
+              {"quick", run.quick},     {"rounds", run.rounds},
+              // The run the numbers come from, as its results.json records it.
+              {"environment", run.environment}};
     const PaperRow* base = paper.baseline.empty() ? nullptr : row_named(paper, paper.baseline);
     json rows = json::array();
     for (const PaperRow& row : paper.rows) {

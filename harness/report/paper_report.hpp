@@ -38,7 +38,7 @@ void write_paper_report(const std::filesystem::path& path, const PaperComparison
 // paper.json beside paper.md: the same numbers as data, for plots (scripts/plot-paper) — per row
 // and column the paper's value and time ratio, canopy's time ratio with its interval, its median
 // time, the case id and every registered error metric (null where not measured); the claims'
-// verdicts.
+// verdicts; the run's commit, device, driver and whole environment, as its results.json has them.
 nlohmann::json paper_data(const PaperComparison& paper, const RunRecord& run);
 void write_paper_data(const std::filesystem::path& path, const PaperComparison& paper, const RunRecord& run);
 
