@@ -294,6 +294,23 @@ double parse_threshold(const std::string& text) {
     }
 }
 
+// The folder of a run given as its folder or its results.json.
+fs::path run_folder(const std::string& where) {
+    return fs::is_directory(where) ? fs::path(where) : fs::path(where).parent_path();
+}
+
+// Committed results (results/paper/, results/baselines/) are written only with --force.
+void refuse_committed(const fs::path& dir, bool force, const std::string& hint) {
+    if (is_committed_results_folder(dir.empty() ? fs::path(".") : dir) && !force)
+        throw ConfigError(dir, 0, "this folder holds committed results; canopy does not write there unless told to", hint);
+}
+
+// The experiment config a run names (relative to the checkout, as results record paths).
+fs::path recorded_config(const RunRecord& run) {
+    const fs::path config = run.config_file;
+    return config.is_relative() ? source_checkout() / config : config;
+}
+
 // A run folder or its results.json.
 RunRecord read_run(const std::string& where) {
     const fs::path path = fs::is_directory(where) ? fs::path(where) / "results.json" : fs::path(where);
@@ -338,10 +355,8 @@ int compare(const CompareCommand& command) {
 int export_gbench(const std::vector<std::string>& runs, bool force) {
     for (const std::string& where : runs) {
         const RunRecord run = read_run(where);
-        const fs::path dir = fs::is_directory(where) ? fs::path(where) : fs::path(where).parent_path();
-        if (is_committed_results_folder(dir) && !force)
-            throw ConfigError(dir, 0, "this folder holds committed results; canopy does not write there unless told to",
-                              "add --force to rewrite its results.gbench.json (then review `git diff`)");
+        const fs::path dir = run_folder(where);
+        refuse_committed(dir, force, "add --force to rewrite its results.gbench.json (then review `git diff`)");
         write_gbench_report(dir / "results.gbench.json", run);
         fmt::print("{}\n", (dir / "results.gbench.json").string());
     }
@@ -353,12 +368,9 @@ int export_gbench(const std::vector<std::string>& runs, bool force) {
 int export_paper(const std::vector<std::string>& runs, bool force) {
     for (const std::string& where : runs) {
         const RunRecord run = read_run(where);
-        const fs::path dir = fs::is_directory(where) ? fs::path(where) : fs::path(where).parent_path();
-        if (is_committed_results_folder(dir) && !force)
-            throw ConfigError(dir, 0, "this folder holds committed results; canopy does not write there unless told to",
-                              "add --force to write its paper.json (then review `git diff`)");
-        fs::path config = run.config_file;
-        if (config.is_relative()) config = source_checkout() / config;
+        const fs::path dir = run_folder(where);
+        refuse_committed(dir, force, "add --force to write its paper.json (then review `git diff`)");
+        const fs::path config = recorded_config(run);
         const Experiment experiment = load_experiment(config, TechniqueRegistry::instance());
         if (!experiment.paper)
             throw ConfigError(config, 0, "this experiment has no [paper] table", "export-paper is for paper experiments");
@@ -419,18 +431,14 @@ int merge(const std::vector<std::string>& shard_dirs, const std::string& out_dir
     std::vector<fs::path> folders;
     for (const std::string& where : shard_dirs) {
         shards.push_back(read_run(where));
-        folders.push_back(fs::is_directory(where) ? fs::path(where) : fs::path(where).parent_path());
+        folders.push_back(run_folder(where));
     }
-    fs::path config = shards.front().config_file;
-    if (config.is_relative()) config = source_checkout() / config;
-    const Experiment experiment = load_experiment(config, registry);
+    const Experiment experiment = load_experiment(recorded_config(shards.front()), registry);
     const std::vector<Case> cases = expand_cases(experiment, registry);
     const MergedRun merged = merge_shards(shards, folders, experiment, cases, registry);
 
     const fs::path out = out_dir;
-    if (is_committed_results_folder(out) && !force)
-        throw ConfigError(out, 0, "this folder holds committed results; canopy does not write there unless told to",
-                          "merge into results/runs/..., or add --force");
+    refuse_committed(out, force, "merge into results/runs/..., or add --force");
     if (fs::exists(out / "results.json") && !force) {
         // Merging the same shards again rewrites the same folder; anything else is refused.
         const RunRecord there = read_run(out.string());
@@ -465,13 +473,11 @@ struct ReportCommand {
 
 // The run folder's HTML report; its path.
 fs::path write_report(const ReportCommand& command) {
-    const fs::path dir = fs::is_directory(command.run) ? fs::path(command.run) : fs::path(command.run).parent_path();
+    const fs::path dir = run_folder(command.run);
     const fs::path out = command.out.empty() ? dir / "report.html" : fs::path(command.out);
     if (!fs::exists(dir / "results.json"))
         throw ConfigError(dir, 0, "no results.json here", "give a run folder that `canopy run` wrote (or its results.json)");
-    if (is_committed_results_folder(out.parent_path().empty() ? fs::path(".") : out.parent_path()) && !command.force)
-        throw ConfigError(out, 0, "this folder holds committed results; canopy does not write there unless told to",
-                          "write the page elsewhere (--out /tmp/report.html), or add --force");
+    refuse_committed(out.parent_path(), command.force, "write the page elsewhere (--out /tmp/report.html), or add --force");
     HtmlReportOptions options;
     options.embed_images = !command.link_images;
     options.pareto_metrics = command.pareto;
@@ -534,17 +540,13 @@ int run(const RunCommand& command, const ReferenceOptions& reference_options) {
         // Whole groups, balanced by estimated cost (run/run_plan.hpp): this shard's cases alone.
         const RunPlan plan = plan_run(experiment, prepared.cases, registry, measurement_settings(experiment, options));
         const std::vector<size_t> shard_of = assign_shards(plan.group_cost, shard->count);
-        std::vector<Case> kept;
+        std::vector<bool> in_shard(prepared.cases.size(), false);
         for (size_t g = 0; g < plan.groups.size(); ++g)
             if (shard_of[g] == shard->index)
-                for (size_t i : plan.groups[g].cases) kept.push_back(prepared.cases[i]);
-        std::stable_sort(kept.begin(), kept.end(), [&](const Case& a, const Case& b) {
-            const auto pos = [&](const Case& c) {
-                return std::find_if(prepared.cases.begin(), prepared.cases.end(), [&](const Case& x) { return x.id == c.id; }) -
-                       prepared.cases.begin();
-            };
-            return pos(a) < pos(b);
-        });
+                for (size_t i : plan.groups[g].cases) in_shard[i] = true;
+        std::vector<Case> kept;  // in the experiment's order
+        for (size_t i = 0; i < prepared.cases.size(); ++i)
+            if (in_shard[i]) kept.push_back(prepared.cases[i]);
         if (kept.empty())
             throw ConfigError(command.config, 0,
                               fmt::format("shard {} has no group: the experiment has {} groups", shard->text(), plan.groups.size()),

@@ -166,7 +166,8 @@ std::string markdown_to_html(std::string_view markdown, int heading_offset) {
             continue;
         }
         if (in_list && (lines[i].front() == ' ' || lines[i].front() == '\t')) {  // a list item's continuation
-            out.insert(out.size() - 6, " " + inline_html(line));
+            constexpr std::string_view kItemEnd = "</li>\n";  // the open item's end, which the text goes before
+            out.insert(out.size() - kItemEnd.size(), " " + inline_html(line));
             continue;
         }
         if (in_list) flush();

@@ -189,7 +189,6 @@ size_t copy_shard_images(const MergedRun& merged, const std::vector<RunRecord>& 
                               "merge the shards' folders as `canopy run --shard` left them");
         const fs::path to = out / relative;
         fs::create_directories(to.parent_path());
-        if (std::error_code e; fs::exists(to, e) && fs::file_size(to) == fs::file_size(from)) continue;
         const fs::path partial = temporary_path(to);  // renamed into place: no half-copied image
         fs::copy_file(from, partial, fs::copy_options::overwrite_existing);
         fs::rename(partial, to);

@@ -27,8 +27,9 @@ struct MergedRun {
 MergedRun merge_shards(const std::vector<RunRecord>& shards, const std::vector<std::filesystem::path>& folders,
                        const Experiment& experiment, const std::vector<Case>& cases, const TechniqueRegistry& registry);
 
-// The images the merged record names, copied from the shard folders into `out` (a file already
-// there with the same size is kept: merging twice writes the same folder). Returns the count copied.
+// The images the merged record names, copied from the shard folders into `out`, each renamed into
+// place over what was there (merging the same shards twice writes the same folder). Returns the
+// count copied.
 size_t copy_shard_images(const MergedRun& merged, const std::vector<RunRecord>& shards,
                          const std::vector<std::filesystem::path>& folders, const std::filesystem::path& out);
 
