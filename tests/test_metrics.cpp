@@ -142,9 +142,9 @@ TEST_CASE("constant offset d gives MAE = RMSE = d and PSNR = 20 log10(1/d); alph
     CHECK(error.included_pixels == 16 * 12);
 }
 
-TEST_CASE("PSNR uses peak 1.0 even when values exceed 1 (unlike OIIO's own PSNR)") {
+TEST_CASE("PSNR uses peak 1.0 even when values exceed 1 (unlike OpenImageIO's PSNR)") {
     // Reference 4.0 everywhere, test 4.5: rmse 0.5, PSNR = 20 log10(1 / 0.5) = 6.0206 dB.
-    // OIIO would use peak 4.5 and report 19.08 dB.
+    // OpenImageIO would use peak 4.5 and report 19.08 dB.
     const Image reference = filled(8, 8, 4.0f, 4.0f, 4.0f);
     const Image test = filled(8, 8, 4.5f, 4.5f, 4.5f);
     CHECK(compute_pixel_error(test, reference).psnr == doctest::Approx(6.0205999133).epsilon(1e-9));

@@ -1,5 +1,5 @@
 // A timing-only build (CANOPY_TIMING_ONLY) refuses, before anything is read, the options that
-// would need OpenImageIO or Embree, and says which flags to add.
+// would need the image-file libraries or Embree, and says which flags to add.
 #include "timing_only/timing_only.hpp"
 
 #include <doctest/doctest.h>

@@ -83,7 +83,7 @@ TEST_CASE("a write into a missing folder names the file and the system's reason"
         CHECK(e.code() == ENOENT);
         CHECK(std::string(e.what()) == "cannot write " + target.string() + ": " + std::strerror(ENOENT));
     }
-    // Images too: OpenImageIO alone reported "cannot write image PATH: " with no reason.
+    // Images too: OpenImageIO, which canopy used before, reported "cannot write image PATH: " with no reason.
     Image image(4, 4);
     for (const std::string name : {"a.exr", "a.png"}) {
         try {

@@ -347,7 +347,7 @@ std::shared_ptr<const HeightField> read_height_field(TomlReader& reader, Object&
         try {
             return std::make_shared<const HeightField>(height_field_from_image(read_image(path), size, scale, file));
         } catch (const std::exception& e) {
-            throw reader.error("height_map_file", e.what(), "a greyscale image whose values lie in [0, 1]");
+            throw reader.error("height_map_file", e.what(), "a greyscale PNG (8 or 16 bits) or OpenEXR image whose values lie in [0, 1]");
         }
     }
     reader.reject("height_map_file", "height_map = \"hills\"", "height_map = \"file\"");

@@ -17,8 +17,8 @@ namespace canopy {
 // reference has a non-finite channel is excluded from every mean (see comparable_pair.hpp); a metric
 // with nothing left to average is NaN.
 struct ImageMetrics {
-    // Linear RGB (alpha ignored), over the R, G, B values of all included pixels; via OpenImageIO
-    // (pixel_error.hpp). psnr = 20 log10(1 / rmse), peak 1.0, +infinity for identical images.
+    // Linear RGB (alpha ignored), over the R, G, B values of all included pixels (pixel_error.hpp).
+    // psnr = 20 log10(1 / rmse), peak 1.0, +infinity for identical images.
     double mae, rmse, psnr;
     double max_error;  // largest |test - ref| of any R, G, B value
     int max_x, max_y;  // where (first in row-major order on ties)

@@ -2,24 +2,10 @@
 
 #include "metrics/comparable_pair.hpp"
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
-
 #include <cmath>
 #include <limits>
 
 namespace canopy {
-
-namespace {
-
-// A read-only view of an Image as an OIIO buffer; OIIO wants a non-const pointer but compare()
-// never writes through it.
-OIIO::ImageBuf wrap_as_image_buf(const Image& image) {
-    OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::FLOAT);
-    return OIIO::ImageBuf(spec, const_cast<float*>(image.pixels.data()));
-}
-
-}  // namespace
 
 PixelError compute_pixel_error(const Image& test, const Image& reference) {
     const ComparablePair pair = make_comparable_pair(test, reference);
@@ -30,25 +16,28 @@ PixelError compute_pixel_error(const Image& test, const Image& reference) {
         result.mae = result.rmse = result.psnr = result.max_error = nan;
         return result;
     }
-
-    const OIIO::ImageBuf test_buf = wrap_as_image_buf(pair.test);
-    const OIIO::ImageBuf reference_buf = wrap_as_image_buf(pair.reference);
-    OIIO::ROI rgb_only = OIIO::get_roi(test_buf.spec());
-    rgb_only.chbegin = 0;
-    rgb_only.chend = 3;
-    const float never = std::numeric_limits<float>::max();  // thresholds are irrelevant here
-    const OIIO::ImageBufAlgo::CompareResults compared =
-        OIIO::ImageBufAlgo::compare(test_buf, reference_buf, never, never, rgb_only);
-
-    // Excluded pixels contribute zero error, so only the denominator needs fixing.
-    const double all_pixels = double(test.width) * double(test.height);
-    const double scale = all_pixels / double(pair.included_count);
-    result.mae = compared.meanerror * scale;
-    result.rmse = compared.rms_error * std::sqrt(scale);
+    double sum_abs = 0.0, sum_squared = 0.0;
+    for (int y = 0; y < test.height; ++y)
+        for (int x = 0; x < test.width; ++x) {
+            const size_t pixel = size_t(y) * size_t(test.width) + size_t(x);
+            if (!pair.included[pixel]) continue;
+            const float* t = pair.test.at(x, y);
+            const float* r = pair.reference.at(x, y);
+            for (int c = 0; c < 3; ++c) {
+                const double error = std::abs(double(t[c]) - double(r[c]));
+                sum_abs += error;
+                sum_squared += error * error;
+                if (error > result.max_error || result.max_x < 0) {  // strictly larger: the first on ties
+                    result.max_error = error;
+                    result.max_x = x;
+                    result.max_y = y;
+                }
+            }
+        }
+    const double values = 3.0 * double(pair.included_count);
+    result.mae = sum_abs / values;
+    result.rmse = std::sqrt(sum_squared / values);
     result.psnr = result.rmse > 0.0 ? 20.0 * std::log10(1.0 / result.rmse) : std::numeric_limits<double>::infinity();
-    result.max_error = compared.maxerror;
-    result.max_x = compared.maxx;
-    result.max_y = compared.maxy;
     return result;
 }
 

@@ -1,4 +1,4 @@
-// Per-channel pixel error statistics (MAE, RMSE, PSNR, max error), computed by OpenImageIO.
+// Per-channel pixel error statistics (MAE, RMSE, PSNR, max error).
 #pragma once
 
 #include "core/image.hpp"
@@ -18,10 +18,8 @@ struct PixelError {
 // Linear RGB values as stored (no clamping, no encoding); alpha is ignored. Pixels where either
 // image has a non-finite channel are left out of every statistic (see comparable_pair.hpp); when no
 // pixel is left all fields are NaN and max_x = max_y = -1.
-//
-// The sums come from OIIO::ImageBufAlgo::compare over channels [0, 3). Two OIIO behaviours are
-// corrected here: OIIO divides by the number of all pixels (we rescale to the included ones), and
-// OIIO's PSNR uses max(1, largest value in either image) as the peak, while ours uses 1.0.
+// Sums in double over the R, G, B values of the included pixels. The peak of PSNR is 1.0, not
+// OpenImageIO's max(1, largest value in either image), which canopy computed these with before.
 PixelError compute_pixel_error(const Image& test, const Image& reference);
 
 }  // namespace canopy

@@ -1,11 +1,13 @@
 #include "reference/reference_cache.hpp"
 
+#include "report/exr_file.hpp"
 #include "scene/population_kind.hpp"
 
-#include <OpenImageIO/imageio.h>
 #include <fmt/format.h>
 
 #include <atomic>
+#include <cerrno>
+#include <fstream>
 #include <cstring>
 #include <stdexcept>
 #include <system_error>
@@ -67,63 +69,61 @@ struct RenderStats {
     uint64_t shadow_rays = 0;
 };
 
-void write_exr(const std::filesystem::path& path, const Image& image, const std::string& key,
+void store_cached_exr(const std::filesystem::path& path, const Image& image, const std::string& key,
                const RenderStats* stats) {
-    // Same folder (so rename is atomic), unique per process and call, and still ".exr" so
-    // OpenImageIO picks the EXR writer.
+    ExrAttributes attributes;
+    attributes.strings["canopy:key"] = key;
+    if (stats) {
+        attributes.numbers["canopy:seconds"] = stats->seconds;
+        attributes.strings["canopy:shadow_rays"] = std::to_string(stats->shadow_rays);
+    }
+    const std::string bytes = encode_exr(image, attributes);
+    // Same folder (so rename is atomic), unique per process and call: two threads may store the
+    // same reference. Not write_bytes_atomically: the cache is not a run's output, and its test
+    // hook for full disks counts a run's own writes.
     static std::atomic<uint64_t> counter{0};
     const std::filesystem::path temporary =
         path.parent_path() / fmt::format(".{}.tmp-{}-{}.exr", path.stem().string(), ::getpid(), counter++);
-    auto output = OIIO::ImageOutput::create(temporary.string());
-    if (!output)
-        throw std::runtime_error(fmt::format("cannot write '{}': {}", path.string(), OIIO::geterror()));
-    OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::FLOAT);
-    spec.attribute("compression", "zip");
-    spec.attribute("canopy:key", key);
-    if (stats) {
-        spec.attribute("canopy:seconds", OIIO::TypeDesc::DOUBLE, &stats->seconds);
-        spec.attribute("canopy:shadow_rays", std::to_string(stats->shadow_rays));
-    }
-    const bool written = output->open(temporary.string(), spec) &&
-                         output->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data()) && output->close();
-    if (!written) {
-        const std::string error = output->geterror();
+    const auto remove_temporary = [&] {
         std::error_code ignored;
         std::filesystem::remove(temporary, ignored);
-        throw std::runtime_error(fmt::format("cannot write '{}': {}", path.string(), error));
+    };
+    {
+        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+        out.write(bytes.data(), std::streamsize(bytes.size()));
+        out.close();
+        if (!out) {
+            const std::string reason = std::strerror(errno);
+            remove_temporary();
+            throw std::runtime_error(fmt::format("cannot write '{}': {}", path.string(), reason));
+        }
     }
     std::error_code error;
     std::filesystem::rename(temporary, path, error);
     if (error) {
-        std::error_code ignored;
-        std::filesystem::remove(temporary, ignored);
+        remove_temporary();
         throw std::runtime_error(fmt::format("cannot move '{}' into place: {}", path.string(), error.message()));
     }
 }
 
-// Reads an RGBA float image written by write_exr; nullopt when it is missing or does not fit.
-std::optional<Image> read_exr(const std::filesystem::path& path, const std::string& key, RenderStats* stats) {
+// Reads an RGBA float image written by store_cached_exr; nullopt when it is missing or does not fit.
+std::optional<Image> load_cached_exr(const std::filesystem::path& path, const std::string& key, RenderStats* stats) {
     std::error_code ignored;
     if (!std::filesystem::is_regular_file(path, ignored)) return std::nullopt;
-    auto input = OIIO::ImageInput::open(path.string());
-    if (!input) {
-        (void)OIIO::geterror();  // clear OpenImageIO's error state: a miss is not an error
-        return std::nullopt;
+    ExrAttributes attributes;
+    Image image;
+    try {
+        image = read_exr(path, &attributes);
+    } catch (const std::runtime_error&) {
+        return std::nullopt;  // unreadable (e.g. cut short): a miss, rendered again
     }
-    const OIIO::ImageSpec& spec = input->spec();
-    if (spec.nchannels != 4 || spec.width <= 0 || spec.height <= 0 || spec.get_string_attribute("canopy:key") != key)
-        return std::nullopt;
-    Image image(spec.width, spec.height);
-    if (!input->read_image(0, 0, 0, 4, OIIO::TypeDesc::FLOAT, image.pixels.data())) {
-        (void)input->geterror();
-        return std::nullopt;
-    }
+    const auto stored_key = attributes.strings.find("canopy:key");
+    if (stored_key == attributes.strings.end() || stored_key->second != key) return std::nullopt;
     if (stats) {
-        stats->seconds = spec.get_float_attribute("canopy:seconds", 0.0f);
-        if (const OIIO::ParamValue* seconds = spec.find_attribute("canopy:seconds", OIIO::TypeDesc::DOUBLE))
-            stats->seconds = seconds->get<double>();
-        stats->shadow_rays = std::strtoull(std::string(spec.get_string_attribute("canopy:shadow_rays", "0")).c_str(),
-                                           nullptr, 10);
+        const auto seconds = attributes.numbers.find("canopy:seconds");
+        stats->seconds = seconds == attributes.numbers.end() ? 0.0 : seconds->second;
+        const auto rays = attributes.strings.find("canopy:shadow_rays");
+        stats->shadow_rays = rays == attributes.strings.end() ? 0 : std::strtoull(rays->second.c_str(), nullptr, 10);
     }
     return image;
 }
@@ -250,9 +250,9 @@ std::string pixel_visibility_cache_key(const Scene& scene, const std::vector<Tri
 std::optional<ReferenceImages> load_cached_reference(const std::filesystem::path& dir, const std::string& key) {
     ReferenceImages images;
     RenderStats stats;
-    std::optional<Image> radiance = read_exr(image_path(dir, key, kImageNames[0]), key, &stats);
-    std::optional<Image> variance = read_exr(image_path(dir, key, kImageNames[1]), key, nullptr);
-    std::optional<Image> visibility = read_exr(image_path(dir, key, kImageNames[2]), key, nullptr);
+    std::optional<Image> radiance = load_cached_exr(image_path(dir, key, kImageNames[0]), key, &stats);
+    std::optional<Image> variance = load_cached_exr(image_path(dir, key, kImageNames[1]), key, nullptr);
+    std::optional<Image> visibility = load_cached_exr(image_path(dir, key, kImageNames[2]), key, nullptr);
     if (!radiance || !variance || !visibility) return std::nullopt;
     const auto same_size = [&](const Image& image) {
         return image.width == radiance->width && image.height == radiance->height;
@@ -281,15 +281,15 @@ void create_cache_folder(const std::filesystem::path& dir) {
 void store_reference(const std::filesystem::path& dir, const std::string& key, const ReferenceImages& images) {
     create_cache_folder(dir);
     const RenderStats stats{images.seconds, images.shadow_rays};
-    write_exr(image_path(dir, key, kImageNames[0]), images.radiance, key, &stats);
-    write_exr(image_path(dir, key, kImageNames[1]), images.variance, key, nullptr);
-    write_exr(image_path(dir, key, kImageNames[2]), images.visibility, key, nullptr);
+    store_cached_exr(image_path(dir, key, kImageNames[0]), images.radiance, key, &stats);
+    store_cached_exr(image_path(dir, key, kImageNames[1]), images.variance, key, nullptr);
+    store_cached_exr(image_path(dir, key, kImageNames[2]), images.visibility, key, nullptr);
 }
 
 std::optional<PixelVisibilityRender> load_cached_pixel_visibility(const std::filesystem::path& dir,
                                                                   const std::string& key) {
     RenderStats stats;
-    std::optional<Image> visibility = read_exr(image_path(dir, key, kPixelVisibilityName), key, &stats);
+    std::optional<Image> visibility = load_cached_exr(image_path(dir, key, kPixelVisibilityName), key, &stats);
     if (!visibility) return std::nullopt;
     return PixelVisibilityRender{std::move(*visibility), stats.seconds, stats.shadow_rays};
 }
@@ -298,7 +298,7 @@ void store_pixel_visibility(const std::filesystem::path& dir, const std::string&
                             const PixelVisibilityRender& render) {
     create_cache_folder(dir);
     const RenderStats stats{render.seconds, render.shadow_rays};
-    write_exr(image_path(dir, key, kPixelVisibilityName), render.visibility, key, &stats);
+    store_cached_exr(image_path(dir, key, kPixelVisibilityName), render.visibility, key, &stats);
 }
 
 }  // namespace canopy

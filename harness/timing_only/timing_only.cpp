@@ -6,7 +6,7 @@ namespace canopy {
 
 void throw_timing_only(const std::string& what) {
     throw std::logic_error(what + " is not in this timing-only canopy (built with CANOPY_TIMING_ONLY, without "
-                           "OpenImageIO and Embree); main() should have refused the command");
+                           "image-file libraries and Embree); main() should have refused the command");
 }
 
 std::optional<std::string> timing_only_refusal(bool timing_only_build, bool wants_reference, bool writes_images) {
@@ -17,7 +17,7 @@ std::optional<std::string> timing_only_refusal(bool timing_only_build, bool want
         add = "--no-reference";
     }
     if (writes_images) {
-        lacks += std::string(lacks.empty() ? "" : " or ") + "write images (no OpenImageIO)";
+        lacks += std::string(lacks.empty() ? "" : " or ") + "write images (no OpenEXR or libpng)";
         add += std::string(add.empty() ? "" : " ") + "--images none";
     }
     return "this canopy is timing-only (built with CANOPY_TIMING_ONLY): it cannot " + lacks + "; add " + add +

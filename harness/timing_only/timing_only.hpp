@@ -1,4 +1,5 @@
-// A timing-only canopy (CMake option CANOPY_TIMING_ONLY) links neither OpenImageIO nor Embree.
+// A timing-only canopy (CMake option CANOPY_TIMING_ONLY) links neither the image-file libraries
+// (OpenEXR, libpng) nor Embree.
 // timing_only/*.cpp stand in for the functions that call them; main() refuses the options that
 // would reach one first (timing_only_refusal), so a stand-in throwing is an internal error.
 #pragma once
