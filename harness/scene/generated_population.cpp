@@ -13,7 +13,8 @@ std::vector<GeneratedPopulation> generate_populations(const Scene& scene, const 
                                                 population.family ? population.family->vertex_data
                                                                   : std::vector<PopulationVertexData>{},
                                                 population.params,
-                                                population.family ? population.family->transmission : 0.0f});
+                                                population.family ? population.family->transmission : 0.0f,
+                                                population.ground.terrain != nullptr});
     }
     return generated;
 }

@@ -41,6 +41,8 @@ struct GeneratedPopulation {
     std::vector<PopulationVertexData> vertex_data;  // a family's kind: one per prototype vertex; else empty
     ParamSet params;  // a family's kind: the population's parameters (Population::params)
     float transmission = 0.0f;  // FamilyPopulation::transmission
+    bool on_terrain = false;    // stands on a heightfield (Population::ground.terrain): a technique may
+                                // then draw geometry that follows it, and keep the cheaper one otherwise
 };
 
 // The scene's populations whose kind is one of `kinds`, in scene order; `meshes` as

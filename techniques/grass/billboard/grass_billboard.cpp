@@ -26,28 +26,39 @@ namespace {
 namespace names {
 constexpr const char* kImage = "billboard";      // RGBA32F x 2 layers: radiance, threshold
 constexpr const char* kBakeDepth = "bake_depth";
-constexpr const char* kQuads = "quads";          // 12 QuadVertex: the xy quad, then the zy quad
+constexpr const char* kQuads = "quads";          // 24 QuadVertex: the xy quad's two halves, then the zy quad's
 constexpr const char* kFront = "bake_front";     // PatchBake of layer 0
 constexpr const char* kSide = "bake_side";       // PatchBake of layer 1
 }  // namespace names
 
-constexpr uint32_t kQuadVertices = 12;
+constexpr uint32_t kQuadVertices = 24;
 
 using grass::cleared;
 using grass::kFarDepth;
 using grass::use;
 
 // The quads for a prototype with these bounds (patch space) over its bake_frame: the xy quad at
-// the patch's z centre (layer 0, in position.w), the zy quad at its x centre (layer 1).
+// the patch's z centre (layer 0, in position.w), the zy quad at its x centre (layer 1). Each is
+// cut in two at the cell's centre: on a terrain its foot follows the ground, whose two triangles
+// meet along a diagonal through that centre (grass_terrain.h), so each half's ground is a line.
 std::array<grass::QuadVertex, kQuadVertices> billboard_quads(const Bounds& bounds) {
     const Bounds f = grass::bake_frame(bounds);
     std::array<grass::QuadVertex, kQuadVertices> quads;
-    for (size_t i = 0; i < 6; ++i) {
-        const glm::vec2 c = grass::kQuadCorners[i];
-        const glm::vec4 uv(c.x, 1.0f - c.y, 0.0f, 0.0f);
-        quads[i] = {glm::vec4(f.min.x + c.x * (f.max.x - f.min.x), c.y * f.max.y, 0.5f, 0.0f), uv};
-        quads[6 + i] = {glm::vec4(0.5f, c.y * f.max.y, f.min.z + c.x * (f.max.z - f.min.z), 1.0f), uv};
-    }
+    const auto half = [&](size_t first, int axis, float from, float to) {
+        const float low = axis == 0 ? f.min.x : f.min.z, high = axis == 0 ? f.max.x : f.max.z;
+        for (size_t i = 0; i < 6; ++i) {
+            const glm::vec2 c = grass::kQuadCorners[i];
+            const float along = from + c.x * (to - from);  // patch x (or z)
+            const glm::vec4 uv((along - low) / (high - low), 1.0f - c.y, 0.0f, 0.0f);
+            quads[first + i] = {axis == 0 ? glm::vec4(along, c.y * f.max.y, 0.5f, 0.0f)
+                                          : glm::vec4(0.5f, c.y * f.max.y, along, 1.0f),
+                                uv};
+        }
+    };
+    half(0, 0, f.min.x, 0.5f);
+    half(6, 0, 0.5f, f.max.x);
+    half(12, 1, f.min.z, 0.5f);
+    half(18, 1, 0.5f, f.max.z);
     return quads;
 }
 
@@ -68,6 +79,7 @@ public:
         const bool crossed = block.orientation == shader::GRASS_BILLBOARD_CROSSED;
         FrameGraph g;
         g.needs.populations = {grass::kGrassPopulationKind};
+        g.needs.populations_on_terrain = true;  // each quad's foot on the ground (grass_billboards.vert)
         g.shader_params.set_block(block);
         g.report["orientation"] = crossed ? "crossed" : "camera-facing";
         g.images.push_back({.name = names::kImage, .format = VK_FORMAT_R32G32B32A32_SFLOAT,
@@ -118,8 +130,9 @@ public:
         RasterState quads;
         quads.vertex_spirv = grass_billboards_vert;
         quads.fragment_spirv = grass_billboards_frag;
-        // Without the copies' normal matrix (locations 6-8): billboards have no normals.
-        quads.vertices = grass::without_locations(grass::quad_layout(), 6, 8);
+        // The copies' normal matrix (locations 6-8) carries no normal here, only the terrain's
+        // corner heights in its w (grass_terrain.h).
+        quads.vertices = grass::quad_layout();
         const uint32_t vertices = crossed ? kQuadVertices : kQuadVertices / 2;
         frame.settings = fmt::format("orientation={}", g.report["orientation"]);
         frame.record = [ground, quads, vertices](PassContext& pc) {

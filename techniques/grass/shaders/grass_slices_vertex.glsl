@@ -5,13 +5,21 @@
 // directions for the light seen in the patch's own axes (App. A; a mirrored cell sees the light
 // mirrored), and the light's irradiance on a surface facing it. Included after the technique's
 // parameter block, which has `slices`.
+//
+// On a terrain every vertex is lifted by the ground under it (grass_terrain.h), as each blade is
+// by the ground under its root: a vertical quad comes cut in two (slices_graph.cpp), its cut
+// placed here where the cell's ground diagonal crosses it, so each half stands on one ground
+// triangle; the horizontal quad is split along that diagonal as grass.image's is. A flat cell
+// draws as before.
 #include "frame_uniforms.glsl"
 #include "scene_lighting.glsl"
 #include "btf_interpolation.h"
 #include "grass_lod_band.glsl"
+#include "grass_terrain.h"
 
 layout(location = 0) in vec4 quad_position;             // patch space
 layout(location = 1) in vec4 quad_uv;                   // u, v; axis (0 x, 1 z, 2 horizontal); slice
+                                                        // (horizontal: the frame's width in x)
 layout(location = 2) in mat4 instance_model;             // locations 2-5
 layout(location = 6) in vec4 instance_normal_matrix[3];  // locations 6-8
 layout(location = 9) in vec4 corner_densities;           // patch order (grass_density.h)
@@ -26,19 +34,33 @@ layout(location = 6) flat out ivec2 layer;   // x: the albedo layer (-1: the hor
 layout(location = 7) flat out vec2 band;     // grass_lod_band.glsl
 
 void main() {
-    vec4 world = instance_model * vec4(quad_position.xyz, 1.0);
+    int axis = int(quad_uv.z), slice = int(quad_uv.w), n = frame.technique.slices;
+    vec2 mirror = vec2(sign(instance_model[0][0]), sign(instance_model[2][2]));
+    vec3 lifts = vec3(instance_normal_matrix[0].w, instance_normal_matrix[1].w, instance_normal_matrix[2].w);
+    vec4 position = vec4(quad_position.xyz, 1.0);
     uv = quad_uv.xy;
-    patch_xz = quad_position.xz;
+    if (quad_position.w == 1.0) {
+        // A cut of a vertical quad: its position across holds the frame's start, its u the end.
+        int across = axis == 0 ? 2 : 0;
+        float start = position[across], end = quad_uv.x;
+        float cut = clamp(grass_diagonal_crossing(axis, axis == 0 ? position.x : position.z, mirror), start, end);
+        position[across] = cut;
+        uv.x = (cut - start) / (end - start);
+    } else if (axis == 2 && lifts != vec3(0.0) && mirror.x * mirror.y > 0.0) {
+        position.x += (1.0 - 2.0 * uv.x) * quad_uv.w;  // reflected across its frame in x
+        uv.x = 1.0 - uv.x;
+    }
+    vec4 world = instance_model * position + vec4(0.0, grass_terrain_lift(lifts, position.xz, mirror), 0.0, 0.0);
+    patch_xz = position.xz;
     densities = corner_densities;
     band = grass_representation_band(instance_model);
 
-    int axis = int(quad_uv.z), slice = int(quad_uv.w), n = frame.technique.slices;
     if (axis == 2) {
         layer = ivec2(-1, 0);
     } else {
         vec3 eye = (inverse(instance_model) * vec4(frame.camera_position.xyz, 1.0)).xyz;
         // The quad's four vertices share its plane, so they agree on the side.
-        bool front = axis == 0 ? eye.x >= quad_position.x : eye.z >= quad_position.z;
+        bool front = axis == 0 ? eye.x >= position.x : eye.z >= position.z;
         int l = (axis * n + slice) * 2 + (front ? 0 : 1);
         layer = ivec2(l, l * BTF_LIGHTS);
     }

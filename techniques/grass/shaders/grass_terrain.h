@@ -25,6 +25,20 @@ CANOPY_FN float grass_terrain_lift(vec3 lift, vec2 root_patch_xz, vec2 mirror_si
     return height_field_quad(vec4(0.0f, lift.x, lift.y, lift.z), grass_cell_point(root_patch_xz, mirror_signs));
 }
 
+// Where the ground's diagonal (its two triangles meet along world-order cell points with
+// x + z = 1, height_field.h) crosses a vertical plane of the patch: the plane x = `plane` (axis 0)
+// or z = `plane` (axis 1), in patch space; returns the other patch coordinate of the crossing. A
+// vertical slice cut there lies over one ground triangle on each side, so lifting its vertices
+// follows the ground exactly.
+CANOPY_FN float grass_diagonal_crossing(int axis, float plane, vec2 mirror_signs) {
+    if (axis == 0) {
+        float cell_x = mirror_signs.x > 0.0f ? plane : 1.0f - plane;
+        return mirror_signs.y > 0.0f ? 1.0f - cell_x : cell_x;
+    }
+    float cell_z = mirror_signs.y > 0.0f ? plane : 1.0f - plane;
+    return mirror_signs.x > 0.0f ? 1.0f - cell_z : cell_z;
+}
+
 CANOPY_END_NAMESPACE
 
 #endif

@@ -46,6 +46,7 @@ public:
                                              .shadow_resolution = uint32_t(params.integer("shadow_resolution"))};
         FrameGraph g;
         g.needs.populations = {grass::kGrassPopulationKind};
+        g.needs.populations_on_terrain = true;  // the quads follow it (grass_slices_vertex.glsl)
         g.shader_params.set_block(block);
         g.report["slices"] = fmt::format("{} per direction and 1 horizontal", settings.slices);
         grass::declare_slices_bake(g, settings);

@@ -84,10 +84,22 @@ shader::PatchBake slice_camera(const Bounds& bounds, const SliceBake& b, uint32_
     return bake;
 }
 
+// Whether a grass population stands on a terrain: the slices are then cut for it (slice_quads).
+bool grass_on_terrain(std::span<const GeneratedPopulation> populations) {
+    return std::any_of(populations.begin(), populations.end(), [](const GeneratedPopulation& p) {
+        return p.kind == kGrassPopulationKind && p.on_terrain;
+    });
+}
+
 // The 2n vertical quads, each at the middle of its section, spanning the frame and the blades'
 // height, and the horizontal one. position.w: 0; uv: (u, v) in the slice's bake, z: the axis
-// (0 x, 1 z, 2 horizontal), w: the slice.
-std::vector<QuadVertex> slice_quads(const Bounds& bounds, uint32_t n, float slice_height, bool tiled) {
+// (0 x, 1 z, 2 horizontal), w: the slice (the horizontal quad: the frame's width in x).
+//
+// For a field on a terrain (`on_terrain`) each vertical quad is cut in two where the cell's
+// ground diagonal crosses it, which depends on the cell's mirror and so is placed by the vertex
+// shader (grass_diagonal_crossing): a crossing vertex has position.w = 1 and carries the frame's
+// extent along its quad instead of a place, its start in position and its end in u.
+std::vector<QuadVertex> slice_quads(const Bounds& bounds, uint32_t n, float slice_height, bool tiled, bool on_terrain) {
     const Bounds f = baked_frame(bounds, tiled);
     const float top = f.max.y;
     std::vector<QuadVertex> quads;
@@ -95,18 +107,33 @@ std::vector<QuadVertex> slice_quads(const Bounds& bounds, uint32_t n, float slic
         const int axis = a == 0 ? 0 : 2, across = a == 0 ? 2 : 0;
         for (uint32_t k = 0; k < n; ++k) {
             const float plane = f.min[axis] + (f.max[axis] - f.min[axis]) * (float(k) + 0.5f) / float(n);
-            for (const glm::vec2 c : kQuadCorners) {
+            // Corner c.x of a quad along the slice: 0 the frame's start, 1 its end, 0.5 the crossing.
+            const auto vertex = [&](glm::vec2 c) {
                 glm::vec4 p(0.0f, c.y * top, 0.0f, 0.0f);
                 p[axis] = plane;
+                if (c.x == 0.5f) {
+                    p[across] = f.min[across];
+                    p.w = 1.0f;
+                    return QuadVertex{p, glm::vec4(f.max[across], 1.0f - c.y, float(a), float(k))};
+                }
                 p[across] = f.min[across] + c.x * (f.max[across] - f.min[across]);
-                quads.push_back({p, glm::vec4(c.x, 1.0f - c.y, float(a), float(k))});
+                return QuadVertex{p, glm::vec4(c.x, 1.0f - c.y, float(a), float(k))};
+            };
+            for (const glm::vec2 c : kQuadCorners) {
+                if (!on_terrain) {
+                    quads.push_back(vertex(c));
+                    continue;
+                }
+                quads.push_back(vertex({c.x * 0.5f, c.y}));
             }
+            if (on_terrain)
+                for (const glm::vec2 c : kQuadCorners) quads.push_back(vertex({0.5f + c.x * 0.5f, c.y}));
         }
     }
     for (const glm::vec2 c : kQuadCorners)
         quads.push_back({glm::vec4(f.min.x + c.x * (f.max.x - f.min.x), slice_height * top,
                                    f.min.z + c.y * (f.max.z - f.min.z), 0.0f),
-                         glm::vec4(c.x, c.y, 2.0f, 0.0f)});
+                         glm::vec4(c.x, c.y, 2.0f, f.max.x - f.min.x)});
     return quads;
 }
 
@@ -133,8 +160,9 @@ void declare_slices_bake(FrameGraph& g, const SlicesSettings& s) {
                         .layers = lights, .persistent = true});
     g.images.push_back({.name = names.bake_depth, .format = VK_FORMAT_D32_SFLOAT, .extent = side});
     g.images.push_back({.name = names.top_depth, .format = VK_FORMAT_D32_SFLOAT, .extent = top});
-    g.buffers.push_back({.name = names.quads, .bytes = sizeof(QuadVertex) * 6 * (2 * n + 1), .usage = kVertexBuffer,
-                         .persistent = true});
+    // Room for the quads on a terrain; a flat field fills and draws the first slices_cell_vertices.
+    g.buffers.push_back({.name = names.quads, .bytes = sizeof(QuadVertex) * slices_cell_vertices_on_terrain(s),
+                         .usage = kVertexBuffer, .persistent = true});
     const std::vector<SliceBake> bakes = slice_bakes(n, s.prefix);
     for (const SliceBake& b : bakes)
         g.buffers.push_back({.name = b.camera, .bytes = sizeof(shader::PatchBake), .usage = kUniformBuffer});
@@ -163,7 +191,7 @@ void declare_slices_bake(FrameGraph& g, const SlicesSettings& s) {
                                       kBakeShadowBias, kBakeShadowNormalOffset);
     setup.record = [bakes, n, slice_height, tiled, names, shadowed, shadow_resolution, prefix = s.prefix](PassContext& pc) {
         const Bounds bounds = prototype_bounds(first_grass(pc.populations()));
-        const std::vector<QuadVertex> quads = slice_quads(bounds, n, slice_height, tiled);
+        const std::vector<QuadVertex> quads = slice_quads(bounds, n, slice_height, tiled, grass_on_terrain(pc.populations()));
         pc.upload(names.quads, quads.data(), quads.size() * sizeof(QuadVertex));
         for (const SliceBake& b : bakes) {
             const shader::PatchBake camera = slice_camera(bounds, b, n, tiled);
@@ -246,12 +274,14 @@ PassDecl slices_frame_pass(const SlicesSettings& s, const RasterState& per_cell,
     const std::optional<RasterState> objects = ground ? std::optional<RasterState>(ground_state()) : std::nullopt;
     RasterState slices = per_cell;
     slices.vertices = quad_layout();
-    const uint32_t vertices = slices_cell_vertices(s);
+    const uint32_t flat_vertices = slices_cell_vertices(s), terrain_vertices = slices_cell_vertices_on_terrain(s);
     frame.settings = fmt::format("{} vertical and 1 horizontal quads per cell{}", 2 * s.slices,
                                  s.culled_by ? " the cull keeps" : "");
     if (s.culled_by) use_cull_survivors(frame, *s.culled_by);
-    frame.record = [objects, slices, vertices, quads = names.quads, culled_by = s.culled_by](PassContext& pc) {
+    frame.record = [objects, slices, flat_vertices, terrain_vertices, quads = names.quads,
+                    culled_by = s.culled_by](PassContext& pc) {
         if (objects) record_ground(pc, *objects);
+        const uint32_t vertices = grass_on_terrain(pc.populations()) ? terrain_vertices : flat_vertices;
         record_copies_culled(pc, slices, quads, vertices, culled_by);
     };
     return frame;

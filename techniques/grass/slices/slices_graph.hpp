@@ -37,8 +37,10 @@ struct SlicesSettings {
     std::optional<std::string> culled_by;
 };
 
-// The vertices the frame pass draws per cell: 2n vertical quads and the horizontal one.
+// The vertices the frame pass draws per cell: 2n vertical quads and the horizontal one; on a
+// terrain each vertical quad is cut in two where the ground's diagonal crosses it.
 inline uint32_t slices_cell_vertices(const SlicesSettings& s) { return 6 * (2 * s.slices + 1); }
+inline uint32_t slices_cell_vertices_on_terrain(const SlicesSettings& s) { return 6 * (4 * s.slices + 1); }
 
 // The slices' images, the quads that show them and the load-phase passes that bake them: one pass
 // per vertical slice and side (front: seen from +axis; back: from -axis) and one for the

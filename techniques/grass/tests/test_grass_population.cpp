@@ -6,6 +6,7 @@
 #include "../common/grass_field.hpp"
 #include "../common/grass_population.hpp"
 #include "../shaders/blade_alpha.h"
+#include "../shaders/grass_terrain.h"
 
 #include "config/scene_config.hpp"
 #include "reference/embree_scene.hpp"
@@ -461,4 +462,22 @@ TEST_CASE("grass population: Embree's instanced cells hit only the blades their 
     CHECK(thinned == 0);
     CHECK(far_from_root == 0);
     CHECK(upright_normals == blade_hits);
+}
+
+TEST_CASE("grass on a terrain: grass_diagonal_crossing finds where the ground's diagonal crosses a vertical plane, "
+          "in every mirror") {
+    // The ground's two triangles meet along world-order cell points with x + z = 1 (height_field.h).
+    for (const glm::vec2 mirror : {glm::vec2(1, 1), glm::vec2(-1, 1), glm::vec2(1, -1), glm::vec2(-1, -1)})
+        for (int axis = 0; axis < 2; ++axis)
+            for (float plane : {0.0f, 0.1f, 0.5f, 0.73f, 1.0f}) {
+                CAPTURE(mirror);
+                CAPTURE(axis);
+                CAPTURE(plane);
+                const float other = shader::grass_diagonal_crossing(axis, plane, mirror);
+                const glm::vec2 patch_xz = axis == 0 ? glm::vec2(plane, other) : glm::vec2(other, plane);
+                const glm::vec2 cell = shader::grass_cell_point(patch_xz, mirror);
+                CHECK(cell.x + cell.y == doctest::Approx(1.0f).epsilon(1e-6));
+                CHECK(other >= 0.0f);
+                CHECK(other <= 1.0f);
+            }
 }
