@@ -4,6 +4,7 @@
 
 #include "gpu/context.hpp"
 
+#include <algorithm>
 #include <cstddef>
 #include <map>
 #include <string>
@@ -13,16 +14,27 @@ namespace canopy {
 // Bytes of device memory allocated per category ("scene", "technique", "targets").
 class MemoryLedger {
 public:
-    void add(const std::string& category, VkDeviceSize bytes) { bytes_[category] += bytes; }
+    void add(const std::string& category, VkDeviceSize bytes) {
+        VkDeviceSize& held = bytes_[category];
+        held += bytes;
+        VkDeviceSize& peak = peaks_[category];
+        peak = std::max(peak, held);
+    }
     void remove(const std::string& category, VkDeviceSize bytes) { bytes_[category] -= bytes; }
     VkDeviceSize bytes(const std::string& category) const {
         auto it = bytes_.find(category);
         return it == bytes_.end() ? 0 : it->second;
     }
+    // The most `category` has held at once (a frame graph's load phase holds resources it then releases).
+    VkDeviceSize peak(const std::string& category) const {
+        auto it = peaks_.find(category);
+        return it == peaks_.end() ? 0 : it->second;
+    }
     const std::map<std::string, VkDeviceSize>& all() const { return bytes_; }
 
 private:
     std::map<std::string, VkDeviceSize> bytes_;
+    std::map<std::string, VkDeviceSize> peaks_;
 };
 
 class Buffer {

@@ -10,6 +10,7 @@
 
 #include <chrono>
 #include <cstring>
+#include <set>
 #include <stdexcept>
 
 namespace canopy {
@@ -620,7 +621,21 @@ PhaseTiming GraphExecutor::run(Phase phase_id, const FrameState& state, bool cou
     return timing;
 }
 
-PhaseTiming GraphExecutor::run_load(const FrameState& state) { return run(Phase::load, state, false); }
+PhaseTiming GraphExecutor::run_load(const FrameState& state) {
+    PhaseTiming timing = run(Phase::load, state, false);
+    // What only the load phase used (a bake's depth target, a shadowed bake's light views) is
+    // freed once it has run (run() waited for it): the frames then hold only what they use, and
+    // the memory a case reports is theirs (MemoryLedger::peak keeps the load's).
+    std::set<std::string> used_by_frames;
+    for (const PassDecl& pass : graph_.passes)
+        if (pass.phase == Phase::frame)
+            for (const ResourceUse& use : pass.uses) used_by_frames.insert(use.resource);
+    for (const ImageDecl& image : graph_.images)
+        if (!image.persistent && !used_by_frames.count(image.name)) resources_->release(image.name);
+    for (const BufferDecl& buffer : graph_.buffers)
+        if (!buffer.persistent && !used_by_frames.count(buffer.name)) resources_->release(buffer.name);
+    return timing;
+}
 PhaseTiming GraphExecutor::run_frame(const FrameState& state, bool count_primitives) {
     return run(Phase::frame, state, count_primitives);
 }

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <set>
+
 #include <stdexcept>
 
 namespace canopy {
@@ -135,17 +137,34 @@ GraphResources::GraphResources(const GpuContext& gpu, MemoryLedger& ledger, cons
     }
 }
 
+namespace {
+
+std::string missing(const char* what, const std::string& name, const std::set<std::string>& released) {
+    if (released.count(name))
+        return fmt::format("the frame graph's {} '{}' was released after the load phase: no frame pass uses it and it "
+                           "is not persistent (declare it persistent to keep it)",
+                           what, name);
+    return fmt::format("the frame graph has no {} '{}'", what, name);
+}
+
+}  // namespace
+
 GraphImage& GraphResources::image(const std::string& name) const {
     auto it = images_.find(name);
-    if (it == images_.end()) throw std::logic_error(fmt::format("the frame graph has no image '{}'", name));
+    if (it == images_.end()) throw std::logic_error(missing("image", name, released_));
     return *it->second;
 }
 
 const Buffer& GraphResources::buffer(const std::string& name) const {
     if (name == graph_names::kFrameUniforms) return *frame_uniforms_;
     auto it = buffers_.find(name);
-    if (it == buffers_.end()) throw std::logic_error(fmt::format("the frame graph has no buffer '{}'", name));
+    if (it == buffers_.end()) throw std::logic_error(missing("buffer", name, released_));
     return it->second;
+}
+
+void GraphResources::release(const std::string& name) {
+    if (images_.erase(name) + buffers_.erase(name) > 0) released_.insert(name);
+    host_visible_.erase(name);
 }
 
 bool GraphResources::host_visible(const std::string& name) const {

@@ -8,6 +8,7 @@
 
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -66,11 +67,15 @@ public:
     const std::map<std::string, std::unique_ptr<GraphImage>>& images() const { return images_; }
     // Transient images' contents are undefined at a frame's start.
     void begin_frame();
+    // Frees a resource no pass will use again (the executor's, after the load phase); naming it
+    // afterwards is an error that says so.
+    void release(const std::string& name);
 
 private:
     std::map<std::string, std::unique_ptr<GraphImage>> images_;
     std::map<std::string, Buffer> buffers_;
     std::map<std::string, bool> host_visible_;
+    std::set<std::string> released_;
     const Buffer* frame_uniforms_;
 };
 

@@ -268,7 +268,7 @@ FrameRenderer::ColorAndVisibility FrameRenderer::read_color_and_pixel_visibility
 }
 
 MemoryUse FrameRenderer::memory() const {
-    return {ledger_.bytes("technique"), ledger_.bytes("targets"), ledger_.bytes("scene")};
+    return {ledger_.bytes("technique"), ledger_.bytes("targets"), ledger_.bytes("scene"), ledger_.peak("technique")};
 }
 
 std::string FrameRenderer::shadow_sampler() const {

@@ -29,9 +29,12 @@ struct FrameTiming {
 };
 
 struct MemoryUse {
-    uint64_t technique_bytes = 0;  // resources the technique declared (shadow maps, ...)
+    uint64_t technique_bytes = 0;  // resources the technique declared (shadow maps, ...) that its frames use
     uint64_t target_bytes = 0;     // camera colour and depth targets, the same for every technique
     uint64_t scene_bytes = 0;      // vertex and index buffers
+    // The most the technique's resources held at once: in the load phase, before what only it
+    // used was released (GraphExecutor::run_load). At least technique_bytes.
+    uint64_t technique_peak_bytes = 0;
 };
 
 // Why a graph cannot run on a device or scene, and what the user can change so that it can.

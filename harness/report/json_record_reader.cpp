@@ -140,6 +140,9 @@ CaseResult read_case(const json& j) {
     const json& memory = j.at("memory_bytes");
     c.memory = {memory.at("technique").get<uint64_t>(), memory.at("targets").get<uint64_t>(),
                 memory.at("scene").get<uint64_t>()};
+    // Absent in results.json written before the load phase's resources were released: they were
+    // held all along, so the peak is what the frames held.
+    c.memory.technique_peak_bytes = memory.value("technique_peak", c.memory.technique_bytes);
     c.triangles = j.at("triangles").get<size_t>();
     // Absent in results.json written before frames counted their triangles.
     if (j.contains("primitives") && !j.at("primitives").is_null())

@@ -169,7 +169,10 @@ nlohmann::json case_json(const CaseResult& c) {
               {"sample_start_s", c.sample_start_s}}},
             {"load", load_json(c.load)},
             {"memory_bytes",
-             {{"technique", c.memory.technique_bytes}, {"targets", c.memory.target_bytes}, {"scene", c.memory.scene_bytes}}},
+             {{"technique", c.memory.technique_bytes},
+              {"technique_peak", c.memory.technique_peak_bytes},
+              {"targets", c.memory.target_bytes},
+              {"scene", c.memory.scene_bytes}}},
             {"triangles", c.triangles},
             {"primitives", c.primitives ? nlohmann::json{{"submitted", c.primitives->submitted},
                                                          {"rasterised", c.primitives->rasterised}}

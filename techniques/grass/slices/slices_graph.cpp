@@ -29,7 +29,7 @@ struct Names {
     std::string top_albedo;  // RGBA32F: the horizontal slice's albedo, threshold
     std::string top_lit;     // RGBA16F x 5 layers
     std::string bake_depth, top_depth;
-    std::string quads;       // (2n + 1) x 6 QuadVertex
+    std::string quads;       // (2n + 1) x 6 QuadVertex, (4n + 1) x 6 on a terrain
     std::string light_depth;  // D32 x 5 layers: a shadowed bake's light views
     std::string shadows;      // BakeShadows
     explicit Names(const std::string& p)

@@ -576,3 +576,35 @@ TEST_CASE("grass.slices on a terrain: quads cut at the ground's diagonal and lif
         CHECK(hills <= bound * flat);
     }
 }
+
+TEST_CASE("grass.slices: what only the load phase uses (the bake's depth targets, a shadowed bake's light views) is "
+          "released once the load has run, and the frames still render") {
+    const Scene scene = one_cell_scene(kAnyCamera, "density = 1");
+    FrameRenderer shadowed = slices_renderer(scene, 64, 48, true, 32);
+    const MemoryUse memory = shadowed.memory();
+    // The depth targets (D32: a vertical slice's bake, the horizontal one's) and the five light views.
+    const uint64_t load_only_images = 4ull * (kWidth * kHeight + kWidth * kWidth + 32ull * 32ull * 5ull);
+    CAPTURE(memory.technique_bytes);
+    CAPTURE(memory.technique_peak_bytes);
+    CHECK(memory.technique_peak_bytes >= memory.technique_bytes + load_only_images);
+    // What the frames read is kept: the slices' albedo alone is 4n layers of RGBA32F.
+    CHECK(memory.technique_bytes >= 16ull * kWidth * kHeight * 4ull * kSlices);
+    for (const char* released : {"bake_light_depth", "bake_depth", "top_bake_depth"}) {
+        CAPTURE(released);
+        try {
+            (void)shadowed.read_image(released);
+            FAIL("a released image was read");
+        } catch (const std::logic_error& e) {
+            CHECK(std::string(e.what()).find("released after the load phase") != std::string::npos);
+        }
+    }
+    shadowed.render();
+    const Image first = shadowed.read_color();
+    shadowed.render();
+    const Image second = shadowed.read_color();
+    CHECK(first.pixels == second.pixels);
+    int covered = 0;
+    for (int y = 0; y < first.height; ++y)
+        for (int x = 0; x < first.width; ++x) covered += grass::test::shows_grass(first.at(x, y));
+    CHECK(covered > 100);
+}
