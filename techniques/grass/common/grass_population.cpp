@@ -60,7 +60,7 @@ std::vector<ParamSpec> grass_population_params() {
                                   "file: `density_map_file`, from `density_low` where it is 0 to `density` where it is 1"));
     s.push_back(ParamSpec::real("density_low", 0.0, 0.0, 1.0, "ramp_x, clearings and file: the low end, at most `density`"));
     s.push_back(ParamSpec::path("density_map_file",
-                                "density_map = file: a greyscale image over the whole field (PNG, EXR, ...; its first channel, "
+                                "density_map = file: a greyscale image over the whole field (PNG of 8 or 16 bits, or OpenEXR; its first channel, "
                                 "in [0, 1]), its first row along the field's -z edge and its first column along -x, "
                                 "relative to the scene file"));
     s.push_back(ParamSpec::integer("density_map_texels", 64, 2, 4096, "ramp_x and clearings: the map's texels a side over the field"));
