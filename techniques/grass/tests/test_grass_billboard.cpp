@@ -132,25 +132,16 @@ TEST_CASE("grass.billboard on a terrain: with each quad's foot on the ground, th
           "lifted blades, crossed and camera-facing") {
     // A standing eye a little above the 4 x 4-cell field; height_scale 0 is the same field flat.
     const char* camera = "[camera]\nposition = [0.0, 2.5, 4.5]\ntarget = [0.0, 0.3, 0.0]\nfov = 45";
-    for (const char* orientation : {"crossed", "camera_facing"}) {
+    // Measured 0.58 (crossed) and 0.56 (camera-facing) times the flat field's: the hills' slopes
+    // face the eye. Quads left at their cell's corner height read 1.05 and 1.14 times; lifted with
+    // the cells' mirrors ignored, 0.62 times.
+    for (const std::string orientation : {"crossed", "camera_facing"}) {
         CAPTURE(orientation);
-        const grass::test::FlatAndHills e = grass::test::flat_and_hills_coverage_error(camera, [&](const Scene& scene) {
+        grass::test::check_follows_terrain(camera, 0.8, [&](const Scene& scene) {
             FrameRenderer renderer(test::gpu(), scene, build_scene_meshes(scene), 200, 120,
                                    billboard().graph(params(orientation)));
             renderer.render();
             return renderer.read_color();
         });
-        CAPTURE(e.flat_blades);
-        CAPTURE(e.hills_blades);
-        CHECK(e.flat_blades > 1000);
-        CHECK(e.hills_blades > 1000);
-        const double flat = e.flat, hills = e.hills;
-        CAPTURE(flat);
-        CAPTURE(hills);
-        CHECK(flat > 0.0);
-        // Measured 0.58 (crossed) and 0.56 (camera-facing) times the flat field's: the hills' slopes
-        // face the eye. Quads left at their cell's corner height read 1.05 and 1.14 times; lifted
-        // with the cells' mirrors ignored, 0.62 times.
-        CHECK(hills <= 0.8 * flat);
     }
 }

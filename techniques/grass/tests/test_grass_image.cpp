@@ -87,22 +87,13 @@ TEST_CASE("grass.image on a terrain: quads lifted at their corners and split alo
     // From high above at an angle (the image is a far representation); height_scale 0 is the same
     // field flat. The check compares the per-tile coverage error with the flat field's.
     const char* camera = "[camera]\nposition = [0.0, 7.0, 3.5]\ntarget = [0.0, 0.3, 0.0]\nfov = 40";
-    const grass::test::FlatAndHills e = grass::test::flat_and_hills_coverage_error(camera, [](const Scene& scene) {
+    // Measured 1.38 x: a top view baked on flat ground, laid on a slope, still misses some blades.
+    // Quads split along their own diagonal read 1.64 x, quads not lifted 2.46 x.
+    grass::test::check_follows_terrain(camera, 1.5, [](const Scene& scene) {
         FrameRenderer renderer = renderer_for(scene, 200, 120);
         renderer.render();
         return renderer.read_color();
     });
-    CAPTURE(e.flat_blades);
-    CAPTURE(e.hills_blades);
-    CHECK(e.flat_blades > 1000);
-    CHECK(e.hills_blades > 1000);
-    const double flat = e.flat, hills = e.hills;
-    CAPTURE(flat);
-    CAPTURE(hills);
-    CHECK(flat > 0.0);
-    // Measured 1.38 x: a top view baked on flat ground, laid on a slope, still misses some blades.
-    // Quads split along their own diagonal read 1.64 x, quads not lifted 2.46 x.
-    CHECK(hills <= 1.5 * flat);
 }
 
 TEST_CASE("grass.image: a thinner field cuts the baked blades whose threshold the density does not reach") {

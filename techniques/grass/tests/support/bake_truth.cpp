@@ -7,6 +7,7 @@
 #include "scene/population_kind.hpp"
 #include "support/reference_hits.hpp"
 
+#include <doctest/doctest.h>
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -167,6 +168,20 @@ FlatAndHills flat_and_hills_coverage_error(const std::string& camera, const std:
     out.flat = tile_coverage_error(flat, render(flat), 8, &out.flat_blades);
     out.hills = tile_coverage_error(hills, render(hills), 8, &out.hills_blades);
     return out;
+}
+
+void check_follows_terrain(const std::string& camera, double bound, const std::function<Image(const Scene&)>& render,
+                           int min_blades) {
+    const FlatAndHills e = flat_and_hills_coverage_error(camera, render);
+    CAPTURE(camera);
+    CAPTURE(e.flat_blades);
+    CAPTURE(e.hills_blades);
+    CAPTURE(e.flat);
+    CAPTURE(e.hills);
+    CHECK(e.flat_blades > min_blades);
+    CHECK(e.hills_blades > min_blades);
+    CHECK(e.flat > 0.0);
+    CHECK(e.hills <= bound * e.flat);
 }
 
 }  // namespace canopy::grass::test

@@ -94,4 +94,10 @@ struct FlatAndHills {
 };
 FlatAndHills flat_and_hills_coverage_error(const std::string& camera, const std::function<Image(const Scene&)>& render);
 
+// A representation follows the terrain: with flat_and_hills_coverage_error's fields, the reference
+// finds more than `min_blades` blade pixels in each, the flat field's error is above 0 and the
+// hills' at most `bound` times it. Reports the errors when a check fails.
+void check_follows_terrain(const std::string& camera, double bound, const std::function<Image(const Scene&)>& render,
+                           int min_blades = 1000);
+
 }  // namespace canopy::grass::test
