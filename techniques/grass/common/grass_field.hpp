@@ -39,6 +39,10 @@ DensityMap density_map(DensityPattern pattern, float low, float high, uint32_t t
 // value outside [0, 1] or not finite, or an empty image.
 DensityMap density_map_from_image(const Image& image, float low, float high, const std::string& file);
 
+// The most cells a field has along x or z (the `cells_x` and `cells_z` parameters' range; the
+// macro-cells' 16-bit records and grid-height buffers are sized by it).
+inline constexpr uint32_t kMaxFieldSide = 4096;
+
 struct GrassField {
     glm::uvec2 cells{32, 32};  // Lemme's Table 7.1 field (L1022)
     float cell_size = 1.0f;    // world units a cell (and a patch) is wide

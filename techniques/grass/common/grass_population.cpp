@@ -44,8 +44,8 @@ const RegisterPopulationKind<GrassPopulation> registered;
 std::vector<ParamSpec> grass_population_params() {
     const BladePatchParams d;
     std::vector<ParamSpec> s;
-    s.push_back(ParamSpec::integer("cells_x", 4, 1, 4096, "terrain cells along x (Lemme Table 7.1: 32)"));
-    s.push_back(ParamSpec::integer("cells_z", 4, 1, 4096, "terrain cells along z (Lemme Table 7.1: 32)"));
+    s.push_back(ParamSpec::integer("cells_x", 4, 1, kMaxFieldSide, "terrain cells along x (Lemme Table 7.1: 32)"));
+    s.push_back(ParamSpec::integer("cells_z", 4, 1, kMaxFieldSide, "terrain cells along z (Lemme Table 7.1: 32)"));
     s.push_back(ParamSpec::real("cell_size", 1.0, 1e-3, 1e4, "world units a cell, and so the patch, is wide"));
     s.push_back(ParamSpec::real("centre_x", 0.0, -1e5, 1e5, "world x of the field's centre"));
     s.push_back(ParamSpec::real("centre_z", 0.0, -1e5, 1e5, "world z of the field's centre"));

@@ -29,26 +29,41 @@ glm::uvec2 cells_of(const GeneratedPopulation* population) {
 
 }  // namespace
 
-void declare_macro_buffers(FrameGraph& g) {
+void declare_macro_buffers(FrameGraph& g, bool terrain) {
     g.buffers.push_back({.name = macro_names::kCells, .bytes_per_copy = sizeof(shader::GrassCell),
                          .usage = kStorageBuffer, .persistent = true});
     g.buffers.push_back({.name = macro_names::kMacros, .bytes_per_copy = sizeof(MacroInstance), .usage = kVertexBuffer,
                          .persistent = true});
     g.buffers.push_back({.name = macro_names::kField, .bytes = sizeof(shader::GrassMacroField),
                          .usage = kUniformBuffer, .persistent = true});
+    // (cells.x + 1)(cells.z + 1) floats: one a copy, plus the far row and column of a field of at
+    // most kMaxFieldSide cells a side.
+    if (terrain)
+        g.buffers.push_back({.name = macro_names::kHeights, .bytes = sizeof(float) * (2 * kMaxFieldSide + 1),
+                             .bytes_per_copy = sizeof(float), .usage = kStorageBuffer, .persistent = true});
 }
 
-PassDecl macro_setup_pass(uint32_t k) {
+PassDecl macro_setup_pass(uint32_t k, const std::optional<MacroTerrain>& terrain) {
     PassDecl p{.name = "macro_setup", .kind = PassKind::copy, .phase = Phase::load};
     p.uses = {use(macro_names::kCells, Use::transfer_write), use(macro_names::kMacros, Use::transfer_write),
               use(macro_names::kField, Use::transfer_write)};
-    p.settings = fmt::format("macro_cells={}", k);
-    p.record = [k](PassContext& pc) {
+    if (terrain) p.uses.push_back(use(macro_names::kHeights, Use::transfer_write));
+    p.settings = fmt::format("macro_cells={}{}", k,
+                             terrain ? fmt::format(", split above {} unplanarity", terrain->max_unplanarity) : "");
+    p.record = [k, terrain](PassContext& pc) {
         const GeneratedPopulation* grass = first_grass(pc.populations());
         if (!grass || grass->instances.empty()) return;
         const GrassField field = field_of(grass);
         const std::vector<shader::GrassCell> cells = grass_cells(field, grass->instances);
-        const std::vector<MacroInstance> macros = macro_instances(field.cells, k);
+        std::vector<MacroInstance> macros;
+        if (terrain) {
+            const std::vector<float> heights = grid_heights(field, grass->instances);
+            macros = macro_instances_on_terrain(field.cells, k, heights, terrain->max_unplanarity);
+            *terrain->count = uint32_t(macros.size());
+            pc.upload(macro_names::kHeights, heights.data(), heights.size() * sizeof(float));
+        } else {
+            macros = macro_instances(field.cells, k);
+        }
         const shader::GrassMacroField placement = macro_field(field, k, cell_frame(prototype_bounds(grass)).max.y, grass->transmission);
         pc.upload(macro_names::kCells, cells.data(), cells.size() * sizeof(shader::GrassCell));
         pc.upload(macro_names::kMacros, macros.data(), macros.size() * sizeof(MacroInstance));
@@ -67,12 +82,13 @@ VertexLayout macro_layout() {
 }
 
 void record_ground_and_macros(PassContext& pc, const RasterState& ground, const RasterState& over,
-                              const std::string& vertex_buffer, uint32_t vertex_count, uint32_t k) {
+                              const std::string& vertex_buffer, uint32_t vertex_count, uint32_t k,
+                              const std::optional<MacroTerrain>& terrain) {
     pc.bind(pc.raster_pipeline(ground));
     pc.draw_scene(SceneFilter::all);
     const GeneratedPopulation* grass = first_grass(pc.populations());
     if (!grass || grass->instances.empty()) return;
-    const uint32_t macros = macro_count(cells_of(grass), k);
+    const uint32_t macros = terrain ? *terrain->count : macro_count(cells_of(grass), k);
     pc.bind(pc.raster_pipeline(over));
     const std::array<std::string, 2> buffers{vertex_buffer, macro_names::kMacros};
     pc.draw(buffers, vertex_count, macros);

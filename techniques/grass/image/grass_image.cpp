@@ -33,16 +33,20 @@ public:
     std::vector<std::string> pareto_errors() const override { return grass::pareto_errors(); }
 
     FrameGraph graph(const ParamSet& params) const override {
-        const grass::ImageSettings settings{.resolution = uint32_t(params.integer("resolution")),
-                                            .slice_height = float(params.real("slice_height")),
-                                            .macro_cells = uint32_t(params.integer("macro_cells"))};
+        grass::ImageSettings settings{.resolution = uint32_t(params.integer("resolution")),
+                                      .slice_height = float(params.real("slice_height")),
+                                      .macro_cells = uint32_t(params.integer("macro_cells"))};
+        if (settings.macro_cells > 0)
+            settings.macro_terrain = grass::MacroTerrain{.max_unplanarity = float(params.real("macro_unplanarity"))};
         FrameGraph g;
         g.needs.populations = {grass::kGrassPopulationKind};
-        // One quad a cell follows a terrain (grass_image_vertex.glsl); macro-cells do not yet.
-        g.needs.populations_on_terrain = settings.macro_cells == 0;
+        // A quad per cell (grass_image_vertex.glsl) or per macro-cell (grass_image_macro_vertex.glsl)
+        // follows a terrain.
+        g.needs.populations_on_terrain = true;
         g.shader_params.set_block(shader::GrassImageParams::from(params));
         if (settings.macro_cells > 0)
-            g.report["macro_cells"] = fmt::format("{} x {}", settings.macro_cells, settings.macro_cells);
+            g.report["macro_cells"] = fmt::format("{} x {}, split above unplanarity {} on a terrain", settings.macro_cells,
+                                                  settings.macro_cells, params.real("macro_unplanarity"));
         grass::declare_image_bake(g, settings);
         RasterState per_cell;
         per_cell.vertex_spirv = grass_image_vert;
@@ -51,6 +55,9 @@ public:
             settings, per_cell, true,
             {cleared(graph_names::kColor, Use::color_attachment, grass::kUncoveredClear),
              cleared(graph_names::kDepth, Use::depth_attachment, kFarDepth)}));
+        if (settings.macro_cells == 0)  // said, as grass.lod says its unused settings
+            g.passes.back().settings +=
+                fmt::format("; macro_unplanarity {} unused: macro_cells = 0", params.real("macro_unplanarity"));
         return g;
     }
 };

@@ -10,6 +10,7 @@
 #include "../common/patch_bake.hpp"
 
 #include "shaders/grass/grass_image_macro_frag.h"
+#include "shaders/grass/grass_image_macro_terrain_vert.h"
 #include "shaders/grass/grass_image_macro_vert.h"
 #include "shaders/grass/image_bake_frag.h"
 
@@ -62,8 +63,8 @@ void declare_image_bake(FrameGraph& g, const ImageSettings& s) {
     g.buffers.push_back({.name = names.quad, .bytes = sizeof(QuadVertex) * 6, .usage = kVertexBuffer, .persistent = true});
     g.buffers.push_back({.name = names.camera, .bytes = sizeof(shader::PatchBake), .usage = kUniformBuffer});
     if (s.macro_cells > 0) {  // a quadtree's bands share the field records it declares
-        declare_macro_buffers(g);
-        g.passes.push_back(macro_setup_pass(s.macro_cells));
+        declare_macro_buffers(g, s.macro_terrain.has_value());
+        g.passes.push_back(macro_setup_pass(s.macro_cells, s.macro_terrain));
     }
 
     PassDecl setup{.name = s.prefix + "bake_setup", .kind = PassKind::copy, .phase = Phase::load};
@@ -115,13 +116,17 @@ PassDecl image_frame_pass(const ImageSettings& s, const RasterState& per_cell, b
         frame.uses.push_back(use(macro_names::kField, Use::uniform, 3));
         frame.uses.push_back(use(macro_names::kCells, Use::storage_read, 4));
         frame.uses.push_back(use(macro_names::kMacros, Use::vertex));
+        if (s.macro_terrain) frame.uses.push_back(use(macro_names::kHeights, Use::storage_read, 5));
         RasterState slice;
-        slice.vertex_spirv = grass_image_macro_vert;
+        if (s.macro_terrain)
+            slice.vertex_spirv = grass_image_macro_terrain_vert;
+        else
+            slice.vertex_spirv = grass_image_macro_vert;
         slice.fragment_spirv = grass_image_macro_frag;
         slice.vertices = macro_layout();
         frame.settings = fmt::format("one quad per {} x {} macro-cell", macro, macro);
-        frame.record = [objects, slice, macro, quad = names.quad](PassContext& pc) {
-            record_ground_and_macros(pc, *objects, slice, quad, 6, macro);
+        frame.record = [objects, slice, macro, quad = names.quad, terrain = s.macro_terrain](PassContext& pc) {
+            record_ground_and_macros(pc, *objects, slice, quad, 6, macro, terrain);
         };
     } else {
         RasterState slice = per_cell;

@@ -6,6 +6,7 @@
 #include "graph/frame_graph.hpp"
 #include "graph/raster_state.hpp"
 
+#include "../common/macro_passes.hpp"
 #include "../common/quadtree_passes.hpp"
 
 #include <cstdint>
@@ -27,6 +28,9 @@ struct ImageSettings {
     // (quadtree_passes.hpp), with the tiled bake; its shaders are the macro bodies
     // (shaders/grass_image_macro_*.glsl), given as `per_cell` to image_frame_pass.
     std::optional<QuadtreeBandDecl> selected_by;
+    // Macro-cells that follow a terrain (grass.image's own; not a quadtree's): each quad's corners
+    // on the field's grid heights, uneven macro-cells split (macro_passes.hpp).
+    std::optional<MacroTerrain> macro_terrain;
 };
 
 // The vertices the frame pass draws per cell (a cull drawing them needs it).
