@@ -14,16 +14,18 @@ TEST_CASE("a source file newer than the binary is named, the newest of several; 
     const auto b = checkout.write("techniques/grass/shaders/b.glsl", "// b");
     const auto notes = checkout.write("results/grass/README.md", "notes");
     const auto data = checkout.write("techniques/grass/tests/data.json", "{}");
+    const auto family_test = checkout.write("techniques/grass/tests/test_x.cpp", "// a family's test");
     const auto lists = checkout.write("CMakeLists.txt", "project(x)");
     const auto built = std::filesystem::file_time_type::clock::now();
     const auto at = [&](const std::filesystem::path& file, int seconds) {
         std::filesystem::last_write_time(file, built + std::chrono::seconds(seconds));
     };
-    for (const auto& file : {a, b, notes, data, lists}) at(file, -60);
+    for (const auto& file : {a, b, notes, data, lists, family_test}) at(file, -60);
     CHECK_FALSE(source_newer_than(checkout.path(), built));
     at(notes, 30);
     at(data, 30);
-    CHECK_FALSE(source_newer_than(checkout.path(), built));  // results and data are not sources
+    at(family_test, 30);
+    CHECK_FALSE(source_newer_than(checkout.path(), built));  // results, data and a family's tests are not canopy's sources
     at(a, 10);
     REQUIRE(source_newer_than(checkout.path(), built));
     CHECK(*source_newer_than(checkout.path(), built) == std::filesystem::path("harness/run/a.cpp"));

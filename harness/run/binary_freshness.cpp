@@ -38,8 +38,11 @@ std::optional<std::filesystem::path> source_newer_than(const std::filesystem::pa
     for (const char* folder : {"harness", "techniques"}) {
         std::error_code error;
         for (auto it = std::filesystem::recursive_directory_iterator(checkout / folder, error);
-             !error && it != std::filesystem::recursive_directory_iterator(); it.increment(error))
-            if (it->is_regular_file(error) && is_source(it->path())) consider(it->path());
+             !error && it != std::filesystem::recursive_directory_iterator(); it.increment(error)) {
+            // A family's tests are not in canopy: editing one relinks only its test binary.
+            if (it->is_directory(error) && it->path().filename() == "tests") it.disable_recursion_pending();
+            else if (it->is_regular_file(error) && is_source(it->path())) consider(it->path());
+        }
     }
     return newest;
 }

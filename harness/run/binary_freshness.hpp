@@ -10,7 +10,8 @@
 
 namespace canopy {
 
-// A source file under `checkout` (harness/ and techniques/: C++ and GLSL) modified after `built`,
+// A source file under `checkout` (harness/ and techniques/: C++ and GLSL, a family's tests/ left
+// out, as canopy is not built from them) modified after `built`,
 // relative to `checkout`: the newest one; nothing when none is, or when the folders are absent.
 std::optional<std::filesystem::path> source_newer_than(const std::filesystem::path& checkout,
                                                        std::filesystem::file_time_type built);
