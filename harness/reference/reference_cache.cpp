@@ -1,13 +1,12 @@
 #include "reference/reference_cache.hpp"
 
+#include "report/atomic_file.hpp"
 #include "report/exr_file.hpp"
 #include "scene/population_kind.hpp"
 
 #include <fmt/format.h>
 
 #include <atomic>
-#include <cerrno>
-#include <fstream>
 #include <cstring>
 #include <stdexcept>
 #include <system_error>
@@ -70,40 +69,18 @@ struct RenderStats {
 };
 
 void store_cached_exr(const std::filesystem::path& path, const Image& image, const std::string& key,
-               const RenderStats* stats) {
+                      const RenderStats* stats) {
     ExrAttributes attributes;
     attributes.strings["canopy:key"] = key;
     if (stats) {
         attributes.numbers["canopy:seconds"] = stats->seconds;
         attributes.strings["canopy:shadow_rays"] = std::to_string(stats->shadow_rays);
     }
-    const std::string bytes = encode_exr(image, attributes);
-    // Same folder (so rename is atomic), unique per process and call: two threads may store the
-    // same reference. Not write_bytes_atomically: the cache is not a run's output, and its test
-    // hook for full disks counts a run's own writes.
+    // Unique per process and call: two threads may store the same reference. Not
+    // write_bytes_atomically's name, nor its test hook: the cache is not a run's output.
     static std::atomic<uint64_t> counter{0};
-    const std::filesystem::path temporary =
-        path.parent_path() / fmt::format(".{}.tmp-{}-{}.exr", path.stem().string(), ::getpid(), counter++);
-    const auto remove_temporary = [&] {
-        std::error_code ignored;
-        std::filesystem::remove(temporary, ignored);
-    };
-    {
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        out.write(bytes.data(), std::streamsize(bytes.size()));
-        out.close();
-        if (!out) {
-            const std::string reason = std::strerror(errno);
-            remove_temporary();
-            throw std::runtime_error(fmt::format("cannot write '{}': {}", path.string(), reason));
-        }
-    }
-    std::error_code error;
-    std::filesystem::rename(temporary, path, error);
-    if (error) {
-        remove_temporary();
-        throw std::runtime_error(fmt::format("cannot move '{}' into place: {}", path.string(), error.message()));
-    }
+    write_bytes_through(path.parent_path() / fmt::format(".{}.tmp-{}-{}.exr", path.stem().string(), ::getpid(), counter++),
+                        path, encode_exr(image, attributes));
 }
 
 // Reads an RGBA float image written by store_cached_exr; nullopt when it is missing or does not fit.

@@ -48,6 +48,24 @@ int write_all(int fd, std::string_view bytes, bool fail) {
     return 0;
 }
 
+// Writes `bytes` to `temp`, then renames it to `path`; `fail`: the test hook's failure.
+void write_then_rename(const std::filesystem::path& temp, const std::filesystem::path& path, std::string_view bytes,
+                       bool fail) {
+    const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    if (fd < 0) {
+        const int code = errno;
+        throw WriteError(path, code, std::strerror(code));
+    }
+    // No fsync: this protects readers and killed processes from half-written files, not a power cut.
+    int code = write_all(fd, bytes, fail);
+    if (::close(fd) != 0 && code == 0) code = errno;  // some filesystems report a full disk only here
+    if (code == 0 && std::rename(temp.c_str(), path.c_str()) != 0) code = errno;
+    if (code != 0) {
+        ::unlink(temp.c_str());
+        throw WriteError(path, code, std::strerror(code));
+    }
+}
+
 }  // namespace
 
 WriteError::WriteError(const std::filesystem::path& path, int code, const std::string& reason)
@@ -70,20 +88,12 @@ bool is_temporary_file(const std::filesystem::path& file) {
 }
 
 void write_bytes_atomically(const std::filesystem::path& path, std::string_view bytes) {
-    const std::filesystem::path temp = temporary_path(path);
-    const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
-    if (fd < 0) {
-        const int code = errno;
-        throw WriteError(path, code, std::strerror(code));
-    }
-    // No fsync: this protects readers and killed processes from half-written files, not a power cut.
-    int code = write_all(fd, bytes, injected_failure());
-    if (::close(fd) != 0 && code == 0) code = errno;  // some filesystems report a full disk only here
-    if (code == 0 && std::rename(temp.c_str(), path.c_str()) != 0) code = errno;
-    if (code != 0) {
-        ::unlink(temp.c_str());
-        throw WriteError(path, code, std::strerror(code));
-    }
+    write_then_rename(temporary_path(path), path, bytes, injected_failure());
+}
+
+void write_bytes_through(const std::filesystem::path& temporary, const std::filesystem::path& path,
+                         std::string_view bytes) {
+    write_then_rename(temporary, path, bytes, false);
 }
 
 void write_text_atomically(const std::filesystem::path& path, const std::string& content) {

@@ -22,6 +22,11 @@ private:
 
 // Throws WriteError when the temporary file cannot be created, written, closed or renamed.
 void write_bytes_atomically(const std::filesystem::path& path, std::string_view bytes);
+// The same through a temporary file the caller names, in `path`'s folder: for a writer that
+// several threads of one process may run on one path (the reference cache), whose files are not a
+// run's outputs and so not counted by the test hook below.
+void write_bytes_through(const std::filesystem::path& temporary, const std::filesystem::path& path,
+                         std::string_view bytes);
 void write_text_atomically(const std::filesystem::path& path, const std::string& content);
 
 // The temporary name a write uses until it is renamed into place: ".<stem>.tmp<pid><extension>"

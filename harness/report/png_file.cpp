@@ -59,6 +59,19 @@ struct FileCloser {
     void operator()(std::FILE* file) const { std::fclose(file); }
 };
 
+// libpng's read structures, destroyed on every way out (an error, an allocation that throws).
+struct PngReader {
+    png_structp png = nullptr;
+    png_infop info = nullptr;
+    explicit PngReader(ReadState* state) {
+        png = png_create_read_struct(PNG_LIBPNG_VER_STRING, state, record_error, ignore_warning);
+        if (png) info = png_create_info_struct(png);
+    }
+    ~PngReader() { png_destroy_read_struct(&png, &info, nullptr); }
+    PngReader(const PngReader&) = delete;
+    PngReader& operator=(const PngReader&) = delete;
+};
+
 }  // namespace
 
 std::string encode_png_rgb8(int width, int height, const std::vector<uint8_t>& rgb) {
@@ -85,34 +98,20 @@ Image read_png(const std::filesystem::path& path) {
     std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
     if (!file) throw fail(std::strerror(errno));
     ReadState state;
-    png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &state, record_error, ignore_warning);
-    png_infop info = png ? png_create_info_struct(png) : nullptr;
-    const auto destroy = [&] { png_destroy_read_struct(&png, &info, nullptr); };
-    if (!info) {
-        destroy();
-        throw fail("libpng could not start");
-    }
-    png_init_io(png, file.get());
+    PngReader reader(&state);
+    if (!reader.info) throw fail("libpng could not start");
+    png_init_io(reader.png, file.get());
     Layout layout;
-    if (!read_layout(png, info, &layout)) {
-        destroy();
-        throw fail(state.message);
-    }
-    if (layout.width > png_uint_32(kMaxImageSide) || layout.height > png_uint_32(kMaxImageSide)) {
-        destroy();
+    if (!read_layout(reader.png, reader.info, &layout)) throw fail(state.message);
+    if (layout.width > png_uint_32(kMaxImageSide) || layout.height > png_uint_32(kMaxImageSide))
         throw fail("it is " + std::to_string(layout.width) + "x" + std::to_string(layout.height) +
                    ", larger than canopy reads (" + std::to_string(kMaxImageSide) + " a side)");
-    }
     const size_t bytes_per_value = size_t(layout.bit_depth) / 8;
     const size_t row_bytes = size_t(layout.width) * size_t(layout.channels) * bytes_per_value;
     std::vector<png_byte> pixels(row_bytes * layout.height);
     std::vector<png_bytep> rows(layout.height);
     for (size_t y = 0; y < layout.height; ++y) rows[y] = pixels.data() + y * row_bytes;
-    if (!read_rows(png, info, rows.data())) {
-        destroy();
-        throw fail(state.message);
-    }
-    destroy();
+    if (!read_rows(reader.png, reader.info, rows.data())) throw fail(state.message);
 
     Image image(int(layout.width), int(layout.height));
     const float largest = layout.bit_depth == 16 ? 65535.0f : 255.0f;  // divided, so 51 reads as 51 / 255 exactly

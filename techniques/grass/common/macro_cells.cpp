@@ -68,7 +68,7 @@ float macro_unplanarity(const std::vector<float>& grid, glm::uvec2 cells, MacroI
             const float bilinear = (h00 * (1.0f - u) + h10 * u) * (1.0f - v) + (h01 * (1.0f - u) + h11 * u) * v;
             worst = std::max(worst, std::abs(at(x, z) - bilinear));
         }
-    return m.z == 1 && m.w == 1 ? 0.0f : worst;
+    return worst;
 }
 
 std::vector<MacroInstance> macro_instances_on_terrain(glm::uvec2 cells, uint32_t k, const std::vector<float>& grid,

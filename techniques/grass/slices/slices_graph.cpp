@@ -119,15 +119,12 @@ std::vector<QuadVertex> slice_quads(const Bounds& bounds, uint32_t n, float slic
                 p[across] = f.min[across] + c.x * (f.max[across] - f.min[across]);
                 return QuadVertex{p, glm::vec4(c.x, 1.0f - c.y, float(a), float(k))};
             };
-            for (const glm::vec2 c : kQuadCorners) {
-                if (!on_terrain) {
-                    quads.push_back(vertex(c));
-                    continue;
-                }
-                quads.push_back(vertex({c.x * 0.5f, c.y}));
+            if (!on_terrain) {
+                for (const glm::vec2 c : kQuadCorners) quads.push_back(vertex(c));
+                continue;
             }
-            if (on_terrain)
-                for (const glm::vec2 c : kQuadCorners) quads.push_back(vertex({0.5f + c.x * 0.5f, c.y}));
+            for (const glm::vec2 c : kQuadCorners) quads.push_back(vertex({0.5f * c.x, c.y}));         // start to cut
+            for (const glm::vec2 c : kQuadCorners) quads.push_back(vertex({0.5f + 0.5f * c.x, c.y}));  // cut to end
         }
     }
     for (const glm::vec2 c : kQuadCorners)
