@@ -56,7 +56,10 @@ void declare_grass_cull(FrameGraph& g, const std::vector<CullBand>& bands) {
                     cull.draw = glm::uvec4(draw.indexCount, draw.firstIndex, uint32_t(draw.vertexOffset), draw.instanceCount);
                 } else {
                     // (vertex count, 0, 0): the record's first words read as a VkDrawIndirectCommand.
-                    cull.draw = glm::uvec4(band.vertex_count, 0u, 0u, uint32_t(grass->instances.size()));
+                    const uint32_t vertices = grass_on_terrain(pc.populations()) && band.vertex_count_on_terrain > 0
+                                                  ? band.vertex_count_on_terrain
+                                                  : band.vertex_count;
+                    cull.draw = glm::uvec4(vertices, 0u, 0u, uint32_t(grass->instances.size()));
                 }
                 cull.distances = glm::vec4(band.min_distance, band.max_distance, 0.0f, 0.0f);
             }

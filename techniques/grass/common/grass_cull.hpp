@@ -24,6 +24,9 @@ struct CullBand {
     // they carry geometry a technique draws over each copy, this many vertices
     // (draw_over_population_indirect).
     uint32_t vertex_count = 0;
+    // The vertices when the population stands on a terrain, where they differ (grass.slices' quads
+    // cut at the ground's diagonal); 0: vertex_count.
+    uint32_t vertex_count_on_terrain = 0;
 };
 
 // A cull's resources and its frame pass: <prefix>cull (its GrassCull block, and the pass),

@@ -122,6 +122,12 @@ const GeneratedPopulation* first_grass(std::span<const GeneratedPopulation> popu
     return nullptr;
 }
 
+bool grass_on_terrain(std::span<const GeneratedPopulation> populations) {
+    return std::any_of(populations.begin(), populations.end(), [](const GeneratedPopulation& p) {
+        return p.kind == kGrassPopulationKind && p.on_terrain;
+    });
+}
+
 Bounds prototype_bounds(const GeneratedPopulation* population) {
     Bounds bounds;
     if (population)

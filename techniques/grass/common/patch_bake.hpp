@@ -69,6 +69,10 @@ inline Bounds baked_frame(const Bounds& bounds, bool tiled) { return tiled ? cel
 // The first population of kind "grass" (what the bakes draw), or nullptr.
 const GeneratedPopulation* first_grass(std::span<const GeneratedPopulation> populations);
 
+// Whether a grass population stands on a terrain: geometry drawn over every copy that follows the
+// ground is then made for it (grass.slices' cut quads), whichever population it is drawn over.
+bool grass_on_terrain(std::span<const GeneratedPopulation> populations);
+
 // Its prototype's bounds; the unit cube when there is none, so a scene without grass still bakes
 // (an empty image).
 Bounds prototype_bounds(const GeneratedPopulation* population);

@@ -153,6 +153,9 @@ public:
                                          .selected_by = quadtree ? std::optional(far_band) : std::nullopt};
         FrameGraph g;
         g.needs.populations = {grass::kGrassPopulationKind};
+        // Each band's per-cell representation follows a terrain as it does alone; the quadtree's
+        // macro-cells do not yet.
+        g.needs.populations_on_terrain = !quadtree;
         g.shader_params.set_block(block);
         const bool per_sample = params.boolean("middle_per_sample");
         // The shadowed bake is the slices' alone; given with the volume (a config refuses that, conflict()) it is said unused.
@@ -189,16 +192,18 @@ public:
                                     "near_capacity");
         if (culled) {
             // One cull per band, to the distances outside which its share of a cell is nothing.
-            const auto band = [&](int representation, std::string prefix, uint32_t vertices) {
+            const auto band = [&](int representation, std::string prefix, uint32_t vertices, uint32_t on_terrain = 0) {
                 const shader::vec2 d = shader::lod_band_distances(representation, block.geometry_full, block.geometry_none,
                                                                   block.image_start, block.image_full);
                 return grass::CullBand{.prefix = std::move(prefix), .min_distance = d.x,
                                        .max_distance = d.y >= shader::LOD_NO_DISTANCE ? 0.0f : d.y,
-                                       .vertex_count = vertices};
+                                       .vertex_count = vertices, .vertex_count_on_terrain = on_terrain};
             };
             grass::declare_grass_cull(
                 g, {band(shader::GRASS_LOD_GEOMETRY, "", 0),
-                    band(shader::GRASS_LOD_VOLUME, "middle_", btf ? grass::slices_cell_vertices(slices) : grass::kVolumeCellVertices),
+                    btf ? band(shader::GRASS_LOD_VOLUME, "middle_", grass::slices_cell_vertices(slices),
+                               grass::slices_cell_vertices_on_terrain(slices))
+                        : band(shader::GRASS_LOD_VOLUME, "middle_", grass::kVolumeCellVertices),
                     band(shader::GRASS_LOD_IMAGE, "far_", grass::kImageCellVertices)});
         }
         if (samples > 1) {

@@ -84,13 +84,6 @@ shader::PatchBake slice_camera(const Bounds& bounds, const SliceBake& b, uint32_
     return bake;
 }
 
-// Whether a grass population stands on a terrain: the slices are then cut for it (slice_quads).
-bool grass_on_terrain(std::span<const GeneratedPopulation> populations) {
-    return std::any_of(populations.begin(), populations.end(), [](const GeneratedPopulation& p) {
-        return p.kind == kGrassPopulationKind && p.on_terrain;
-    });
-}
-
 // The 2n vertical quads, each at the middle of its section, spanning the frame and the blades'
 // height, and the horizontal one. position.w: 0; uv: (u, v) in the slice's bake, z: the axis
 // (0 x, 1 z, 2 horizontal), w: the slice (the horizontal quad: the frame's width in x).

@@ -252,3 +252,41 @@ TEST_CASE("grass.lod: the middle band ray-cast per sample under 4x MSAA is close
     values["middle"] = std::string("slices");
     CHECK(t.conflict(ParamSet::resolve(t.params(), values, {}, {}, "grass.lod")));
 }
+
+TEST_CASE("grass.lod on a terrain: each band alone draws what its representation draws on the hills, and the GPU "
+          "culls change no pixel") {
+    // The hills' 4 x 4 cells lie 2-8 m from the standing eye, rising 1.2 m.
+    const Scene hills = grass::test::hills_scene("[camera]\nposition = [0.0, 2.5, 4.5]\ntarget = [0.0, 0.3, 0.0]\nfov = 45", 1.2);
+    const Image blades = render(hills, "grass.geometry", {{"samples", 1LL}, {"coverage", std::string("alpha_test")}});
+    const Image volume = render(hills, "grass.volume", {{"slices", 4LL}, {"resolution", 96LL}, {"height_resolution", 48LL}});
+    const Image slices = render(hills, "grass.slices", {{"slices", 4LL}, {"resolution", 96LL}, {"height_resolution", 48LL}});
+    const Image image = render(hills, "grass.image", {{"resolution", 128LL}});
+    CHECK(max_difference(blades, volume) > 0.1f);
+    CHECK(max_difference(volume, slices) > 0.1f);
+    CHECK(max_difference(blades, image) > 0.1f);
+    for (const std::string culling : {"none", "gpu"}) {
+        CAPTURE(culling);
+        for (const std::string middle : {"volume", "slices"}) {
+            CAPTURE(middle);
+            const auto lod = [&](double a, double b, double c, double d) {
+                Values values = lod_values(a, b, c, d);
+                values["culling"] = culling;
+                values["middle"] = middle;
+                return render(hills, "grass.lod", values);
+            };
+            CHECK(max_difference(lod(1e6, 1e6, 1e6, 1e6), blades) <= 1e-5f);
+            CHECK(max_difference(lod(0, 0, 1e6, 1e6), middle == "volume" ? volume : slices) <= 1e-5f);
+            CHECK(max_difference(lod(0, 0, 0, 0), image) <= 1e-5f);
+            // Every band drawing some cells: the culls keep what each band draws.
+            if (culling == "gpu") {
+                Values values = lod_values(3.0, 4.0, 5.0, 6.0);
+                values["middle"] = middle;
+                values["culling"] = std::string("none");
+                const Image whole = render(hills, "grass.lod", values);
+                values["culling"] = std::string("gpu");
+                CHECK(max_difference(render(hills, "grass.lod", values), whole) <= 1e-5f);
+                CHECK(max_difference(whole, blades) > 0.1f);
+            }
+        }
+    }
+}
