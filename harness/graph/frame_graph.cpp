@@ -166,9 +166,10 @@ std::string describe(const FrameGraph& graph) {
                            i.layers, i.mips, i.samples, i.persistent ? " persistent" : "");
     }
     for (const BufferDecl& b : graph.buffers)
-        out += fmt::format("buffer {} bytes={}{} usage={}{}{}\n", b.name, b.bytes,
+        out += fmt::format("buffer {} bytes={}{} usage={}{}{}{}\n", b.name, b.bytes,
                            b.bytes_per_copy ? fmt::format("+{}/copy", b.bytes_per_copy) : "", b.usage,
-                           b.persistent ? " persistent" : "", b.host_visible ? " host-visible" : "");
+                           b.persistent ? " persistent" : "", b.host_visible ? " host-visible" : "",
+                           b.only_on_terrain ? " terrain-only" : "");
     for (const PassDecl& p : graph.passes) {
         out += fmt::format("pass {} {} {} push={} [{}]\n", to_string(p.phase), to_string(p.kind), p.name,
                            p.push_constant_bytes, p.settings);

@@ -70,6 +70,10 @@ struct BufferDecl {
     uint32_t usage = 0;        // BufferUsage bits
     bool persistent = false;   // keeps its contents from frame to frame (and from the load phase)
     bool host_visible = false; // CPU passes write it directly (upload); else uploads go through a copy
+    // Allocated only when one of the scene's populations stands on a terrain (what follows the
+    // ground needs, a flat field does not): else 16 bytes, which the passes must not read (they
+    // choose their shaders when recording, from GeneratedPopulation::on_terrain).
+    bool only_on_terrain = false;
 };
 
 // How a pass uses a resource. Descriptor uses (sampled, storage, uniform) name the binding the

@@ -275,8 +275,12 @@ GraphExecutor::GraphExecutor(const GpuContext& gpu, MemoryLedger& ledger, FrameG
     if (std::string problem = validate(graph_); !problem.empty())
         throw std::logic_error("malformed frame graph: " + problem);
     uint64_t copies = 0;
-    for (const GeneratedPopulation& population : scene.populations()) copies += population.instances.size();
-    resources_ = std::make_unique<GraphResources>(gpu, ledger, graph_, width, height, frame_uniforms, copies);
+    bool on_terrain = false;
+    for (const GeneratedPopulation& population : scene.populations()) {
+        copies += population.instances.size();
+        on_terrain = on_terrain || population.on_terrain;
+    }
+    resources_ = std::make_unique<GraphResources>(gpu, ledger, graph_, width, height, frame_uniforms, copies, on_terrain);
     pipelines_ = std::make_unique<PipelineCache>(gpu);
     for (size_t i = 0; i < graph_.passes.size(); ++i) {
         const PassDecl& p = graph_.passes[i];

@@ -113,7 +113,7 @@ void GraphImage::forget_contents() {
 }
 
 GraphResources::GraphResources(const GpuContext& gpu, MemoryLedger& ledger, const FrameGraph& graph, uint32_t width,
-                               uint32_t height, const Buffer& frame_uniforms, uint64_t copies)
+                               uint32_t height, const Buffer& frame_uniforms, uint64_t copies, bool on_terrain)
     : frame_uniforms_(&frame_uniforms) {
     const auto add_image = [&](const ImageDecl& decl, const std::string& category) {
         uint32_t w = decl.extent.width, h = decl.extent.height;
@@ -128,8 +128,9 @@ GraphResources::GraphResources(const GpuContext& gpu, MemoryLedger& ledger, cons
     add_image(ImageDecl{graph_names::kDepth, kDepthTargetFormat, ImageExtent::screen()}, "targets");
     for (const ImageDecl& decl : graph.images) add_image(decl, "technique");
     for (const BufferDecl& decl : graph.buffers) {
-        // Vulkan has no empty buffers: a per-copy buffer of a scene without copies gets 16 bytes.
-        uint64_t bytes = decl.bytes + decl.bytes_per_copy * copies;
+        // Vulkan has no empty buffers: a per-copy buffer of a scene without copies gets 16 bytes,
+        // as does a terrain's buffer without one.
+        uint64_t bytes = decl.only_on_terrain && !on_terrain ? 0 : decl.bytes + decl.bytes_per_copy * copies;
         if (bytes == 0) bytes = 16;
         buffers_.emplace(decl.name, Buffer(gpu, ledger, "technique", bytes, buffer_usage(decl), decl.host_visible));
         host_visible_[decl.name] = decl.host_visible;

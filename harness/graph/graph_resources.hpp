@@ -55,9 +55,10 @@ public:
     // Allocates `graph`'s images and buffers, plus the harness's camera targets (color, depth:
     // charged to "targets") at width x height; technique resources are charged to "technique".
     // `copies`: how many copies the scene's populations of the graph's kinds hold
-    // (BufferDecl::bytes_per_copy).
+    // (BufferDecl::bytes_per_copy); `on_terrain`: whether one stands on a terrain
+    // (BufferDecl::only_on_terrain).
     GraphResources(const GpuContext& gpu, MemoryLedger& ledger, const FrameGraph& graph, uint32_t width, uint32_t height,
-                   const Buffer& frame_uniforms, uint64_t copies = 0);
+                   const Buffer& frame_uniforms, uint64_t copies = 0, bool on_terrain = false);
 
     GraphImage& image(const std::string& name) const;
     bool has_image(const std::string& name) const { return images_.count(name) != 0; }

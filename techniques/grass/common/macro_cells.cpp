@@ -71,6 +71,17 @@ float macro_unplanarity(const std::vector<float>& grid, glm::uvec2 cells, MacroI
     return worst;
 }
 
+glm::vec2 macro_height_range(const std::vector<float>& grid, glm::uvec2 cells, MacroInstance m) {
+    const size_t row = size_t(cells.x) + 1;
+    glm::vec2 range(grid[size_t(m.y) * row + m.x]);
+    for (uint32_t z = m.y; z <= uint32_t(m.y + m.w); ++z)
+        for (uint32_t x = m.x; x <= uint32_t(m.x + m.z); ++x) {
+            const float h = grid[size_t(z) * row + x];
+            range = {std::min(range.x, h), std::max(range.y, h)};
+        }
+    return range;
+}
+
 std::vector<MacroInstance> macro_instances_on_terrain(glm::uvec2 cells, uint32_t k, const std::vector<float>& grid,
                                                       float max_unplanarity) {
     std::vector<MacroInstance> out;

@@ -21,15 +21,14 @@ GrassField field_of(const GeneratedPopulation* population) {
     return grass_field_placement(population->params);
 }
 
-// Its cells alone, read from the parameters (every frame: no density map is made).
-glm::uvec2 cells_of(const GeneratedPopulation* population) {
-    if (!population) return {0, 0};
-    return {uint32_t(population->params.integer("cells_x")), uint32_t(population->params.integer("cells_z"))};
-}
-
 }  // namespace
 
-void declare_macro_buffers(FrameGraph& g, bool terrain) {
+bool macros_on_terrain(std::span<const GeneratedPopulation> populations) {
+    const GeneratedPopulation* grass = first_grass(populations);
+    return grass && grass->on_terrain;
+}
+
+void declare_macro_buffers(FrameGraph& g, const MacroTerrain& terrain) {
     g.buffers.push_back({.name = macro_names::kCells, .bytes_per_copy = sizeof(shader::GrassCell),
                          .usage = kStorageBuffer, .persistent = true});
     g.buffers.push_back({.name = macro_names::kMacros, .bytes_per_copy = sizeof(MacroInstance), .usage = kVertexBuffer,
@@ -38,32 +37,48 @@ void declare_macro_buffers(FrameGraph& g, bool terrain) {
                          .usage = kUniformBuffer, .persistent = true});
     // (cells.x + 1)(cells.z + 1) floats: one a copy, plus the far row and column of a field of at
     // most kMaxFieldSide cells a side.
-    if (terrain)
-        g.buffers.push_back({.name = macro_names::kHeights, .bytes = sizeof(float) * (2 * kMaxFieldSide + 1),
-                             .bytes_per_copy = sizeof(float), .usage = kStorageBuffer, .persistent = true});
+    g.buffers.push_back({.name = macro_names::kHeights, .bytes = sizeof(float) * (2 * kMaxFieldSide + 1),
+                         .bytes_per_copy = sizeof(float), .usage = kStorageBuffer, .persistent = true,
+                         .only_on_terrain = true});
+    // At most one macro-cell a cell, splits included.
+    if (terrain.height_ranges)
+        g.buffers.push_back({.name = macro_names::kRanges, .bytes_per_copy = sizeof(glm::vec2), .usage = kStorageBuffer,
+                             .persistent = true, .only_on_terrain = true});
 }
 
-PassDecl macro_setup_pass(uint32_t k, const std::optional<MacroTerrain>& terrain) {
+PassDecl macro_setup_pass(uint32_t k, const MacroTerrain& terrain) {
     PassDecl p{.name = "macro_setup", .kind = PassKind::copy, .phase = Phase::load};
     p.uses = {use(macro_names::kCells, Use::transfer_write), use(macro_names::kMacros, Use::transfer_write),
-              use(macro_names::kField, Use::transfer_write)};
-    if (terrain) p.uses.push_back(use(macro_names::kHeights, Use::transfer_write));
-    p.settings = fmt::format("macro_cells={}{}", k,
-                             terrain ? fmt::format(", split above {} unplanarity", terrain->max_unplanarity) : "");
+              use(macro_names::kField, Use::transfer_write), use(macro_names::kHeights, Use::transfer_write)};
+    if (terrain.height_ranges) p.uses.push_back(use(macro_names::kRanges, Use::transfer_write));
+    p.settings = fmt::format("macro_cells={}{}{}", k,
+                             terrain.max_unplanarity
+                                 ? fmt::format(", on a terrain split above {} unplanarity", *terrain.max_unplanarity)
+                                 : "",
+                             terrain.height_ranges ? ", height ranges on a terrain" : "");
     p.record = [k, terrain](PassContext& pc) {
+        *terrain.count = 0;
         const GeneratedPopulation* grass = first_grass(pc.populations());
         if (!grass || grass->instances.empty()) return;
         const GrassField field = field_of(grass);
         const std::vector<shader::GrassCell> cells = grass_cells(field, grass->instances);
         std::vector<MacroInstance> macros;
-        if (terrain) {
+        if (macros_on_terrain(pc.populations())) {
             const std::vector<float> heights = grid_heights(field, grass->instances);
-            macros = macro_instances_on_terrain(field.cells, k, heights, terrain->max_unplanarity);
-            *terrain->count = uint32_t(macros.size());
+            macros = terrain.max_unplanarity
+                         ? macro_instances_on_terrain(field.cells, k, heights, *terrain.max_unplanarity)
+                         : macro_instances(field.cells, k);
             pc.upload(macro_names::kHeights, heights.data(), heights.size() * sizeof(float));
+            if (terrain.height_ranges) {
+                std::vector<glm::vec2> ranges;
+                ranges.reserve(macros.size());
+                for (const MacroInstance& m : macros) ranges.push_back(macro_height_range(heights, field.cells, m));
+                pc.upload(macro_names::kRanges, ranges.data(), ranges.size() * sizeof(glm::vec2));
+            }
         } else {
             macros = macro_instances(field.cells, k);
         }
+        *terrain.count = uint32_t(macros.size());
         const shader::GrassMacroField placement = macro_field(field, k, cell_frame(prototype_bounds(grass)).max.y, grass->transmission);
         pc.upload(macro_names::kCells, cells.data(), cells.size() * sizeof(shader::GrassCell));
         pc.upload(macro_names::kMacros, macros.data(), macros.size() * sizeof(MacroInstance));
@@ -81,17 +96,23 @@ VertexLayout macro_layout() {
     return layout;
 }
 
-void record_ground_and_macros(PassContext& pc, const RasterState& ground, const RasterState& over,
-                              const std::string& vertex_buffer, uint32_t vertex_count, uint32_t k,
-                              const std::optional<MacroTerrain>& terrain) {
+void use_macro_buffers(PassDecl& pass, const MacroTerrain& terrain) {
+    pass.uses.push_back(use(macro_names::kField, Use::uniform, 3));
+    pass.uses.push_back(use(macro_names::kCells, Use::storage_read, 4));
+    pass.uses.push_back(use(macro_names::kMacros, Use::vertex));
+    pass.uses.push_back(use(macro_names::kHeights, Use::storage_read, 5));
+    if (terrain.height_ranges) pass.uses.push_back(use(macro_names::kRanges, Use::storage_read, 6));
+}
+
+void record_ground_and_macros(PassContext& pc, const RasterState& ground, const RasterState& flat,
+                              const RasterState& on_terrain, const std::string& vertex_buffer, uint32_t vertex_count,
+                              const MacroTerrain& terrain) {
     pc.bind(pc.raster_pipeline(ground));
     pc.draw_scene(SceneFilter::all);
-    const GeneratedPopulation* grass = first_grass(pc.populations());
-    if (!grass || grass->instances.empty()) return;
-    const uint32_t macros = terrain ? *terrain->count : macro_count(cells_of(grass), k);
-    pc.bind(pc.raster_pipeline(over));
+    if (*terrain.count == 0) return;
+    pc.bind(pc.raster_pipeline(macros_on_terrain(pc.populations()) ? on_terrain : flat));
     const std::array<std::string, 2> buffers{vertex_buffer, macro_names::kMacros};
-    pc.draw(buffers, vertex_count, macros);
+    pc.draw(buffers, vertex_count, *terrain.count);
 }
 
 }  // namespace canopy::grass

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 
 namespace canopy::grass {
@@ -19,35 +20,49 @@ namespace macro_names {
 inline constexpr const char* kCells = "field_cells";  // GrassCell per field cell (storage)
 inline constexpr const char* kMacros = "macros";      // vec4 per macro-cell: first cell x, z; span x, z (vertex, per instance)
 inline constexpr const char* kField = "macro_field";  // GrassMacroField (uniform)
-inline constexpr const char* kHeights = "field_heights";  // float per grid vertex (storage; on a terrain)
+// On a terrain only (BufferDecl::only_on_terrain; 16 bytes on flat ground):
+inline constexpr const char* kHeights = "field_heights";  // float per grid vertex (storage, binding 5)
+inline constexpr const char* kRanges = "macro_ranges";    // vec2 per macro-cell: its grid's lowest and highest height (storage, binding 6)
 }  // namespace macro_names
 
-// Macro-cells that follow a terrain (grass.image's): each quad's corners lifted onto the field's
-// grid heights (macro_names::kHeights), and macro-cells whose ground is not flat enough split
-// (macro_instances_on_terrain). `count` is set at load to the macro-cells uploaded, which the
-// frame pass draws.
+// How macro-cells follow a terrain (the first grass population's, when it stands on one; a flat
+// field draws as without). Every macro shader on a terrain reads the field's grid heights
+// (macro_names::kHeights).
 struct MacroTerrain {
-    float max_unplanarity = 0.05f;  // world units
+    // Split a macro-cell whose ground departs from the bilinear patch of its corners by more than
+    // this, world units (macro_instances_on_terrain: grass.image's quads, which follow their
+    // corners alone); none: never (grass.volume's cuboids, whose rays read the ground under every hit).
+    std::optional<float> max_unplanarity;
+    // Upload each macro-cell's height range (macro_names::kRanges: the volume's cuboids span it).
+    bool height_ranges = false;
+    // Set at load to the macro-cells uploaded (splits add some), which the frame pass draws.
     std::shared_ptr<uint32_t> count = std::make_shared<uint32_t>(0);
 };
 
-// Declares the three buffers (field_cells and macros sized by the scene's copies) and, with
-// `terrain`, the grid heights.
-void declare_macro_buffers(FrameGraph& graph, bool terrain = false);
+// Whether the macro-cells follow a terrain: the first grass population stands on one.
+bool macros_on_terrain(std::span<const GeneratedPopulation> populations);
+
+// Declares the buffers: field_cells and macros sized by the scene's copies, the field, and the
+// terrain's heights and (with `terrain.height_ranges`) ranges.
+void declare_macro_buffers(FrameGraph& graph, const MacroTerrain& terrain);
 
 // The load-phase copy pass that fills them from the first grass population (nothing without
 // one). Macro-cells draw the first grass population only, as the bakes show only its patch.
-PassDecl macro_setup_pass(uint32_t k, const std::optional<MacroTerrain>& terrain = std::nullopt);
+PassDecl macro_setup_pass(uint32_t k, const MacroTerrain& terrain);
 
 // `vertex` records (QuadVertex: locations 0-1, binding 0) and a macro-cell's MacroInstance per
 // instance at location 2 (binding 1, uvec4 in the shaders).
 VertexLayout macro_layout();
 
+// The uses a macro frame pass adds: the field (uniform, binding 3), its cells (storage, 4), the
+// macro-cells (vertex), the heights (storage, 5) and, with `terrain.height_ranges`, the ranges (6).
+void use_macro_buffers(PassDecl& pass, const MacroTerrain& terrain);
+
 // What a macro frame pass records: the scene's objects with `ground`, then `vertex_count`
-// vertices of `vertex_buffer` once per macro-cell of size k of the first grass population.
-// With `terrain`, the macro-cells its setup counted.
-void record_ground_and_macros(PassContext& pc, const RasterState& ground, const RasterState& over,
-                              const std::string& vertex_buffer, uint32_t vertex_count, uint32_t k,
-                              const std::optional<MacroTerrain>& terrain = std::nullopt);
+// vertices of `vertex_buffer` once per macro-cell the setup uploaded, drawn with `flat` or, on a
+// terrain (macros_on_terrain), `on_terrain`.
+void record_ground_and_macros(PassContext& pc, const RasterState& ground, const RasterState& flat,
+                              const RasterState& on_terrain, const std::string& vertex_buffer, uint32_t vertex_count,
+                              const MacroTerrain& terrain);
 
 }  // namespace canopy::grass

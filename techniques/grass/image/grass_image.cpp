@@ -36,8 +36,7 @@ public:
         grass::ImageSettings settings{.resolution = uint32_t(params.integer("resolution")),
                                       .slice_height = float(params.real("slice_height")),
                                       .macro_cells = uint32_t(params.integer("macro_cells"))};
-        if (settings.macro_cells > 0)
-            settings.macro_terrain = grass::MacroTerrain{.max_unplanarity = float(params.real("macro_unplanarity"))};
+        settings.macro_terrain.max_unplanarity = float(params.real("macro_unplanarity"));
         FrameGraph g;
         g.needs.populations = {grass::kGrassPopulationKind};
         // A quad per cell (grass_image_vertex.glsl) or per macro-cell (grass_image_macro_vertex.glsl)

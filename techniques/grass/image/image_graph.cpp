@@ -63,7 +63,7 @@ void declare_image_bake(FrameGraph& g, const ImageSettings& s) {
     g.buffers.push_back({.name = names.quad, .bytes = sizeof(QuadVertex) * 6, .usage = kVertexBuffer, .persistent = true});
     g.buffers.push_back({.name = names.camera, .bytes = sizeof(shader::PatchBake), .usage = kUniformBuffer});
     if (s.macro_cells > 0) {  // a quadtree's bands share the field records it declares
-        declare_macro_buffers(g, s.macro_terrain.has_value());
+        declare_macro_buffers(g, s.macro_terrain);
         g.passes.push_back(macro_setup_pass(s.macro_cells, s.macro_terrain));
     }
 
@@ -113,20 +113,16 @@ PassDecl image_frame_pass(const ImageSettings& s, const RasterState& per_cell, b
     } else if (macro > 0) {
         if (!objects) throw std::logic_error("image_frame_pass: macro-cells draw the ground in their pass");
         if (s.culled_by) throw std::logic_error("image_frame_pass: macro-cells are not culled");
-        frame.uses.push_back(use(macro_names::kField, Use::uniform, 3));
-        frame.uses.push_back(use(macro_names::kCells, Use::storage_read, 4));
-        frame.uses.push_back(use(macro_names::kMacros, Use::vertex));
-        if (s.macro_terrain) frame.uses.push_back(use(macro_names::kHeights, Use::storage_read, 5));
-        RasterState slice;
-        if (s.macro_terrain)
-            slice.vertex_spirv = grass_image_macro_terrain_vert;
-        else
-            slice.vertex_spirv = grass_image_macro_vert;
-        slice.fragment_spirv = grass_image_macro_frag;
-        slice.vertices = macro_layout();
+        use_macro_buffers(frame, s.macro_terrain);
+        RasterState flat;
+        flat.vertex_spirv = grass_image_macro_vert;
+        flat.fragment_spirv = grass_image_macro_frag;
+        flat.vertices = macro_layout();
+        RasterState on_terrain = flat;
+        on_terrain.vertex_spirv = grass_image_macro_terrain_vert;
         frame.settings = fmt::format("one quad per {} x {} macro-cell", macro, macro);
-        frame.record = [objects, slice, macro, quad = names.quad, terrain = s.macro_terrain](PassContext& pc) {
-            record_ground_and_macros(pc, *objects, slice, quad, 6, macro, terrain);
+        frame.record = [objects, flat, on_terrain, quad = names.quad, terrain = s.macro_terrain](PassContext& pc) {
+            record_ground_and_macros(pc, *objects, flat, on_terrain, quad, kImageCellVertices, terrain);
         };
     } else {
         RasterState slice = per_cell;

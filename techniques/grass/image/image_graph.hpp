@@ -28,9 +28,10 @@ struct ImageSettings {
     // (quadtree_passes.hpp), with the tiled bake; its shaders are the macro bodies
     // (shaders/grass_image_macro_*.glsl), given as `per_cell` to image_frame_pass.
     std::optional<QuadtreeBandDecl> selected_by;
-    // Macro-cells that follow a terrain (grass.image's own; not a quadtree's): each quad's corners
-    // on the field's grid heights, uneven macro-cells split (macro_passes.hpp).
-    std::optional<MacroTerrain> macro_terrain;
+    // How macro-cells follow a terrain (grass.image's own; not a quadtree's): each quad's corners
+    // on the field's grid heights, uneven macro-cells split (macro_passes.hpp). The setup and the
+    // frame pass share its count, so both passes are declared from the same settings.
+    MacroTerrain macro_terrain{.max_unplanarity = 0.05f};
 };
 
 // The vertices the frame pass draws per cell (a cull drawing them needs it).

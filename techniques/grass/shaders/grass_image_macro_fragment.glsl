@@ -3,7 +3,8 @@
 // its own cell's copy of the tiled top view, mirrored by that cell's signs and cut by that cell's
 // densities and, in grass.lod, by that cell's band (grass_lod_band.glsl), as the one-quad-per-cell
 // path shows it; lit per pixel with the mirrored baked normal. Included after the technique's
-// parameter block.
+// parameter block. With GRASS_MACRO_TERRAIN (a field on a terrain), a cell's band is taken at its
+// centre lifted to its first corner's ground, where a copy's model puts it (grass_lod_band.glsl).
 #include "frame_uniforms.glsl"
 #include "grass_density.h"
 #include "grass_macro_cells.h"
@@ -14,6 +15,10 @@ layout(set = 0, binding = 1) uniform sampler2D slice_albedo;  // NEAREST: thresh
 layout(set = 0, binding = 2) uniform sampler2D slice_normal;  // NEAREST
 layout(set = 0, binding = 3, std140) uniform FieldBlock { GrassMacroField field; };
 layout(set = 0, binding = 4, std430) readonly buffer CellBlock { GrassCell field_cells[]; };
+#ifdef GRASS_MACRO_TERRAIN
+#include "height_field.h"
+#include "grass_field_heights.glsl"
+#endif
 
 layout(location = 0) in vec3 world_position;
 layout(location = 1) in vec2 field_uv;
@@ -25,7 +30,12 @@ void main() {
     GrassCell c = field_cells[cell.y * field.cells.x + cell.x];
     vec2 p = grass_macro_patch_point(field_uv, cell, c.signs.xy);  // the tiled bake frames the cell: uv = p
     vec4 albedo = texture(slice_albedo, p);
-    if (!grass_blade_in_band(albedo.a, grass_root_density(c.densities, p), grass_macro_cell_band(field, cell))) discard;
+#ifdef GRASS_MACRO_TERRAIN
+    vec2 band = grass_macro_cell_band(field, cell, grid_height(cell));
+#else
+    vec2 band = grass_macro_cell_band(field, cell, 0.0);
+#endif
+    if (!grass_blade_in_band(albedo.a, grass_root_density(c.densities, p), band)) discard;
     vec3 n = grass_mirror_vector(texture(slice_normal, p).xyz, c.signs.xy);
     out_color = grass_lit_output(albedo.rgb, world_position, n, 1.0, field.patch_top.y);
 }

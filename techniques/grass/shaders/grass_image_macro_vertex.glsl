@@ -14,10 +14,8 @@
 
 layout(set = 0, binding = 3, std140) uniform FieldBlock { GrassMacroField field; };
 #ifdef GRASS_MACRO_TERRAIN
-// The grid vertices' heights above the field's origin, (cells.x + 1) a row (macro_cells.hpp).
-layout(set = 0, binding = 5, std430) readonly buffer FieldHeights { float field_heights[]; };
-
-float grid_height(ivec2 vertex) { return field_heights[vertex.y * (field.cells.x + 1) + vertex.x]; }
+#include "height_field.h"
+#include "grass_field_heights.glsl"
 #endif
 
 layout(location = 0) in vec4 quad_position;  // x, z: the corner in [0, 1]; y: the slice's height (patch units)

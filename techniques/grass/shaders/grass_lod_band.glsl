@@ -23,8 +23,10 @@ vec2 grass_representation_band_at(vec3 centre) {
 vec2 grass_representation_band(mat4 model) { return grass_representation_band_at((model * vec4(0.5, 0.0, 0.5, 1.0)).xyz); }
 
 // The band of field cell `cell` of the macro-cells' field (grass_macro_cells.h): its centre is
-// the same point, computed from the field's placement instead of a copy's matrix.
-vec2 grass_macro_cell_band(GrassMacroField field, ivec2 cell) {
-    return grass_representation_band_at(field.origin_size.xyz +
+// the same point, computed from the field's placement instead of a copy's matrix. `ground`: the
+// height of the cell's first grid vertex above the field's origin, to which a copy's model lifts
+// the cell on a terrain (grass_terrain.h); 0 on flat ground.
+vec2 grass_macro_cell_band(GrassMacroField field, ivec2 cell, float ground) {
+    return grass_representation_band_at(field.origin_size.xyz + vec3(0.0, ground, 0.0) +
                                          vec3(float(cell.x) + 0.5, 0.0, float(cell.y) + 0.5) * field.origin_size.w);
 }

@@ -6,6 +6,12 @@
 // by that cell's band (grass_lod_band.glsl), lit with the mirrored baked normal; composited front
 // to back as for one cell (grass_volume_fragment.glsl). The depth written is that of the first
 // blade met. Included after the technique's parameter block, which has `slices`.
+//
+// With GRASS_MACRO_TERRAIN (grass_volume_macro_vertex.glsl), each hit's lookup is shifted down by
+// the ground under it, read from the field's grid heights on its own cell's two triangles, as one
+// cell's is from its corners (grass_volume_fragment.glsl, eq 6.16-6.18); a hit below the ground
+// or above the patch over it sees nothing. The cell's band is taken at its centre lifted to its
+// first corner's ground, where a copy's model puts it (grass_lod_band.glsl).
 #include "frame_uniforms.glsl"
 #include "grass_density.h"
 #include "grass_macro_cells.h"
@@ -17,6 +23,10 @@ layout(set = 0, binding = 1) uniform sampler2DArray slice_albedo;  // NEAREST: t
 layout(set = 0, binding = 2) uniform sampler2DArray slice_normal;  // NEAREST
 layout(set = 0, binding = 3, std140) uniform FieldBlock { GrassMacroField field; };
 layout(set = 0, binding = 4, std430) readonly buffer CellBlock { GrassCell field_cells[]; };
+#ifdef GRASS_MACRO_TERRAIN
+#include "height_field.h"
+#include "grass_field_heights.glsl"
+#endif
 
 // GRASS_VOLUME_PER_SAMPLE: the exit point interpolated at each covered sample, so under MSAA the
 // walk runs once per sample (grass.lod's middle_per_sample) and the slices' texels are anti-aliased.
@@ -27,6 +37,9 @@ layout(location = 0) in vec3 exit_q;
 #endif
 layout(location = 1) flat in vec3 eye_q;
 layout(location = 2) flat in ivec4 macro_cells;
+#ifdef GRASS_MACRO_TERRAIN
+layout(location = 3) flat in vec2 heights;  // the cuboid's bottom and height (grass_volume_macro_vertex.glsl)
+#endif
 layout(location = 0) out vec4 out_color;
 
 void main() {
@@ -36,6 +49,10 @@ void main() {
     float size = field.origin_size.w;
     vec3 origin = field.origin_size.xyz + vec3(first.x, 0.0, first.y) * size;
     vec3 extent = vec3(span.x, field.patch_top.x, span.y) * size;
+#ifdef GRASS_MACRO_TERRAIN
+    origin.y += heights.x;
+    extent.y = heights.y;
+#endif
     vec3 to_exit = exit_q - eye_q;
     vec3 e = eye_q + volume_entry(eye_q, to_exit) * to_exit;  // eq 5.4
     vec3 d = exit_q - e;
@@ -56,13 +73,21 @@ void main() {
         int plane = clamp(hit.slice, 0, (hit.axis == 0 ? span.x : span.y) * n - 1);
         ivec2 cell = grass_macro_cell(u, first, span);
         GrassCell c = field_cells[cell.y * field.cells.x + cell.x];
-        vec2 band = grass_macro_cell_band(field, cell);
+        float texel_height = q.y;
+#ifdef GRASS_MACRO_TERRAIN
+        texel_height = (heights.x + q.y * heights.y - grid_ground(cell, u)) / (field.patch_top.x * size);
+        if (texel_height < 0.0 || texel_height > 1.0) continue;
+        vec2 band = grass_macro_cell_band(field, cell, grid_height(cell));
+#else
+        vec2 band = grass_macro_cell_band(field, cell, 0.0);
+#endif
         vec2 s = c.signs.xy;
         int slice = grass_macro_slice(plane % n, n, hit.axis == 0 ? s.x : s.y);
         vec2 p = grass_macro_patch_point(u, cell, s);
         if (hit.axis == 0) p.x = (float(slice) + 0.5) / float(n); else p.y = (float(slice) + 0.5) / float(n);
         // Slices along x are baked looking along x (u = z), those along z looking along z (u = x).
-        vec3 texel = hit.axis == 0 ? vec3(p.y, 1.0 - q.y, float(slice)) : vec3(p.x, 1.0 - q.y, float(n + slice));
+        vec3 texel = hit.axis == 0 ? vec3(p.y, 1.0 - texel_height, float(slice))
+                                   : vec3(p.x, 1.0 - texel_height, float(n + slice));
         vec4 albedo = texture(slice_albedo, texel);
         if (!grass_blade_in_band(albedo.a, grass_root_density(c.densities, p), band)) continue;
         vec3 world = origin + q * extent;

@@ -44,8 +44,9 @@ public:
         g.needs.populations = {grass::kGrassPopulationKind};
         g.shader_params.set_block(block);
         g.report["slices"] = fmt::format("{} per direction", settings.slices);
-        // One cuboid a cell follows a terrain (grass_volume_vertex.glsl); macro-cells do not yet.
-        g.needs.populations_on_terrain = settings.macro_cells == 0;
+        // One cuboid a cell (grass_volume_vertex.glsl) or a macro-cell (grass_volume_macro_vertex.glsl)
+        // follows a terrain.
+        g.needs.populations_on_terrain = true;
         if (settings.macro_cells > 0)
             g.report["macro_cells"] = fmt::format("{} x {}", settings.macro_cells, settings.macro_cells);
         grass::declare_volume_bake(g, settings);

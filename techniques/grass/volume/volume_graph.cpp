@@ -11,6 +11,8 @@
 #include "../shaders/volume_walk.h"
 
 #include "shaders/grass/grass_volume_macro_frag.h"
+#include "shaders/grass/grass_volume_macro_terrain_frag.h"
+#include "shaders/grass/grass_volume_macro_terrain_vert.h"
 #include "shaders/grass/grass_volume_macro_vert.h"
 #include "shaders/grass/volume_bake_frag.h"
 
@@ -110,8 +112,8 @@ void declare_volume_bake(FrameGraph& g, const VolumeSettings& s) {
     for (const SliceBake& b : bakes)
         g.buffers.push_back({.name = b.camera, .bytes = sizeof(shader::PatchBake), .usage = kUniformBuffer});
     if (s.macro_cells > 0) {  // a quadtree's bands share the field records it declares
-        declare_macro_buffers(g);
-        g.passes.push_back(macro_setup_pass(s.macro_cells));
+        declare_macro_buffers(g, s.macro_terrain);
+        g.passes.push_back(macro_setup_pass(s.macro_cells, s.macro_terrain));
     }
 
     PassDecl setup{.name = s.prefix + "bake_setup", .kind = PassKind::copy, .phase = Phase::load};
@@ -173,16 +175,17 @@ PassDecl volume_frame_pass(const VolumeSettings& s, const RasterState& per_cell,
     } else if (macro > 0) {
         if (!objects) throw std::logic_error("volume_frame_pass: macro-cells draw the ground in their pass");
         if (s.culled_by) throw std::logic_error("volume_frame_pass: macro-cells are not culled");
-        frame.uses.push_back(use(macro_names::kField, Use::uniform, 3));
-        frame.uses.push_back(use(macro_names::kCells, Use::storage_read, 4));
-        frame.uses.push_back(use(macro_names::kMacros, Use::vertex));
-        RasterState volume;
-        volume.vertex_spirv = grass_volume_macro_vert;
-        volume.fragment_spirv = grass_volume_macro_frag;
-        volume.vertices = macro_layout();
+        use_macro_buffers(frame, s.macro_terrain);
+        RasterState flat;
+        flat.vertex_spirv = grass_volume_macro_vert;
+        flat.fragment_spirv = grass_volume_macro_frag;
+        flat.vertices = macro_layout();
+        RasterState on_terrain = flat;
+        on_terrain.vertex_spirv = grass_volume_macro_terrain_vert;
+        on_terrain.fragment_spirv = grass_volume_macro_terrain_frag;
         frame.settings = fmt::format("one cuboid per {} x {} macro-cell, its exit faces drawn", macro, macro);
-        frame.record = [objects, volume, macro, cuboid = names.cuboid](PassContext& pc) {
-            record_ground_and_macros(pc, *objects, volume, cuboid, kCuboidVertices, macro);
+        frame.record = [objects, flat, on_terrain, cuboid = names.cuboid, terrain = s.macro_terrain](PassContext& pc) {
+            record_ground_and_macros(pc, *objects, flat, on_terrain, cuboid, kCuboidVertices, terrain);
         };
     } else {
         frame.uses.insert(frame.uses.begin() + 3, use(names.box, Use::uniform, 3));

@@ -6,6 +6,7 @@
 #include "graph/frame_graph.hpp"
 #include "graph/raster_state.hpp"
 
+#include "../common/macro_passes.hpp"
 #include "../common/quadtree_passes.hpp"
 
 #include <cstdint>
@@ -29,6 +30,10 @@ struct VolumeSettings {
     // (quadtree_passes.hpp), with the tiled bake; its shaders are the macro bodies
     // (shaders/grass_volume_macro_*.glsl), given as `per_cell` to volume_frame_pass.
     std::optional<QuadtreeBandDecl> selected_by;
+    // How macro-cells follow a terrain (grass.volume's own; not a quadtree's): each cuboid over
+    // its ground's height range, each hit's lookup shifted by the ground under it; never split
+    // (macro_passes.hpp). The setup and the frame pass share its count.
+    MacroTerrain macro_terrain{.height_ranges = true};
 };
 
 // The vertices the frame pass draws per cell: a cuboid's 12 triangles.

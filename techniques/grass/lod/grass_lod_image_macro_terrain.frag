@@ -1,0 +1,7 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// grass.lod under culling = "quadtree" on a terrain: the far band's top view, each cell's band at its lifted centre (shaders/grass_image_macro_fragment.glsl).
+#define GRASS_LOD_REPRESENTATION GRASS_LOD_IMAGE
+#define GRASS_MACRO_TERRAIN
+#include "grass_lod_params.h"
+#include "grass_image_macro_fragment.glsl"
