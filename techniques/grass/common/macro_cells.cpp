@@ -56,7 +56,7 @@ std::vector<float> grid_heights(const GrassField& field, std::span<const Populat
     return grid;
 }
 
-float macro_unplanarity(const std::vector<float>& grid, glm::uvec2 cells, MacroInstance m) {
+float macro_unplanarity(std::span<const float> grid, glm::uvec2 cells, MacroInstance m) {
     const size_t row = size_t(cells.x) + 1;
     const auto at = [&](uint32_t x, uint32_t z) { return grid[size_t(z) * row + x]; };
     const uint32_t x0 = m.x, z0 = m.y, x1 = m.x + m.z, z1 = m.y + m.w;
@@ -71,7 +71,7 @@ float macro_unplanarity(const std::vector<float>& grid, glm::uvec2 cells, MacroI
     return worst;
 }
 
-glm::vec2 macro_height_range(const std::vector<float>& grid, glm::uvec2 cells, MacroInstance m) {
+glm::vec2 macro_height_range(std::span<const float> grid, glm::uvec2 cells, MacroInstance m) {
     const size_t row = size_t(cells.x) + 1;
     glm::vec2 range(grid[size_t(m.y) * row + m.x]);
     for (uint32_t z = m.y; z <= uint32_t(m.y + m.w); ++z)

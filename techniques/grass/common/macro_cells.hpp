@@ -39,11 +39,11 @@ std::vector<float> grid_heights(const GrassField& field, std::span<const Populat
 // How far the ground under macro-cell `m` departs from the bilinear patch through its four
 // corners: the largest difference at a grid vertex inside it (Lemme's unplanarity, L906); 0 for
 // one cell, whose two triangles the quad follows exactly.
-float macro_unplanarity(const std::vector<float>& grid, glm::uvec2 cells, MacroInstance m);
+float macro_unplanarity(std::span<const float> grid, glm::uvec2 cells, MacroInstance m);
 
 // The lowest and highest grid height under macro-cell `m` (its (span + 1)^2 grid vertices): the
 // ground's own extremes, since each of its triangles lies between its vertices.
-glm::vec2 macro_height_range(const std::vector<float>& grid, glm::uvec2 cells, MacroInstance m);
+glm::vec2 macro_height_range(std::span<const float> grid, glm::uvec2 cells, MacroInstance m);
 
 // macro_instances on a terrain: a macro-cell whose unplanarity exceeds `max_unplanarity` is split in
 // four (spans halved, rounded up), and so on until each part is under it or one cell (Lemme's lod

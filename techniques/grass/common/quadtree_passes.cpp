@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include <array>
+#include <cmath>
 #include <cstring>
 #include <type_traits>
 
@@ -31,6 +32,7 @@ static_assert(std::is_trivially_copyable_v<QuadtreeField>);
 
 std::string quadtree_list(const std::string& band) { return band + "_quadtree_list"; }
 std::string quadtree_draw(const std::string& band) { return band + "_quadtree_draw"; }
+std::string quadtree_ranges(const std::string& band) { return band + "_quadtree_ranges"; }
 
 void declare_quadtree(FrameGraph& g, const std::vector<QuadtreeBandDecl>& bands, uint32_t copy_capacity,
                       const std::string& capacity_parameter) {
@@ -41,6 +43,10 @@ void declare_quadtree(FrameGraph& g, const std::vector<QuadtreeBandDecl>& bands,
                          .usage = kUniformBuffer, .persistent = true});
     g.buffers.push_back({.name = kQuadtreeField, .bytes = sizeof(QuadtreeField), .usage = kStorageBuffer,
                          .persistent = true, .host_visible = true});
+    // The grid heights (macro_passes.hpp's), read by the traversal on the CPU and the macro shaders.
+    g.buffers.push_back({.name = macro_names::kHeights, .bytes = sizeof(float) * (2 * kMaxFieldSide + 1),
+                         .bytes_per_copy = sizeof(float), .usage = kStorageBuffer, .persistent = true,
+                         .host_visible = true, .only_on_terrain = true});
     for (const QuadtreeBandDecl& band : bands) {
         if (draws_copies(band))
             g.buffers.push_back({.name = quadtree_list(band.name), .bytes = uint64_t(copy_capacity) * sizeof(PopulationInstance),
@@ -48,6 +54,9 @@ void declare_quadtree(FrameGraph& g, const std::vector<QuadtreeBandDecl>& bands,
         else
             g.buffers.push_back({.name = quadtree_list(band.name), .bytes_per_copy = sizeof(MacroInstance),
                                  .usage = kVertexBuffer, .host_visible = true});
+        if (!draws_copies(band) && band.height_ranges)
+            g.buffers.push_back({.name = quadtree_ranges(band.name), .bytes_per_copy = sizeof(glm::vec2),
+                                 .usage = kStorageBuffer, .host_visible = true, .only_on_terrain = true});
         g.buffers.push_back({.name = quadtree_draw(band.name),
                              .bytes = draws_copies(band) ? sizeof(VkDrawIndexedIndirectCommand) : sizeof(VkDrawIndirectCommand),
                              .usage = kIndirectBuffer, .host_visible = true});
@@ -56,7 +65,7 @@ void declare_quadtree(FrameGraph& g, const std::vector<QuadtreeBandDecl>& bands,
     // Load: the field's cells as the macro shaders read them, and its placement.
     PassDecl setup{.name = "quadtree_setup", .kind = PassKind::copy, .phase = Phase::load};
     setup.uses = {use(macro_names::kCells, Use::transfer_write), use(macro_names::kField, Use::transfer_write),
-                  use(kQuadtreeField, Use::transfer_write)};
+                  use(kQuadtreeField, Use::transfer_write), use(macro_names::kHeights, Use::transfer_write)};
     setup.settings = "the first grass population's cells";
     setup.record = [](PassContext& pc) {
         const GeneratedPopulation* grass = first_grass(pc.populations());
@@ -73,18 +82,29 @@ void declare_quadtree(FrameGraph& g, const std::vector<QuadtreeBandDecl>& bands,
         const shader::GrassMacroField placement = macro_field(field, 0, cell_frame(bounds).max.y, grass->transmission);
         pc.upload(macro_names::kCells, cells.data(), cells.size() * sizeof(shader::GrassCell));
         pc.upload(macro_names::kField, &placement, sizeof(placement));
+        if (macros_on_terrain(pc.populations())) {
+            const std::vector<float> heights = grid_heights(field, grass->instances);
+            pc.upload(macro_names::kHeights, heights.data(), heights.size() * sizeof(float));
+        }
     };
     g.passes.push_back(std::move(setup));
 
     // Every frame: the traversal, and each band's list and record.
     PassDecl select{.name = "quadtree", .kind = PassKind::cpu};
     select.uses.push_back(use(kQuadtreeField, Use::storage_read, 0));  // read on the CPU (no descriptor)
+    select.uses.push_back(use(macro_names::kHeights, Use::storage_read, 1));
     std::string settings;
     for (const QuadtreeBandDecl& band : bands) {
         select.uses.push_back(use(quadtree_list(band.name), Use::transfer_write));
         select.uses.push_back(use(quadtree_draw(band.name), Use::transfer_write));
-        settings += fmt::format("{}{} {}-{} {}", settings.empty() ? "" : "; ", band.name, band.min_distance,
-                                band.max_distance, draws_copies(band) ? "copies" : fmt::format("macro<={}", band.max_macro));
+        if (!draws_copies(band) && band.height_ranges)
+            select.uses.push_back(use(quadtree_ranges(band.name), Use::transfer_write));
+        settings += fmt::format("{}{} {}-{} {}{}{}", settings.empty() ? "" : "; ", band.name, band.min_distance,
+                                band.max_distance, draws_copies(band) ? "copies" : fmt::format("macro<={}", band.max_macro),
+                                std::isinf(band.max_unplanarity)
+                                    ? ""
+                                    : fmt::format(" unplanarity<={} on a terrain", band.max_unplanarity),
+                                band.height_ranges ? " height ranges on a terrain" : "");
     }
     select.settings = fmt::format("{}; copy capacity {}", settings, copy_capacity);
     select.run = [bands, copy_capacity, capacity_parameter](CpuPassContext& cc) {
@@ -98,11 +118,19 @@ void declare_quadtree(FrameGraph& g, const std::vector<QuadtreeBandDecl>& bands,
         QuadtreeSelection selection;
         QuadtreeField field;
         std::memcpy(&field, cc.read(kQuadtreeField).data(), sizeof(field));
+        const bool on_terrain = macros_on_terrain(cc.populations());
         if (grass && !grass->instances.empty()) {
             std::vector<QuadtreeBand> tests;
             for (const QuadtreeBandDecl& band : bands)
-                tests.push_back({band.min_distance, band.max_distance, draws_copies(band) ? 1u : band.max_macro});
-            selection = select_cells(field, tests, cc.frame().camera.position, cc.view_proj());
+                tests.push_back({band.min_distance, band.max_distance, draws_copies(band) ? 1u : band.max_macro,
+                                 band.max_unplanarity});
+            std::span<const float> grid;
+            if (on_terrain) {
+                const std::span<const std::byte> bytes = cc.read(macro_names::kHeights);
+                grid = {reinterpret_cast<const float*>(bytes.data()),
+                        size_t(field.cells.x + 1) * size_t(field.cells.y + 1)};
+            }
+            selection = select_cells(field, tests, cc.frame().camera.position, cc.view_proj(), grid);
         } else {
             selection.bands.resize(bands.size());
         }
@@ -138,6 +166,12 @@ void declare_quadtree(FrameGraph& g, const std::vector<QuadtreeBandDecl>& bands,
                 const VkDrawIndirectCommand draw{band.vertex_count, uint32_t(macros.size()), 0, 0};
                 if (!macros.empty())
                     cc.upload(quadtree_list(band.name), macros.data(), macros.size() * sizeof(MacroInstance));
+                if (on_terrain && band.height_ranges && !nodes.empty()) {
+                    std::vector<glm::vec2> ranges;
+                    ranges.reserve(nodes.size());
+                    for (const QuadtreeNode& n : nodes) ranges.push_back(n.heights);
+                    cc.upload(quadtree_ranges(band.name), ranges.data(), ranges.size() * sizeof(glm::vec2));
+                }
                 cc.upload(quadtree_draw(band.name), &draw, sizeof(draw));
             }
         }
@@ -149,6 +183,8 @@ void use_quadtree_band(PassDecl& pass, const QuadtreeBandDecl& band) {
     if (!draws_copies(band)) {
         pass.uses.push_back(use(macro_names::kField, Use::uniform, 3));
         pass.uses.push_back(use(macro_names::kCells, Use::storage_read, 4));
+        pass.uses.push_back(use(macro_names::kHeights, Use::storage_read, 5));
+        if (band.height_ranges) pass.uses.push_back(use(quadtree_ranges(band.name), Use::storage_read, 6));
     }
     pass.uses.push_back(use(quadtree_list(band.name), Use::vertex));
     pass.uses.push_back(use(quadtree_draw(band.name), Use::indirect));
@@ -165,9 +201,10 @@ void draw_quadtree_band(PassContext& pc, const QuadtreeBandDecl& band, const std
 }
 
 void record_quadtree_band(PassContext& pc, const std::optional<RasterState>& ground, const RasterState& over,
-                          const QuadtreeBandDecl& band, const std::string& vertex_buffer) {
+                          const RasterState& over_on_terrain, const QuadtreeBandDecl& band,
+                          const std::string& vertex_buffer) {
     if (ground) record_ground(pc, *ground);
-    pc.bind(pc.raster_pipeline(over));
+    pc.bind(pc.raster_pipeline(macros_on_terrain(pc.populations()) ? over_on_terrain : over));
     draw_quadtree_band(pc, band, vertex_buffer);
 }
 

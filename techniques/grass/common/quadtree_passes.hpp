@@ -13,6 +13,7 @@
 #include "graph/raster_state.hpp"
 
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -27,14 +28,23 @@ struct QuadtreeBandDecl {
     // at most `max_macro` cells a side, `vertex_count` vertices each (a cuboid, a quad).
     uint32_t vertex_count = 0;
     uint32_t max_macro = 1;
+    // On a terrain (the first grass population's): split a macro-cell whose ground departs from
+    // its corners' bilinear patch by more than this (world units; the image's quads follow their
+    // corners alone); infinite: never.
+    float max_unplanarity = std::numeric_limits<float>::infinity();
+    // On a terrain: write each macro-cell's height range beside its record (the volume's cuboids span it).
+    bool height_ranges = false;
 };
 
-// Names of a band's buffers: "<name>_quadtree_list" (copies or macro-cells) and
-// "<name>_quadtree_draw" (its indirect record).
+// Names of a band's buffers: "<name>_quadtree_list" (copies or macro-cells),
+// "<name>_quadtree_draw" (its indirect record) and, on a terrain with `height_ranges`,
+// "<name>_quadtree_ranges" (a vec2 per macro-cell of the list).
 std::string quadtree_list(const std::string& band);
 std::string quadtree_draw(const std::string& band);
+std::string quadtree_ranges(const std::string& band);
 
-// The field's records (macro_names::kCells, kField) and their load-phase upload, the bands'
+// The field's records (macro_names::kCells, kField; on a terrain kHeights, which the traversal
+// reads too) and their load-phase upload, the bands'
 // host-visible lists and records, and the frame's CPU pass `quadtree`. `copy_capacity`: the most
 // cells a copies band may keep in a frame (more fails the frame, naming `capacity_parameter`).
 // Counts per frame: <band>_cells (cells drawn), <band>_draws (instances: cells or macro-cells),
@@ -43,7 +53,8 @@ void declare_quadtree(FrameGraph& g, const std::vector<QuadtreeBandDecl>& bands,
                       const std::string& capacity_parameter);
 
 // The uses a pass drawing a band's list adds: a copies band's list (vertex) and record
-// (indirect); a macro band's also the field's records (uniform at binding 3, storage at 4).
+// (indirect); a macro band's also the field's records (uniform at binding 3, storage at 4), its
+// grid heights (storage at 5) and, with `height_ranges`, its ranges (storage at 6).
 void use_quadtree_band(PassDecl& pass, const QuadtreeBandDecl& band);
 
 // Draws a copies band with the bound pipeline (the first grass population's prototype over the
@@ -51,8 +62,10 @@ void use_quadtree_band(PassDecl& pass, const QuadtreeBandDecl& band);
 void draw_quadtree_band(PassContext& pc, const QuadtreeBandDecl& band, const std::string& vertex_buffer = "");
 
 // What a macro band's frame pass records (grass.volume's and grass.image's passes under a
-// quadtree): the scene's objects with `ground` when given, then the band drawn with `over`.
+// quadtree): the scene's objects with `ground` when given, then the band drawn with `over`, or
+// `over_on_terrain` when the first grass population stands on a terrain.
 void record_quadtree_band(PassContext& pc, const std::optional<RasterState>& ground, const RasterState& over,
-                          const QuadtreeBandDecl& band, const std::string& vertex_buffer);
+                          const RasterState& over_on_terrain, const QuadtreeBandDecl& band,
+                          const std::string& vertex_buffer);
 
 }  // namespace canopy::grass

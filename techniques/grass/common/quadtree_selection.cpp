@@ -1,7 +1,11 @@
 #include "quadtree_selection.hpp"
 
+#include "macro_cells.hpp"
+
 #include "../shaders/grass_culling.h"
 #include "../shaders/lod_selection.h"
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <array>
@@ -19,8 +23,8 @@ constexpr float kSlack = 1e-4f;
 class Traversal {
 public:
     Traversal(const QuadtreeField& field, const std::vector<QuadtreeBand>& bands, glm::vec3 eye,
-              const glm::mat4& view_proj)
-        : field_(field), bands_(bands), eye_(eye), view_proj_(view_proj) {
+              const glm::mat4& view_proj, std::span<const float> grid)
+        : field_(field), bands_(bands), eye_(eye), view_proj_(view_proj), grid_(grid) {
         // world = origin + cell_size * (field point), the field's cells one unit wide.
         model_ = glm::mat4(field.cell_size);
         model_[3] = glm::vec4(field.origin, 1.0f);
@@ -38,19 +42,34 @@ public:
     }
 
 private:
+    // The node, with its ground's height range on a terrain.
     QuadtreeNode node_at(uint32_t level, glm::uvec2 index) const {
         const uint32_t size = 1u << level;
         const glm::uvec2 first = index * size;
-        return {first, glm::min(glm::uvec2(size), field_.cells - first)};
+        if (first.x >= field_.cells.x || first.y >= field_.cells.y) return {first, glm::uvec2(0)};  // beyond the field
+        QuadtreeNode node{first, glm::min(glm::uvec2(size), field_.cells - first)};
+        if (!grid_.empty()) node.heights = macro_height_range(grid_, field_.cells, macro_of(node));
+        return node;
+    }
+
+    static MacroInstance macro_of(const QuadtreeNode& n) { return MacroInstance(n.first.x, n.first.y, n.span.x, n.span.y); }
+
+    // The range of its cells' first corners' heights, where their centres stand (0 on flat ground).
+    glm::vec2 centre_heights(const QuadtreeNode& n) const {
+        if (grid_.empty()) return glm::vec2(0.0f);
+        return macro_height_range(grid_, field_.cells, MacroInstance(n.first.x, n.first.y, n.span.x - 1, n.span.y - 1));
     }
 
     void visit(uint32_t level, glm::uvec2 index, uint32_t active) {
         const QuadtreeNode node = node_at(level, index);
         ++out_.nodes_visited;
-        const glm::vec3 lo(float(node.first.x) + lo_.x, lo_.y, float(node.first.y) + lo_.z);
-        const glm::vec3 hi(float(node.first.x + node.span.x - 1) + hi_.x, hi_.y, float(node.first.y + node.span.y - 1) + hi_.z);
+        // Field units: the heights scaled by the cell's width, as the model scales y.
+        const glm::vec2 lift = node.heights / field_.cell_size;
+        const glm::vec3 lo(float(node.first.x) + lo_.x, lo_.y + lift.x, float(node.first.y) + lo_.z);
+        const glm::vec3 hi(float(node.first.x + node.span.x - 1) + hi_.x, hi_.y + lift.y,
+                           float(node.first.y + node.span.y - 1) + hi_.z);
         if (!shader::grass_cell_visible(view_proj_, eye_, model_, lo, hi, 0.0f, 0.0f)) return;
-        const glm::vec2 d = node_centre_distances(field_, node, eye_);
+        const glm::vec2 d = node_centre_distances(field_, node, eye_, centre_heights(node));
         const float slack = kSlack * std::max(1.0f, d.y);
         uint32_t split = 0;
         for (size_t b = 0; b < bands_.size(); ++b) {
@@ -60,7 +79,7 @@ private:
             const bool none = d.y < band.min_distance - slack || (!unbounded && d.x > band.max_distance + slack);
             if (none) continue;  // discard
             const bool whole = d.x >= band.min_distance && (unbounded || d.y <= band.max_distance);
-            if (level == 0 || (whole && std::max(node.span.x, node.span.y) <= band.max_macro))
+            if (level == 0 || (whole && std::max(node.span.x, node.span.y) <= band.max_macro && flat_enough(node, band)))
                 out_.bands[b].push_back(node);  // draw
             else
                 split |= 1u << b;
@@ -73,17 +92,23 @@ private:
             const glm::uvec2 child = index * 2u + glm::uvec2(c & 1u, c >> 1);
             const QuadtreeNode n = node_at(level - 1, child);
             if (n.first.x >= field_.cells.x || n.first.y >= field_.cells.y) continue;
-            children[count++] = {node_centre_distances(field_, n, eye_).x, child};
+            children[count++] = {node_centre_distances(field_, n, eye_, centre_heights(n)).x, child};
         }
         for (size_t i = 1; i < count; ++i)  // insertion sort of at most 4
             for (size_t j = i; j > 0 && children[j].first < children[j - 1].first; --j) std::swap(children[j], children[j - 1]);
         for (size_t c = 0; c < count; ++c) visit(level - 1, children[c].second, split);
     }
 
+    bool flat_enough(const QuadtreeNode& node, const QuadtreeBand& band) const {
+        if (grid_.empty() || node.cells() == 1 || std::isinf(band.max_unplanarity)) return true;
+        return macro_unplanarity(grid_, field_.cells, macro_of(node)) <= band.max_unplanarity;
+    }
+
     const QuadtreeField& field_;
     const std::vector<QuadtreeBand>& bands_;
     glm::vec3 eye_;
     glm::mat4 view_proj_;
+    std::span<const float> grid_;
     glm::mat4 model_;
     glm::vec3 lo_, hi_;  // a cell's box, field units relative to its first corner
     QuadtreeSelection out_;
@@ -97,20 +122,25 @@ uint32_t quadtree_root_level(glm::uvec2 cells) {
     return level;
 }
 
-glm::vec2 node_centre_distances(const QuadtreeField& field, const QuadtreeNode& node, glm::vec3 eye) {
+glm::vec2 node_centre_distances(const QuadtreeField& field, const QuadtreeNode& node, glm::vec3 eye,
+                                glm::vec2 centre_heights) {
     const glm::vec2 first = glm::vec2(node.first) + 0.5f, last = glm::vec2(node.first + node.span) - 0.5f;
-    const glm::vec3 lo = field.origin + field.cell_size * glm::vec3(first.x, 0.0f, first.y);
-    const glm::vec3 hi = field.origin + field.cell_size * glm::vec3(last.x, 0.0f, last.y);
+    const glm::vec3 lo = field.origin + glm::vec3(field.cell_size * first.x, centre_heights.x, field.cell_size * first.y);
+    const glm::vec3 hi = field.origin + glm::vec3(field.cell_size * last.x, centre_heights.y, field.cell_size * last.y);
     const glm::vec3 nearest = glm::clamp(eye, lo, hi);
-    const glm::vec3 farthest(std::abs(eye.x - lo.x) > std::abs(eye.x - hi.x) ? lo.x : hi.x, lo.y,
+    const glm::vec3 farthest(std::abs(eye.x - lo.x) > std::abs(eye.x - hi.x) ? lo.x : hi.x,
+                             std::abs(eye.y - lo.y) > std::abs(eye.y - hi.y) ? lo.y : hi.y,
                              std::abs(eye.z - lo.z) > std::abs(eye.z - hi.z) ? lo.z : hi.z);
     return {glm::length(eye - nearest), glm::length(eye - farthest)};
 }
 
 QuadtreeSelection select_cells(const QuadtreeField& field, const std::vector<QuadtreeBand>& bands, glm::vec3 eye,
-                               const glm::mat4& view_proj) {
+                               const glm::mat4& view_proj, std::span<const float> grid) {
     if (bands.size() > 31) throw std::logic_error("select_cells: at most 31 bands");  // one bit each, and all set
-    return Traversal(field, bands, eye, view_proj).run();
+    if (!grid.empty() && grid.size() != size_t(field.cells.x + 1) * (field.cells.y + 1))
+        throw std::logic_error(fmt::format("select_cells: {} grid heights for a field of {} x {} cells", grid.size(),
+                                           field.cells.x, field.cells.y));
+    return Traversal(field, bands, eye, view_proj, grid).run();
 }
 
 }  // namespace canopy::grass

@@ -17,6 +17,12 @@
 // frustum, as the GPU cull does, where Lemme tests a bounding sphere against a sphere and a cone).
 // Children are visited nearest first, so each band's list runs roughly front to back.
 //
+// On a terrain (the field's grid heights given), a node's box spans the lowest to the highest grid
+// height under it, its cells' centres are lifted to their first corners' ground (where a copy's
+// model puts them, and where the shaders measure a cell's distance), and a band may require its
+// macro-cells to be flat enough: a node whose unplanarity (macro_unplanarity) exceeds the band's
+// is split, Lemme's lod test for a terrain (L906-908).
+//
 // Pure CPU: tests check it against a brute-force pass over every cell.
 #pragma once
 
@@ -25,6 +31,8 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <limits>
+#include <span>
 #include <vector>
 
 namespace canopy::grass {
@@ -45,12 +53,16 @@ struct QuadtreeBand {
     float min_distance = 0.0f;
     float max_distance = 0.0f;
     uint32_t max_macro = 1;  // the widest node (cells a side) drawn as one macro-cell; 1: single cells
+    // On a terrain: the most a macro-cell's ground may depart from the bilinear patch of its
+    // corners (world units); a node beyond it is split. Infinite: never split for it.
+    float max_unplanarity = std::numeric_limits<float>::infinity();
 };
 
 // A drawn node: its first cell and its span in cells (x, z), as the macro shaders read it.
 struct QuadtreeNode {
     glm::uvec2 first{0, 0};
     glm::uvec2 span{1, 1};
+    glm::vec2 heights{0.0f, 0.0f};  // on a terrain: the lowest and highest grid height under it (macro_height_range)
     uint32_t cells() const { return span.x * span.y; }
 };
 
@@ -63,11 +75,15 @@ struct QuadtreeSelection {
 uint32_t quadtree_root_level(glm::uvec2 cells);
 
 // The eye's least and greatest distance to the centres of the node's cells (patch point
-// (0.5, 0, 0.5) of each, on the field's plane): a bound on what lod_cuts sees in its cells.
-glm::vec2 node_centre_distances(const QuadtreeField& field, const QuadtreeNode& node, glm::vec3 eye);
+// (0.5, 0, 0.5) of each, on the field's plane; on a terrain lifted to their first corners'
+// ground, whose heights `centre_heights` bound): a bound on what lod_cuts sees in its cells.
+glm::vec2 node_centre_distances(const QuadtreeField& field, const QuadtreeNode& node, glm::vec3 eye,
+                                glm::vec2 centre_heights = glm::vec2(0.0f));
 
-// The traversal for one frame: `eye` and `view_proj` (world -> clip, frame.view_proj).
+// The traversal for one frame: `eye` and `view_proj` (world -> clip, frame.view_proj). `grid`: on
+// a terrain, the field's grid heights above its origin (macro_cells.hpp's grid_heights,
+// (cells.x + 1)(cells.y + 1) of them); empty on flat ground.
 QuadtreeSelection select_cells(const QuadtreeField& field, const std::vector<QuadtreeBand>& bands, glm::vec3 eye,
-                               const glm::mat4& view_proj);
+                               const glm::mat4& view_proj, std::span<const float> grid = {});
 
 }  // namespace canopy::grass

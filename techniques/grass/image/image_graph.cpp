@@ -92,7 +92,8 @@ void declare_image_bake(FrameGraph& g, const ImageSettings& s) {
 }
 
 PassDecl image_frame_pass(const ImageSettings& s, const RasterState& per_cell, bool ground,
-                          std::vector<ResourceUse> attachments) {
+                          std::vector<ResourceUse> attachments,
+                           const std::optional<RasterState>& per_cell_on_terrain) {
     const Names names(s.prefix);
     const uint32_t macro = s.macro_cells;
     PassDecl frame{.name = s.prefix + "slices", .kind = PassKind::raster};
@@ -103,12 +104,15 @@ PassDecl image_frame_pass(const ImageSettings& s, const RasterState& per_cell, b
     const std::optional<RasterState> objects = ground ? std::optional<RasterState>(ground_state()) : std::nullopt;
     if (s.selected_by) {
         use_quadtree_band(frame, *s.selected_by);
+        if (!per_cell_on_terrain) throw std::logic_error("image_frame_pass: a quadtree's band needs its shaders on a terrain");
         RasterState slice = per_cell;
         slice.vertices = macro_layout();
+        RasterState on_terrain = *per_cell_on_terrain;
+        on_terrain.vertices = macro_layout();
         frame.settings = fmt::format("one quad per cell or macro-cell (at most {} a side) the quadtree's {} band keeps",
                                      s.selected_by->max_macro, s.selected_by->name);
-        frame.record = [objects, slice, band = *s.selected_by, quad = names.quad](PassContext& pc) {
-            record_quadtree_band(pc, objects, slice, band, quad);
+        frame.record = [objects, slice, on_terrain, band = *s.selected_by, quad = names.quad](PassContext& pc) {
+            record_quadtree_band(pc, objects, slice, on_terrain, band, quad);
         };
     } else if (macro > 0) {
         if (!objects) throw std::logic_error("image_frame_pass: macro-cells draw the ground in their pass");

@@ -43,7 +43,9 @@ void declare_image_bake(FrameGraph& g, const ImageSettings& s);
 // The frame pass: with `ground`, the scene's objects first; then one quad per cell (drawn with
 // `per_cell`, shaders of the image's bodies, shaders/grass_image_vertex.glsl and
 // grass_image_fragment.glsl) or per macro-cell. `attachments`: colour and depth, cleared or loaded.
+// Under a quadtree (`selected_by`), `per_cell_on_terrain` are the macro shaders for a field on a terrain.
 PassDecl image_frame_pass(const ImageSettings& s, const RasterState& per_cell, bool ground,
-                          std::vector<ResourceUse> attachments);
+                          std::vector<ResourceUse> attachments,
+                          const std::optional<RasterState>& per_cell_on_terrain = std::nullopt);
 
 }  // namespace canopy::grass

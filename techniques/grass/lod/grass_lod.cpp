@@ -26,6 +26,8 @@
 #include "shaders/grass/grass_lod_blades_vert.h"
 #include "shaders/grass/grass_lod_image_frag.h"
 #include "shaders/grass/grass_lod_image_macro_frag.h"
+#include "shaders/grass/grass_lod_image_macro_terrain_frag.h"
+#include "shaders/grass/grass_lod_image_macro_terrain_vert.h"
 #include "shaders/grass/grass_lod_image_macro_vert.h"
 #include "shaders/grass/grass_lod_image_vert.h"
 #include "shaders/grass/grass_lod_slices_frag.h"
@@ -34,6 +36,9 @@
 #include "shaders/grass/grass_lod_volume_per_sample_frag.h"
 #include "shaders/grass/grass_lod_volume_macro_frag.h"
 #include "shaders/grass/grass_lod_volume_macro_per_sample_frag.h"
+#include "shaders/grass/grass_lod_volume_macro_terrain_frag.h"
+#include "shaders/grass/grass_lod_volume_macro_terrain_per_sample_frag.h"
+#include "shaders/grass/grass_lod_volume_macro_terrain_vert.h"
 #include "shaders/grass/grass_lod_volume_macro_vert.h"
 #include "shaders/grass/grass_lod_volume_vert.h"
 
@@ -127,12 +132,14 @@ public:
                                                   .min_distance = band_distances(shader::GRASS_LOD_VOLUME).x,
                                                   .max_distance = band_distances(shader::GRASS_LOD_VOLUME).y,
                                                   .vertex_count = grass::kVolumeCellVertices,
-                                                  .max_macro = uint32_t(params.integer("middle_macro_max"))};
+                                                  .max_macro = uint32_t(params.integer("middle_macro_max")),
+                                                  .height_ranges = true};
         const grass::QuadtreeBandDecl far_band{.name = "far",
                                                .min_distance = band_distances(shader::GRASS_LOD_IMAGE).x,
                                                .max_distance = band_distances(shader::GRASS_LOD_IMAGE).y,
                                                .vertex_count = grass::kImageCellVertices,
-                                               .max_macro = uint32_t(params.integer("far_macro_max"))};
+                                               .max_macro = uint32_t(params.integer("far_macro_max")),
+                                               .max_unplanarity = float(params.real("macro_unplanarity"))};
         const grass::VolumeSettings volume{.slices = uint32_t(block.slices),
                                            .resolution = uint32_t(params.integer("resolution")),
                                            .height_resolution = uint32_t(params.integer("height_resolution")),
@@ -153,9 +160,9 @@ public:
                                          .selected_by = quadtree ? std::optional(far_band) : std::nullopt};
         FrameGraph g;
         g.needs.populations = {grass::kGrassPopulationKind};
-        // Each band's per-cell representation follows a terrain as it does alone; the quadtree's
-        // macro-cells do not yet.
-        g.needs.populations_on_terrain = !quadtree;
+        // Each band's per-cell representation follows a terrain as it does alone, and so do the
+        // quadtree's macro-cells (their _terrain shaders, chosen when the frame is recorded).
+        g.needs.populations_on_terrain = true;
         g.shader_params.set_block(block);
         const bool per_sample = params.boolean("middle_per_sample");
         // The shadowed bake is the slices' alone; given with the volume (a config refuses that, conflict()) it is said unused.
@@ -179,11 +186,13 @@ public:
         if (!quadtree) {
             // The quadtree's settings, when given without it: said, so a sweep over them shows why nothing moves.
             std::string unused;
-            for (const char* name : {"middle_macro_max", "far_macro_max", "near_capacity"}) {
+            for (const char* name : {"middle_macro_max", "far_macro_max", "near_capacity", "macro_unplanarity"}) {
                 const ParamSpec& spec = *std::find_if(params_specs().begin(), params_specs().end(),
                                                       [&](const ParamSpec& p) { return p.name == name; });
-                if (params.integer(name) != std::get<long long>(spec.default_value))
-                    unused += fmt::format("{}{} {}", unused.empty() ? "" : ", ", name, params.integer(name));
+                const ParamValue& value = std::find_if(params.values().begin(), params.values().end(),
+                                                       [&](const auto& v) { return v.first == name; })->second;
+                if (value != spec.default_value)
+                    unused += fmt::format("{}{} {}", unused.empty() ? "" : ", ", name, to_string(value));
             }
             if (!unused.empty()) g.report["culling"] += " (" + unused + " unused: culling = \"quadtree\" only)";
         }
@@ -252,8 +261,13 @@ public:
                                            : (per_sample ? std::span<const uint32_t>(grass_lod_volume_per_sample_frag)
                                                          : std::span<const uint32_t>(grass_lod_volume_frag));
         middle.sample_shading = per_sample;
+        RasterState middle_on_terrain = middle;  // the quadtree's macro-cells on a terrain
+        middle_on_terrain.vertex_spirv = grass_lod_volume_macro_terrain_vert;
+        middle_on_terrain.fragment_spirv = per_sample ? std::span<const uint32_t>(grass_lod_volume_macro_terrain_per_sample_frag)
+                                                      : std::span<const uint32_t>(grass_lod_volume_macro_terrain_frag);
         g.passes.push_back(btf ? grass::slices_frame_pass(slices, middle, false, band_attachments(samples, false, false))
-                               : grass::volume_frame_pass(volume, middle, false, band_attachments(samples, false, false)));
+                               : grass::volume_frame_pass(volume, middle, false, band_attachments(samples, false, false),
+                                                          middle_on_terrain));
         if (per_sample) g.passes.back().settings += "; ray-cast once per covered sample";
         if (!btf && !middle_shadows.empty()) g.passes.back().settings += ";" + middle_shadows;  // said, as unused culling settings are
         RasterState quads;
@@ -261,7 +275,10 @@ public:
                                       : std::span<const uint32_t>(grass_lod_image_vert);
         quads.fragment_spirv = quadtree ? std::span<const uint32_t>(grass_lod_image_macro_frag)
                                         : std::span<const uint32_t>(grass_lod_image_frag);
-        g.passes.push_back(grass::image_frame_pass(image, quads, false, band_attachments(samples, false, true)));
+        RasterState quads_on_terrain = quads;
+        quads_on_terrain.vertex_spirv = grass_lod_image_macro_terrain_vert;
+        quads_on_terrain.fragment_spirv = grass_lod_image_macro_terrain_frag;
+        g.passes.push_back(grass::image_frame_pass(image, quads, false, band_attachments(samples, false, true), quads_on_terrain));
         if (samples > 1) g.passes.push_back(grass::clear_camera_depth_pass());
         return g;
     }

@@ -18,6 +18,7 @@
 #include "support/test_gpu.hpp"
 
 #include <doctest/doctest.h>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -206,6 +207,22 @@ TEST_CASE("grass.lod quadtree: a field costs 48 bytes of GPU memory a cell, what
     };
     CHECK(gpu_bytes(6) - gpu_bytes(3) == (36 - 9) * 48);
     CHECK(gpu_bytes(20) - gpu_bytes(3) == (400 - 9) * 48);
+    // On a terrain, 12 more: the grid heights (4 bytes a cell) and the middle band's height ranges
+    // (8 bytes a macro-cell, at most one a cell).
+    const auto terrain_bytes = [](uint32_t side) {
+        const Scene scene = parse_scene(
+            fmt::format("[scene]\nname = \"hills\"\n[camera]\nposition = [0, 3, 4]\ntarget = [0, 0, 0]\n"
+                        "[[light]]\ntype = \"directional\"\ndirection = [-0.3, -1, -0.2]\n"
+                        "[[object]]\nname = \"ground\"\nshape = \"heightfield\"\nsize = [{0}, {0}]\nvertices = {1}\n"
+                        "periods = 1\nseed = 2\nheight_scale = 1\n"
+                        "[[population]]\nname = \"field\"\nkind = \"grass\"\nterrain = \"ground\"\n"
+                        "params = {{ cells_x = {0}, cells_z = {0}, blades = 60, subdivisions = 3 }}\n",
+                        side, side + 1),
+            "hills.toml");
+        // The technique's alone: the scene's ground mesh grows with the field too.
+        return renderer(scene, "grass.lod", quadtree_values(2.0, 2.6, 3.0, 3.4))->memory().technique_bytes;
+    };
+    CHECK(terrain_bytes(20) - terrain_bytes(3) == (400 - 9) * 60);
 }
 
 TEST_CASE("grass.lod quadtree: more near cells than near_capacity, or two grass populations, fail the frame saying what to change") {
@@ -234,4 +251,66 @@ TEST_CASE("grass.lod quadtree: the BTF slices have no macro-cells, so middle = s
     const auto conflict = t.conflict(ParamSet::resolve(t.params(), values, {}, {}, "grass.lod"));
     REQUIRE(conflict);
     CHECK(conflict->hint.find("middle = \"volume\"") != std::string::npos);
+}
+
+TEST_CASE("grass.lod quadtree on a terrain: with its bands at either end it draws what each representation draws "
+          "alone on the hills") {
+    // The hills' 4 x 4 cells: the quadtree's nodes of at most 2 cells a side are the macro-cells
+    // of 2, and the image's splits where the ground is uneven are the same in both (a 2 x 2 node
+    // into its four cells).
+    const Scene hills = grass::test::hills_scene("[camera]\nposition = [0.0, 2.5, 4.5]\ntarget = [0.0, 0.3, 0.0]\nfov = 45", 1.2);
+    const Image blades = render(hills, "grass.geometry", {{"samples", 1LL}, {"coverage", std::string("alpha_test")}});
+    const Image volume = render(hills, "grass.volume",
+                                {{"slices", 4LL}, {"resolution", 96LL}, {"height_resolution", 48LL}, {"macro_cells", 2LL}});
+    CHECK(max_difference(render(hills, "grass.lod", quadtree_values(1e6, 1e6, 1e6, 1e6)), blades) <= 1e-5f);
+    CHECK(max_difference(render(hills, "grass.lod", quadtree_values(0, 0, 1e6, 1e6)), volume) <= 1e-5f);
+    for (const double unplanarity : {0.05, 1e4}) {
+        CAPTURE(unplanarity);
+        const Image image =
+            render(hills, "grass.image", {{"resolution", 128LL}, {"macro_cells", 2LL}, {"macro_unplanarity", unplanarity}});
+        Values values = quadtree_values(0, 0, 0, 0);
+        values["macro_unplanarity"] = unplanarity;
+        CHECK(max_difference(render(hills, "grass.lod", values), image) <= 1e-5f);
+    }
+    // The two image checks above tell the splits apart.
+    CHECK(max_difference(render(hills, "grass.image", {{"resolution", 128LL}, {"macro_cells", 2LL}}),
+                         render(hills, "grass.image", {{"resolution", 128LL}, {"macro_cells", 2LL}, {"macro_unplanarity", 1e4}})) >
+          0.1f);
+}
+
+TEST_CASE("grass.lod quadtree on a terrain: the macro-cells' bands take a cell's distance where its copy's blades do, "
+          "at its first corner's ground") {
+    // One cell on a slope, the eye 2 m above its first corner's ground and 1 m aside. With every
+    // band's edge at `cut`, between the eye's distance to the cell's centre lifted to that ground
+    // and to the centre on the field's plane, the cell is all blades: the middle and far bands,
+    // drawn as macro-cells, must draw nothing of it, as the blades' copies see it.
+    const std::string ground = "[[object]]\nname = \"ground\"\nshape = \"heightfield\"\nsize = [1, 1]\nvertices = 2\n"
+                               "periods = 1\nseed = 7\nheight_scale = 3\nalbedo = [0.6, 0.3, 0.1]\n";
+    const auto scene_with = [&](const std::string& camera) {
+        return parse_scene(std::string("[scene]\nname = \"slope\"\nambient = 0.2\n") + camera +
+                               "\n[[light]]\ntype = \"directional\"\ndirection = [-0.3, -1, -0.2]\ncasts_shadows = false\n" +
+                               ground +
+                               "[[population]]\nname = \"field\"\nkind = \"grass\"\nterrain = \"ground\"\n"
+                               "albedo = [0.1, 0.8, 0.1]\nparams = { cells_x = 1, cells_z = 1, blades = 300, subdivisions = 3 }\n",
+                           "slope.toml");
+    };
+    const Scene probe = scene_with("[camera]\nposition = [0, 5, 3]\ntarget = [0, 0, 0]");
+    const PopulationInstance copy = generate_instances(probe.populations.at(0))->at(0);
+    const glm::vec3 lifted = glm::vec3(copy.model * glm::vec4(0.5f, 0.0f, 0.5f, 1.0f));
+    const float ground_height = copy.model[3].y;
+    CAPTURE(ground_height);
+    REQUIRE(ground_height > 0.6f);  // the seed's slope lifts the first corner well above the plane
+    const glm::vec3 eye = lifted + glm::vec3(0.0f, 2.0f, 1.0f);
+    const glm::vec3 on_plane(lifted.x, lifted.y - ground_height, lifted.z);
+    const double cut = 0.5 * (glm::length(eye - lifted) + glm::length(eye - on_plane));
+    const Scene scene = scene_with(fmt::format("[camera]\nposition = [{}, {}, {}]\ntarget = [{}, {}, {}]\nfov = 60",
+                                               eye.x, eye.y, eye.z, lifted.x, lifted.y, lifted.z));
+    const Image blades = render(scene, "grass.geometry", {{"samples", 1LL}, {"coverage", std::string("alpha_test")}});
+    CHECK(grass::test::grass_pixels(blades) > 250);
+    // Blades to `cut`, then the volume (left) or the image (right).
+    CHECK(max_difference(render(scene, "grass.lod", quadtree_values(cut, cut, 1e6, 1e6)), blades) <= 1e-5f);
+    CHECK(max_difference(render(scene, "grass.lod", quadtree_values(cut, cut, cut, cut)), blades) <= 1e-5f);
+    // Past `cut` the cell is the other bands' alone: the check above sees a band that draws it.
+    const double beyond = glm::length(eye - lifted) - 0.2;
+    CHECK(max_difference(render(scene, "grass.lod", quadtree_values(beyond, beyond, 1e6, 1e6)), blades) > 0.1f);
 }

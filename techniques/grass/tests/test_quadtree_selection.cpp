@@ -5,6 +5,7 @@
 // band allows; a cell out of view is never drawn alone; and the tree visits far fewer nodes than
 // the field has cells. A traversal without its frustum test, or one that draws a node before it
 // lies wholly within a band, fails here.
+#include "../common/macro_cells.hpp"
 #include "../common/quadtree_selection.hpp"
 #include "../shaders/lod_selection.h"
 
@@ -61,20 +62,35 @@ Camera camera(glm::vec3 position, glm::vec3 target, float fov = 45.0f) {
 
 // Whether a cell's box (its patch mirrored either way) may be in view (support/cpu_checks, written
 // from the clip-space definition, not with the shaders' header).
-bool cell_in_view(const QuadtreeField& f, glm::uvec2 cell, const glm::mat4& view_proj) {
+// `grid`: the field's grid heights on a terrain (empty: flat); a cell's box then spans its four
+// corners' heights, and its centre stands at its first corner's.
+float grid_at(const QuadtreeField& f, const std::vector<float>& grid, uint32_t x, uint32_t z) {
+    return grid.empty() ? 0.0f : grid[size_t(z) * (f.cells.x + 1) + x];
+}
+
+bool cell_in_view(const QuadtreeField& f, glm::uvec2 cell, const glm::mat4& view_proj,
+                  const std::vector<float>& grid = {}) {
+    float low = 1e30f, high = -1e30f;
+    for (uint32_t c = 0; c < 4; ++c) {
+        const float h = grid_at(f, grid, cell.x + (c & 1), cell.y + (c >> 1));
+        low = std::min(low, h);
+        high = std::max(high, h);
+    }
     const Bounds& b = f.patch_box;
     const float lo_x = std::min(b.min.x, 1.0f - b.max.x), hi_x = std::max(b.max.x, 1.0f - b.min.x);
     const float lo_z = std::min(b.min.z, 1.0f - b.max.z), hi_z = std::max(b.max.z, 1.0f - b.min.z);
     std::array<glm::vec3, 8> corners;
     for (int c = 0; c < 8; ++c)
         corners[size_t(c)] = f.origin + f.cell_size * glm::vec3(float(cell.x) + ((c & 1) ? hi_x : lo_x),
-                                                                (c & 2) ? b.max.y : b.min.y,
+                                                                (c & 2) ? b.max.y + high / f.cell_size
+                                                                        : b.min.y + low / f.cell_size,
                                                                 float(cell.y) + ((c & 4) ? hi_z : lo_z));
     return grass::test::corners_may_be_seen(view_proj, corners);
 }
 
-float centre_distance(const QuadtreeField& f, glm::uvec2 cell, glm::vec3 eye) {
-    const glm::vec3 centre = f.origin + f.cell_size * glm::vec3(float(cell.x) + 0.5f, 0.0f, float(cell.y) + 0.5f);
+float centre_distance(const QuadtreeField& f, glm::uvec2 cell, glm::vec3 eye, const std::vector<float>& grid = {}) {
+    const glm::vec3 centre = f.origin + f.cell_size * glm::vec3(float(cell.x) + 0.5f, 0.0f, float(cell.y) + 0.5f) +
+                             glm::vec3(0.0f, grid_at(f, grid, cell.x, cell.y), 0.0f);
     return glm::length(centre - eye);
 }
 
@@ -90,9 +106,10 @@ uint32_t ceil_pow2(uint32_t n) {
 }
 
 // Every check of the file's header for one camera; the selection, for further checks.
-QuadtreeSelection check_selection(const QuadtreeField& f, const std::vector<QuadtreeBand>& bands, const Camera& cam) {
+QuadtreeSelection check_selection(const QuadtreeField& f, const std::vector<QuadtreeBand>& bands, const Camera& cam,
+                                  const std::vector<float>& grid = {}) {
     const glm::mat4 view_proj = view_projection(cam, kWidth, kHeight);
-    const QuadtreeSelection s = select_cells(f, bands, cam.position, view_proj);
+    const QuadtreeSelection s = select_cells(f, bands, cam.position, view_proj, grid);
     REQUIRE(s.bands.size() == bands.size());
     for (size_t b = 0; b < bands.size(); ++b) {
         CAPTURE(b);
@@ -108,12 +125,22 @@ QuadtreeSelection check_selection(const QuadtreeField& f, const std::vector<Quad
                 for (uint32_t x = node.first.x; x < node.first.x + node.span.x; ++x) {
                     if (x >= f.cells.x || z >= f.cells.y) continue;
                     ++drawn[size_t(z) * f.cells.x + x];
-                    const float d = centre_distance(f, {x, z}, cam.position);
+                    const float d = centre_distance(f, {x, z}, cam.position, grid);
                     // A macro-cell lies wholly within the band; a single cell at least touches it.
                     if (!within(d, band, node.cells() > 1 ? 1e-3f : 0.05f)) ++outside_band;
-                    if (node.cells() == 1 && !cell_in_view(f, {x, z}, view_proj)) ++hidden_cells;
+                    if (node.cells() == 1 && !cell_in_view(f, {x, z}, view_proj, grid)) ++hidden_cells;
                 }
         }
+        // On a terrain: each node carries its ground's range, and a band's macro-cells are flat enough.
+        int wrong_heights = 0, uneven = 0;
+        for (const QuadtreeNode& node : s.bands[b]) {
+            const MacroInstance m(node.first.x, node.first.y, node.span.x, node.span.y);
+            const glm::vec2 range = grid.empty() ? glm::vec2(0.0f) : macro_height_range(grid, f.cells, m);
+            wrong_heights += node.heights != range;
+            if (!grid.empty() && node.cells() > 1) uneven += macro_unplanarity(grid, f.cells, m) > band.max_unplanarity;
+        }
+        CHECK(wrong_heights == 0);
+        CHECK(uneven == 0);
         CHECK(misplaced == 0);
         CHECK(too_wide == 0);
         CHECK(unaligned == 0);
@@ -124,10 +151,10 @@ QuadtreeSelection check_selection(const QuadtreeField& f, const std::vector<Quad
             for (uint32_t x = 0; x < f.cells.x; ++x) {
                 const int n = drawn[size_t(z) * f.cells.x + x];
                 twice += n > 1;
-                const float d = centre_distance(f, {x, z}, cam.position);
+                const float d = centre_distance(f, {x, z}, cam.position, grid);
                 const bool surely_in_band = d > band.min_distance + 0.01f &&
                                             (band.max_distance >= shader::LOD_NO_DISTANCE || d < band.max_distance - 0.01f);
-                if (surely_in_band && cell_in_view(f, {x, z}, view_proj) && n == 0) ++missing;
+                if (surely_in_band && cell_in_view(f, {x, z}, view_proj, grid) && n == 0) ++missing;
             }
         CHECK(twice == 0);
         CHECK(missing == 0);
@@ -222,4 +249,29 @@ TEST_CASE("quadtree: macro-cells grow with the distance from the band's edges (L
     REQUIRE(near_count > 0);
     REQUIRE(far_count > 0);
     CHECK(near_width / near_count * 4 < far_width / far_count);
+}
+
+TEST_CASE("quadtree on a terrain: boxes and centres rise with the ground, and the far band's macro-cells are flat enough") {
+    const QuadtreeField f = test_field();
+    // Hills up to 12 m, waves of about 40 and 28 m.
+    std::vector<float> grid(size_t(f.cells.x + 1) * (f.cells.y + 1));
+    for (uint32_t z = 0; z <= f.cells.y; ++z)
+        for (uint32_t x = 0; x <= f.cells.x; ++x)
+            grid[size_t(z) * (f.cells.x + 1) + x] = 6.0f + 6.0f * std::sin(float(x) / 6.5f) * std::cos(float(z) / 4.5f);
+    std::vector<QuadtreeBand> bands = lod_bands();
+    bands[2].max_unplanarity = 0.05f;
+    SUBCASE("looking up a slope from a valley: flat boxes would lie below the view") {
+        const QuadtreeSelection s = check_selection(f, bands, camera({-40.0f, 3.0f, 0.0f}, {0.0f, 14.0f, 0.0f}), grid);
+        CHECK(!s.bands[0].empty());
+        CHECK(!s.bands[2].empty());
+    }
+    SUBCASE("player height over the hills") {
+        check_selection(f, bands, camera({-60.0f, 9.0f, 5.0f}, {0.0f, 6.0f, 0.0f}), grid);
+    }
+    SUBCASE("high above: the far band's macro-cells split where the ground is uneven, never above the threshold") {
+        const QuadtreeSelection uneven = check_selection(f, bands, camera({0.0f, 150.0f, 120.0f}, {0.0f, 0.0f, 0.0f}), grid);
+        bands[2].max_unplanarity = std::numeric_limits<float>::infinity();
+        const QuadtreeSelection any = check_selection(f, bands, camera({0.0f, 150.0f, 120.0f}, {0.0f, 0.0f, 0.0f}), grid);
+        CHECK(uneven.bands[2].size() > any.bands[2].size() * 2);
+    }
 }

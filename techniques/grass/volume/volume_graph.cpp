@@ -153,7 +153,8 @@ void declare_volume_bake(FrameGraph& g, const VolumeSettings& s) {
 }
 
 PassDecl volume_frame_pass(const VolumeSettings& s, const RasterState& per_cell, bool ground,
-                           std::vector<ResourceUse> attachments) {
+                           std::vector<ResourceUse> attachments,
+                           const std::optional<RasterState>& per_cell_on_terrain) {
     const Names names(s.prefix);
     const uint32_t macro = s.macro_cells;
     PassDecl frame{.name = s.prefix + "volumes", .kind = PassKind::raster};
@@ -164,13 +165,16 @@ PassDecl volume_frame_pass(const VolumeSettings& s, const RasterState& per_cell,
     const std::optional<RasterState> objects = ground ? std::optional<RasterState>(ground_state()) : std::nullopt;
     if (s.selected_by) {
         use_quadtree_band(frame, *s.selected_by);
+        if (!per_cell_on_terrain) throw std::logic_error("volume_frame_pass: a quadtree's band needs its shaders on a terrain");
         RasterState volume = per_cell;
         volume.vertices = macro_layout();
+        RasterState on_terrain = *per_cell_on_terrain;
+        on_terrain.vertices = macro_layout();
         frame.settings = fmt::format("one cuboid per cell or macro-cell (at most {} a side) the quadtree's {} band keeps, "
                                      "its exit faces drawn",
                                      s.selected_by->max_macro, s.selected_by->name);
-        frame.record = [objects, volume, band = *s.selected_by, cuboid = names.cuboid](PassContext& pc) {
-            record_quadtree_band(pc, objects, volume, band, cuboid);
+        frame.record = [objects, volume, on_terrain, band = *s.selected_by, cuboid = names.cuboid](PassContext& pc) {
+            record_quadtree_band(pc, objects, volume, on_terrain, band, cuboid);
         };
     } else if (macro > 0) {
         if (!objects) throw std::logic_error("volume_frame_pass: macro-cells draw the ground in their pass");

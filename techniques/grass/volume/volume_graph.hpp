@@ -45,9 +45,11 @@ void declare_volume_bake(FrameGraph& g, const VolumeSettings& s);
 // The frame pass: with `ground`, the scene's objects first (grass::ground_state); then one cuboid
 // per cell (drawn with `per_cell`, a vertex and fragment shader of the volume's bodies,
 // shaders/grass_volume_vertex.glsl and grass_volume_fragment.glsl) or per macro-cell.
-// `attachments`: the colour and depth the pass renders into, cleared or loaded.
+// `attachments`: the colour and depth the pass renders into, cleared or loaded. Under a quadtree
+// (`selected_by`), `per_cell_on_terrain` are the macro shaders for a field on a terrain.
 PassDecl volume_frame_pass(const VolumeSettings& s, const RasterState& per_cell, bool ground,
-                           std::vector<ResourceUse> attachments);
+                           std::vector<ResourceUse> attachments,
+                           const std::optional<RasterState>& per_cell_on_terrain = std::nullopt);
 
 // The name of the slices' albedo-and-threshold array (RGBA32F, 2n layers) under `prefix`.
 std::string volume_albedo_name(const std::string& prefix);
