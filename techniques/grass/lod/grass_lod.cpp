@@ -73,6 +73,41 @@ std::vector<ResourceUse> band_attachments(uint32_t samples, bool first, bool las
     return uses;
 }
 
+const std::vector<ParamSpec>& params_specs();
+
+// "name value, ..." of those of `names` given other than their defaults.
+std::string given_values(const ParamSet& params, std::initializer_list<const char*> names) {
+    std::string out;
+    for (const char* name : names) {
+        const ParamSpec& spec = *std::find_if(params_specs().begin(), params_specs().end(),
+                                              [&](const ParamSpec& p) { return p.name == name; });
+        const ParamValue& value = std::find_if(params.values().begin(), params.values().end(),
+                                               [&](const auto& v) { return v.first == name; })->second;
+        if (value != spec.default_value) out += fmt::format("{}{} {}", out.empty() ? "" : ", ", name, to_string(value));
+    }
+    return out;
+}
+
+// Each volume level's GrassLodVolumeLevel (its level and slices, binding 7 of its pass), uploaded at load.
+std::string volume_level_name(const grass::VolumeSettings& volume) { return volume.prefix + "level"; }
+
+void declare_volume_levels(FrameGraph& g, const std::vector<grass::VolumeSettings>& volumes) {
+    PassDecl setup{.name = "volume_levels_setup", .kind = PassKind::copy, .phase = Phase::load};
+    std::vector<shader::GrassLodVolumeLevel> records;
+    for (size_t level = 0; level < volumes.size(); ++level) {
+        g.buffers.push_back({.name = volume_level_name(volumes[level]), .bytes = sizeof(shader::GrassLodVolumeLevel),
+                             .usage = kUniformBuffer, .persistent = true});
+        setup.uses.push_back(use(volume_level_name(volumes[level]), Use::transfer_write));
+        records.push_back({glm::ivec4(int(level + 1), int(volumes[level].slices), 0, 0)});
+    }
+    setup.settings = fmt::format("{} volume levels", volumes.size());
+    setup.record = [volumes, records](PassContext& pc) {
+        for (size_t level = 0; level < volumes.size(); ++level)
+            pc.upload(volume_level_name(volumes[level]), &records[level], sizeof(records[level]));
+    };
+    g.passes.push_back(std::move(setup));
+}
+
 const std::vector<ParamSpec>& params_specs() {
     static const std::vector<ParamSpec> specs = shader::GrassLodParams::specs();
     return specs;
@@ -105,12 +140,25 @@ public:
             return ParamConflict{{"middle_per_sample", "samples", "middle"},
                                  "the middle band is ray-cast per sample only for the volume under 4x MSAA",
                                  "middle_per_sample = true with samples = 4 and middle = \"volume\", or middle_per_sample = false"};
-        const double d[4] = {params.real("geometry_full"), params.real("geometry_none"), params.real("image_start"),
-                             params.real("image_full")};
-        if (!(d[0] <= d[1] && d[1] <= d[2] && d[2] <= d[3]))
-            return ParamConflict{{"geometry_full", "geometry_none", "image_start", "image_full"},
-                                 fmt::format("the bands' distances {}, {}, {}, {} are out of order", d[0], d[1], d[2], d[3]),
-                                 "geometry_full <= geometry_none <= image_start <= image_full"};
+        const long long levels = params.integer("volume_levels");
+        if (levels > 1 && params.choice("middle") != "volume")
+            return ParamConflict{{"volume_levels", "middle"},
+                                 "only the volume has levels (Lemme's); the BTF slices are one level",
+                                 "middle = \"volume\" with volume_levels, or volume_levels = 1"};
+        // The distances in order, with the used levels' ramps between the blades' and the image's.
+        std::vector<std::string> names{"geometry_full", "geometry_none"};
+        if (levels >= 2) names.insert(names.end(), {"volume_2_start", "volume_2_full"});
+        if (levels >= 3) names.insert(names.end(), {"volume_3_start", "volume_3_full"});
+        names.insert(names.end(), {"image_start", "image_full"});
+        std::string values, order;
+        bool ordered = true;
+        for (size_t i = 0; i < names.size(); ++i) {
+            values += fmt::format("{}{} = {}", i ? ", " : "", names[i], params.real(names[i]));
+            order += (i ? " <= " : "") + names[i];
+            if (i > 0 && params.real(names[i - 1]) > params.real(names[i])) ordered = false;
+        }
+        if (!ordered)
+            return ParamConflict{names, fmt::format("the bands' distances are out of order: {}", values), order};
         return std::nullopt;
     }
 
@@ -128,24 +176,41 @@ public:
         const grass::QuadtreeBandDecl near_band{.name = "near",
                                                 .min_distance = band_distances(shader::GRASS_LOD_GEOMETRY).x,
                                                 .max_distance = band_distances(shader::GRASS_LOD_GEOMETRY).y};
-        const grass::QuadtreeBandDecl middle_band{.name = "middle",
-                                                  .min_distance = band_distances(shader::GRASS_LOD_VOLUME).x,
-                                                  .max_distance = band_distances(shader::GRASS_LOD_VOLUME).y,
-                                                  .vertex_count = grass::kVolumeCellVertices,
-                                                  .max_macro = uint32_t(params.integer("middle_macro_max")),
-                                                  .height_ranges = true};
+        // The volume's levels (Lemme's 8, 2 and 1 slices): level 1 keeps the names it has alone.
+        const int levels = block.volume_levels;
+        const shader::vec4 ramps = shader::lod_volume_ramps(levels, block.volume_2_start, block.volume_2_full,
+                                                            block.volume_3_start, block.volume_3_full);
+        const auto level_name = [](const char* stem, int level) {
+            return level == 1 ? fmt::format("{}", stem) : fmt::format("{}{}", stem, level);
+        };
+        std::vector<grass::QuadtreeBandDecl> middle_bands;
+        for (int level = 1; level <= levels; ++level) {
+            const shader::vec2 d = shader::lod_volume_level_distances(level, ramps, block.geometry_full, block.image_full);
+            middle_bands.push_back({.name = level_name("middle", level),
+                                    .min_distance = d.x,
+                                    .max_distance = d.y,
+                                    .vertex_count = grass::kVolumeCellVertices,
+                                    .max_macro = uint32_t(params.integer("middle_macro_max")),
+                                    .height_ranges = true});
+        }
+        const grass::QuadtreeBandDecl& middle_band = middle_bands.front();
         const grass::QuadtreeBandDecl far_band{.name = "far",
                                                .min_distance = band_distances(shader::GRASS_LOD_IMAGE).x,
                                                .max_distance = band_distances(shader::GRASS_LOD_IMAGE).y,
                                                .vertex_count = grass::kImageCellVertices,
                                                .max_macro = uint32_t(params.integer("far_macro_max")),
                                                .max_unplanarity = float(params.real("macro_unplanarity"))};
-        const grass::VolumeSettings volume{.slices = uint32_t(block.slices),
-                                           .resolution = uint32_t(params.integer("resolution")),
-                                           .height_resolution = uint32_t(params.integer("height_resolution")),
-                                           .prefix = "volume_",
-                                           .culled_by = gpu_culled ? std::optional<std::string>("middle_") : std::nullopt,
-                                           .selected_by = quadtree ? std::optional(middle_band) : std::nullopt};
+        std::vector<grass::VolumeSettings> volumes;
+        const uint32_t level_slices[3] = {uint32_t(block.slices), uint32_t(params.integer("slices_2")),
+                                          uint32_t(params.integer("slices_3"))};
+        for (int level = 1; level <= levels; ++level)
+            volumes.push_back({.slices = level_slices[level - 1],
+                               .resolution = uint32_t(params.integer("resolution")),
+                               .height_resolution = uint32_t(params.integer("height_resolution")),
+                               .prefix = level_name("volume", level) + "_",
+                               .culled_by = gpu_culled ? std::optional<std::string>(level_name("middle", level) + "_")
+                                                       : std::nullopt,
+                               .selected_by = quadtree ? std::optional(middle_bands[size_t(level - 1)]) : std::nullopt});
         const bool btf = params.choice("middle") == "slices";
         const grass::SlicesSettings slices{.slices = uint32_t(block.slices),
                                            .resolution = uint32_t(params.integer("resolution")),
@@ -170,10 +235,15 @@ public:
             slices.shadow_resolution == 0 ? ""
             : btf ? fmt::format(", shadows baked from {}x{} light views", slices.shadow_resolution, slices.shadow_resolution)
                   : fmt::format(" (middle_shadow_resolution {} unused: middle = \"slices\" only)", slices.shadow_resolution);
-        g.report["bands"] = fmt::format("blades to {}-{}, {} ({} slices{}{}) to {}-{}, image beyond", block.geometry_full,
-                                        block.geometry_none, btf ? "BTF slices" : "volume", volume.slices,
-                                        per_sample ? ", ray-cast per sample" : "", middle_shadows, block.image_start,
-                                        block.image_full);
+        std::string volume_levels;  // Lemme's levels beyond the first, when used
+        if (!btf && levels >= 2)
+            volume_levels = fmt::format(", {} slices from {}-{}", volumes[1].slices, block.volume_2_start, block.volume_2_full);
+        if (!btf && levels >= 3)
+            volume_levels += fmt::format(", {} from {}-{}", volumes[2].slices, block.volume_3_start, block.volume_3_full);
+        g.report["bands"] = fmt::format("blades to {}-{}, {} ({} slices{}{}{}) to {}-{}, image beyond", block.geometry_full,
+                                        block.geometry_none, btf ? "BTF slices" : "volume", volumes[0].slices,
+                                        volume_levels, per_sample ? ", ray-cast per sample" : "", middle_shadows,
+                                        block.image_start, block.image_full);
         g.report["coverage"] = to_coverage ? "alpha-to-coverage" : "alpha-test";
         g.report["samples"] = std::to_string(samples);
         const bool culled = gpu_culled;
@@ -185,20 +255,16 @@ public:
                                          : "none";
         if (!quadtree) {
             // The quadtree's settings, when given without it: said, so a sweep over them shows why nothing moves.
-            std::string unused;
-            for (const char* name : {"middle_macro_max", "far_macro_max", "near_capacity", "macro_unplanarity"}) {
-                const ParamSpec& spec = *std::find_if(params_specs().begin(), params_specs().end(),
-                                                      [&](const ParamSpec& p) { return p.name == name; });
-                const ParamValue& value = std::find_if(params.values().begin(), params.values().end(),
-                                                       [&](const auto& v) { return v.first == name; })->second;
-                if (value != spec.default_value)
-                    unused += fmt::format("{}{} {}", unused.empty() ? "" : ", ", name, to_string(value));
-            }
+            const std::string unused =
+                given_values(params, {"middle_macro_max", "far_macro_max", "near_capacity", "macro_unplanarity"});
             if (!unused.empty()) g.report["culling"] += " (" + unused + " unused: culling = \"quadtree\" only)";
         }
-        if (quadtree)
-            grass::declare_quadtree(g, {near_band, middle_band, far_band}, uint32_t(params.integer("near_capacity")),
-                                    "near_capacity");
+        if (quadtree) {
+            std::vector<grass::QuadtreeBandDecl> bands{near_band};
+            bands.insert(bands.end(), middle_bands.begin(), middle_bands.end());
+            bands.push_back(far_band);
+            grass::declare_quadtree(g, bands, uint32_t(params.integer("near_capacity")), "near_capacity");
+        }
         if (culled) {
             // One cull per band, to the distances outside which its share of a cell is nothing.
             const auto band = [&](int representation, std::string prefix, uint32_t vertices, uint32_t on_terrain = 0) {
@@ -208,12 +274,19 @@ public:
                                        .max_distance = d.y >= shader::LOD_NO_DISTANCE ? 0.0f : d.y,
                                        .vertex_count = vertices, .vertex_count_on_terrain = on_terrain};
             };
-            grass::declare_grass_cull(
-                g, {band(shader::GRASS_LOD_GEOMETRY, "", 0),
-                    btf ? band(shader::GRASS_LOD_VOLUME, "middle_", grass::slices_cell_vertices(slices),
-                               grass::slices_cell_vertices_on_terrain(slices))
-                        : band(shader::GRASS_LOD_VOLUME, "middle_", grass::kVolumeCellVertices),
-                    band(shader::GRASS_LOD_IMAGE, "far_", grass::kImageCellVertices)});
+            std::vector<grass::CullBand> culls{band(shader::GRASS_LOD_GEOMETRY, "", 0)};
+            if (btf)
+                culls.push_back(band(shader::GRASS_LOD_VOLUME, "middle_", grass::slices_cell_vertices(slices),
+                                     grass::slices_cell_vertices_on_terrain(slices)));
+            else
+                for (const grass::QuadtreeBandDecl& level : middle_bands)  // the levels' distances
+                    culls.push_back(grass::CullBand{.prefix = level.name + "_", .min_distance = level.min_distance,
+                                                    .max_distance = level.max_distance >= shader::LOD_NO_DISTANCE
+                                                                        ? 0.0f
+                                                                        : level.max_distance,
+                                                    .vertex_count = grass::kVolumeCellVertices});
+            culls.push_back(band(shader::GRASS_LOD_IMAGE, "far_", grass::kImageCellVertices));
+            grass::declare_grass_cull(g, culls);
         }
         if (samples > 1) {
             g.images.push_back({.name = "msaa_color", .format = kColorFormat, .extent = ImageExtent::screen(),
@@ -222,7 +295,9 @@ public:
                                 .samples = samples});
         }
         if (btf) grass::declare_slices_bake(g, slices);
-        else grass::declare_volume_bake(g, volume);
+        else
+            for (const grass::VolumeSettings& volume : volumes) grass::declare_volume_bake(g, volume);
+        if (!btf) declare_volume_levels(g, volumes);
         grass::declare_image_bake(g, image);
 
         // Near: the ground and the blades of the geometry's band.
@@ -265,11 +340,25 @@ public:
         middle_on_terrain.vertex_spirv = grass_lod_volume_macro_terrain_vert;
         middle_on_terrain.fragment_spirv = per_sample ? std::span<const uint32_t>(grass_lod_volume_macro_terrain_per_sample_frag)
                                                       : std::span<const uint32_t>(grass_lod_volume_macro_terrain_frag);
-        g.passes.push_back(btf ? grass::slices_frame_pass(slices, middle, false, band_attachments(samples, false, false))
-                               : grass::volume_frame_pass(volume, middle, false, band_attachments(samples, false, false),
-                                                          middle_on_terrain));
-        if (per_sample) g.passes.back().settings += "; ray-cast once per covered sample";
-        if (!btf && !middle_shadows.empty()) g.passes.back().settings += ";" + middle_shadows;  // said, as unused culling settings are
+        if (btf) {
+            g.passes.push_back(grass::slices_frame_pass(slices, middle, false, band_attachments(samples, false, false)));
+        } else {
+            for (size_t level = 0; level < volumes.size(); ++level) {
+                g.passes.push_back(grass::volume_frame_pass(volumes[level], middle, false,
+                                                            band_attachments(samples, false, false), middle_on_terrain));
+                g.passes.back().uses.push_back(use(volume_level_name(volumes[level]), Use::uniform, 7));
+                g.passes.back().settings += fmt::format("; volume level {} of {}", level + 1, volumes.size());
+                if (per_sample) g.passes.back().settings += "; ray-cast once per covered sample";
+                // said, as unused culling settings are
+                if (!middle_shadows.empty()) g.passes.back().settings += ";" + middle_shadows;
+            }
+        }
+        if (btf && per_sample) g.passes.back().settings += "; ray-cast once per covered sample";
+        // The levels' settings, when given without their levels: said, as the quadtree's are.
+        const std::string unused_2 = levels >= 2 ? "" : given_values(params, {"volume_2_start", "volume_2_full", "slices_2"});
+        const std::string unused_3 = levels >= 3 ? "" : given_values(params, {"volume_3_start", "volume_3_full", "slices_3"});
+        if (!unused_2.empty()) g.passes.back().settings += fmt::format("; {} unused: volume_levels >= 2 only", unused_2);
+        if (!unused_3.empty()) g.passes.back().settings += fmt::format("; {} unused: volume_levels = 3 only", unused_3);
         RasterState quads;
         quads.vertex_spirv = quadtree ? std::span<const uint32_t>(grass_lod_image_macro_vert)
                                       : std::span<const uint32_t>(grass_lod_image_vert);

@@ -16,6 +16,18 @@
            "distance from which the image takes blades over from the volume (minBTF; Lemme's level 2 begins at 50 m)") \
     SHADER(real, image_full, (80.0, 0.0, 1e6),                                                               \
            "distance from which a cell is all image (maxBTF; Lemme's 8-slice level 1 ends at 80 m)")       \
+    SHADER(integer, volume_levels, (1, 1, 3),                                                                \
+           "the middle band's volume levels, each its own bake and pass, handing its blades to the next over a ramp as the bands do: 1 (canopy's default, one volume of `slices`) to 3 (Lemme's football field, L930-935: 8, 2 and 1 slices); middle = volume only") \
+    SHADER(real, volume_2_start, (50.0, 0.0, 1e6),                                                           \
+           "volume_levels >= 2: the distance from which level 2 (slices_2) takes blades over from level 1 (Lemme's level 2 begins at 50 m)") \
+    SHADER(real, volume_2_full, (80.0, 0.0, 1e6),                                                            \
+           "volume_levels >= 2: the distance from which level 1 has no blades left (Lemme's level 1 ends at 80 m)") \
+    SHADER(real, volume_3_start, (100.0, 0.0, 1e6),                                                          \
+           "volume_levels = 3: the distance from which level 3 (slices_3) takes blades over from level 2 (Lemme's level 3 begins at 100 m)") \
+    SHADER(real, volume_3_full, (160.0, 0.0, 1e6),                                                           \
+           "volume_levels = 3: the distance from which level 2 has no blades left (Lemme's level 2 ends at 160 m)") \
+    PLAN(integer, slices_2, (2, 1, 64), "volume_levels >= 2: level 2's vertical slices per direction (Lemme: 2)") \
+    PLAN(integer, slices_3, (1, 1, 64), "volume_levels = 3: level 3's vertical slices per direction (Lemme: 1)") \
     PLAN(integer, samples, (4, 1, 4), "MSAA samples of every band's pass: 1 or 4 (lavapipe's)")             \
     PLAN(choice, culling, ("gpu", {"none", "gpu", "quadtree"}),                                             \
          "gpu: a compute pass per band keeps the copies whose box may be seen within the distances where that band draws anything (near to geometry_none, middle from geometry_full to image_full, far from image_start; grass.geometry's cull; the image is the same); quadtree: Lemme's quadtree (§6.1-6.2), traversed on the CPU every frame, keeps the same cells and draws the middle and far bands as macro-cells (middle = volume only; the copies stay on the CPU); none: every band draws every copy") \
@@ -33,7 +45,7 @@
          "the middle band: Lemme's ray-cast volume (grass.volume) or Boulanger's BTF slices (grass.slices)")     \
     PLAN(boolean, middle_per_sample, (false),                                                                  \
          "the middle band's volume ray-cast once per covered sample instead of once per pixel (the `sample` qualifier on its exit point): anti-aliases the slices' texels as 4x MSAA does the blades' edges, at up to 4 times the band's fragment cost; canopy's addition (Lemme casts once per pixel); needs samples = 4 and middle = volume") \
-    SHADER(integer, slices, (8, 1, 64), "the middle band's vertical slices per direction (grass.volume's and grass.slices' slices)") \
+    SHADER(integer, slices, (8, 1, 64), "the middle band's vertical slices per direction (grass.volume's and grass.slices' slices; with volume_levels, level 1's)") \
     PLAN(integer, resolution, (256, 16, 4096), "texels of a middle-band slice across the patch (grass.volume's and grass.slices' resolution)") \
     PLAN(integer, height_resolution, (64, 4, 4096), "texels of a middle-band slice up the patch's height (grass.volume's and grass.slices')") \
     PLAN(integer, middle_shadow_resolution, (0, 0, 8192), "middle = slices: grass.slices' shadow_resolution, the blades' shadows baked into the slices' rows from one depth view per baked light direction this many texels a side; 0: no shadows in the bake") \

@@ -2,6 +2,7 @@
 #extension GL_GOOGLE_include_directive : require
 // grass.lod under culling = "quadtree" on a terrain with middle_per_sample: the ray walk shifted by the ground, once per covered sample (shaders/grass_volume_macro_fragment.glsl).
 #define GRASS_LOD_REPRESENTATION GRASS_LOD_VOLUME
+#define GRASS_LOD_VOLUME_LEVELS
 #define GRASS_MACRO_TERRAIN
 #define GRASS_VOLUME_PER_SAMPLE
 #include "grass_lod_params.h"

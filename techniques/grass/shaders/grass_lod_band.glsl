@@ -5,15 +5,32 @@
 // point (0.5, 0, 0.5), which mirroring keeps), computed per copy alike in every representation's
 // vertex stage, so the three agree on the cuts of every cell. Needs frame_uniforms.glsl and, in
 // grass.lod, GrassLodParams as the technique's block.
+//
+// grass.lod's volume shaders define GRASS_LOD_VOLUME_LEVELS: one pass per volume level (Lemme's
+// 8, 2 and 1 slices), each with its level and slice count in a uniform at binding 7
+// (GrassLodVolumeLevel), draws that level's share of the volume's band (lod_volume_level_band).
 #include "grass_macro_cells.h"
 #include "lod_selection.h"
+
+#ifdef GRASS_LOD_VOLUME_LEVELS
+layout(set = 0, binding = 7, std140) uniform LodLevelBlock { GrassLodVolumeLevel lod_level; };
+#define GRASS_VOLUME_SLICES (lod_level.level_slices.y)
+#endif
 
 // The band of a cell whose centre is `centre` (world).
 vec2 grass_representation_band_at(vec3 centre) {
 #ifdef GRASS_LOD_REPRESENTATION
     float d = distance(centre, frame.camera_position.xyz);
-    return lod_band(GRASS_LOD_REPRESENTATION, lod_cuts(d, frame.technique.geometry_full, frame.technique.geometry_none,
-                                                       frame.technique.image_start, frame.technique.image_full));
+    vec2 cuts = lod_cuts(d, frame.technique.geometry_full, frame.technique.geometry_none, frame.technique.image_start,
+                         frame.technique.image_full);
+#ifdef GRASS_LOD_VOLUME_LEVELS
+    vec4 ramps = lod_volume_ramps(frame.technique.volume_levels, frame.technique.volume_2_start,
+                                  frame.technique.volume_2_full, frame.technique.volume_3_start,
+                                  frame.technique.volume_3_full);
+    return lod_volume_level_band(lod_level.level_slices.x, cuts, d, ramps);
+#else
+    return lod_band(GRASS_LOD_REPRESENTATION, cuts);
+#endif
 #else
     return vec2(0.0, 1.0);
 #endif

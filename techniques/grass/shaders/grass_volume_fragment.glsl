@@ -13,6 +13,12 @@
 #include "grass_shading.glsl"
 #include "volume_walk.h"
 #include "grass_terrain.h"
+#ifdef GRASS_LOD_VOLUME_LEVELS
+#include "grass_lod_band.glsl"  // the level's uniform and slices
+#endif
+#ifndef GRASS_VOLUME_SLICES
+#define GRASS_VOLUME_SLICES (frame.technique.slices)
+#endif
 
 layout(set = 0, binding = 1) uniform sampler2DArray slice_albedo;  // NEAREST: thresholds are not blended
 layout(set = 0, binding = 2) uniform sampler2DArray slice_normal;  // NEAREST
@@ -35,7 +41,7 @@ layout(location = 12) flat in vec2 stretch; // the cuboid's bottom and top moved
 layout(location = 0) out vec4 out_color;
 
 void main() {
-    int n = frame.technique.slices;
+    int n = GRASS_VOLUME_SLICES;
     vec3 to_exit = exit_q - eye_q;
     vec3 e = eye_q + volume_entry(eye_q, to_exit) * to_exit;  // eq 5.4: the ray's entry
     vec3 d = exit_q - e;

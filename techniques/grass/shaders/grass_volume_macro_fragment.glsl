@@ -18,6 +18,9 @@
 #include "grass_shading.glsl"
 #include "grass_lod_band.glsl"
 #include "volume_walk.h"
+#ifndef GRASS_VOLUME_SLICES
+#define GRASS_VOLUME_SLICES (frame.technique.slices)
+#endif
 
 layout(set = 0, binding = 1) uniform sampler2DArray slice_albedo;  // NEAREST: thresholds are not blended
 layout(set = 0, binding = 2) uniform sampler2DArray slice_normal;  // NEAREST
@@ -43,7 +46,7 @@ layout(location = 3) flat in vec2 heights;  // the cuboid's bottom and height (g
 layout(location = 0) out vec4 out_color;
 
 void main() {
-    int n = frame.technique.slices;
+    int n = GRASS_VOLUME_SLICES;
     ivec2 first = macro_cells.xy, span = macro_cells.zw;
     vec2 planes = vec2(n) * vec2(span);
     float size = field.origin_size.w;

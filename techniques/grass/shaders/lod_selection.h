@@ -118,16 +118,55 @@ CANOPY_FN vec2 lod_band(int representation, vec2 cuts) {
     return vec2(cuts.y, 1.0f);
 }
 
+// Lemme's volume levels (his football field, L930-935: 8, 2 and 1 slices a direction between the
+// blades and the image): the volume's band (c1, c2] is split among up to three levels, each
+// handing its blades to the next over a ramp of its own, as the bands hand theirs: level 1 keeps
+// (c1, m1], level 2 (m1, m2], level 3 (m2, c2], with m1 = max(c1, ramp_down(d, ramps.x, ramps.y))
+// and m2 = max(m1, ramp_down(d, ramps.z, ramps.w)), both at most c2. `ramps`: where level 2 takes
+// over from level 1 (start, full) and level 3 from level 2. A level not used has its ramp at
+// LOD_NO_DISTANCE (lod_volume_ramps): its band is empty, and the one volume level keeps (c1, c2]
+// as lod_band does. In order (ramps.x <= ramps.y <= ramps.z <= ramps.w <= image_start), the five
+// bands partition ]0, 1] for any d.
+CANOPY_CONST float LOD_NO_DISTANCE = 3.0e38f;
+CANOPY_FN vec2 lod_volume_level_band(int level, vec2 cuts, float d, vec4 ramps) {
+    float m1 = min(cuts.y, max(cuts.x, lod_ramp_down(d, ramps.x, ramps.y)));
+    float m2 = min(cuts.y, max(m1, lod_ramp_down(d, ramps.z, ramps.w)));
+    if (level <= 1) return vec2(cuts.x, m1);
+    if (level == 2) return vec2(m1, m2);
+    return vec2(m2, cuts.y);
+}
+
+// What one volume level's pass reads (std140, a uniform at binding 7): x, its level (1 to 3);
+// y, its slices a direction; zw: 0.
+struct GrassLodVolumeLevel {
+    ivec4 level_slices;
+};
+
+// The level ramps of `levels` volume levels (1 to 3): the unused levels' at LOD_NO_DISTANCE.
+CANOPY_FN vec4 lod_volume_ramps(int levels, float level2_start, float level2_full, float level3_start, float level3_full) {
+    vec4 none = vec4(LOD_NO_DISTANCE, LOD_NO_DISTANCE, LOD_NO_DISTANCE, LOD_NO_DISTANCE);
+    if (levels <= 1) return none;
+    if (levels == 2) return vec4(level2_start, level2_full, LOD_NO_DISTANCE, LOD_NO_DISTANCE);
+    return vec4(level2_start, level2_full, level3_start, level3_full);
+}
+
 // The distances of a cell's centre beyond which a representation's band is empty, whatever the
 // thresholds (lo, hi; hi = LOD_NO_DISTANCE: none): the geometry's to geometry_none, the volume's
 // from geometry_full to image_full, the image's from image_start (c2 < 1 only past image_start).
 // grass.lod culls each band's copies to these, so no pass draws a cell whose share is nothing.
-CANOPY_CONST float LOD_NO_DISTANCE = 3.0e38f;
 CANOPY_FN vec2 lod_band_distances(int representation, float geometry_full, float geometry_none, float image_start,
                                   float image_full) {
     if (representation == GRASS_LOD_GEOMETRY) return vec2(0.0f, geometry_none);
     if (representation == GRASS_LOD_VOLUME) return vec2(geometry_full, image_full);
     return vec2(image_start, LOD_NO_DISTANCE);
+}
+
+// The same for volume level 1 to 3 (lod_volume_level_band): level 1 draws from geometry_full,
+// level k > 1 from its ramp's start; each until the next level's ramp is full or the image's is.
+CANOPY_FN vec2 lod_volume_level_distances(int level, vec4 ramps, float geometry_full, float image_full) {
+    if (level <= 1) return vec2(geometry_full, min(ramps.y, image_full));
+    if (level == 2) return vec2(ramps.x, min(ramps.w, image_full));
+    return vec2(ramps.z, image_full);
 }
 
 CANOPY_END_NAMESPACE

@@ -290,3 +290,58 @@ TEST_CASE("grass.lod on a terrain: each band alone draws what its representation
         }
     }
 }
+
+TEST_CASE("grass.lod's volume levels (Lemme's 8, 2 and 1 slices): each level alone draws what grass.volume draws with "
+          "its slices, and every culling keeps what each level draws") {
+    const Scene scene = lod_field_scene();
+    const Technique& lod = *TechniqueRegistry::instance().find("grass.lod");
+    const auto lod_levels = [&](double v2, double v3, const std::string& culling) {
+        // No blades, no image: level 1 to v2, level 2 to v3, level 3 beyond (steps).
+        Values values = lod_values(0, 0, 1e6, 1e6);
+        values["volume_levels"] = 3LL;
+        values["slices_2"] = 2LL;
+        values["slices_3"] = 1LL;
+        values["volume_2_start"] = v2;
+        values["volume_2_full"] = v2;
+        values["volume_3_start"] = v3;
+        values["volume_3_full"] = v3;
+        values["culling"] = culling;
+        values["middle_macro_max"] = 2LL;
+        return values;
+    };
+    for (const std::string culling : {"none", "gpu", "quadtree"}) {
+        CAPTURE(culling);
+        const Values volume_macro = culling == "quadtree" ? Values{{"macro_cells", 2LL}} : Values{};
+        const auto volume = [&](long long slices) {
+            Values values = volume_macro;
+            values.insert({{"slices", slices}, {"resolution", 96LL}, {"height_resolution", 48LL}});
+            return render(scene, "grass.volume", values);
+        };
+        const Image level1 = volume(4), level2 = volume(2), level3 = volume(1);
+        CHECK(max_difference(level1, level2) > 0.1f);
+        CHECK(max_difference(level2, level3) > 0.1f);
+        CHECK(max_difference(render(scene, "grass.lod", lod_levels(1e6, 1e6, culling)), level1) <= 1e-5f);
+        CHECK(max_difference(render(scene, "grass.lod", lod_levels(0, 1e6, culling)), level2) <= 1e-5f);
+        CHECK(max_difference(render(scene, "grass.lod", lod_levels(0, 0, culling)), level3) <= 1e-5f);
+    }
+    // The cells (1-5 m away) in all three levels: the GPU culls change no pixel.
+    Values split = lod_levels(0, 0, "none");
+    split["volume_2_start"] = 2.0;
+    split["volume_2_full"] = 2.6;
+    split["volume_3_start"] = 3.0;
+    split["volume_3_full"] = 3.4;
+    const Image whole = render(scene, "grass.lod", split);
+    split["culling"] = std::string("gpu");
+    CHECK(max_difference(render(scene, "grass.lod", split), whole) <= 1e-5f);
+    CHECK(max_difference(whole, render(scene, "grass.lod", lod_levels(1e6, 1e6, "none"))) > 0.1f);
+    // Levels are the volume's: refused with the BTF slices, and out-of-order distances are refused.
+    Values btf = lod_levels(1e6, 1e6, "none");
+    btf["middle"] = std::string("slices");
+    CHECK(lod.conflict(ParamSet::resolve(lod.params(), btf, {}, {}, "grass.lod")));
+    Values disordered = lod_levels(0, 0, "none");
+    disordered["volume_3_start"] = 5.0;  // beyond volume_3_full (0)
+    const auto conflict = lod.conflict(ParamSet::resolve(lod.params(), disordered, {}, {}, "grass.lod"));
+    REQUIRE(conflict);
+    CHECK(conflict->hint.find("volume_3_start <= volume_3_full <= image_start") != std::string::npos);
+    CHECK(conflict->message.find("volume_3_start = 5") != std::string::npos);
+}

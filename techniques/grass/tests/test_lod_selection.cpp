@@ -208,3 +208,67 @@ TEST_CASE("grass.lod's bands: outside its cull distances a representation's band
             if (range.y > range.x + 0.1f && range.x < 119.0f) CHECK(inside_nonempty > 0);
         }
 }
+
+TEST_CASE("grass.lod's volume levels (Lemme's 8, 2, 1 slices): each kept blade falls in exactly one of the five bands, "
+          "one level is the volume's band, and outside its cull distances a level's band is empty") {
+    struct Levels {
+        float gf, gn, v2s, v2f, v3s, v3f, is, ifull;
+    };
+    // Lemme's football field (L930-935), touching ramps, steps, everything at 0, and levels at the ends.
+    const std::vector<Levels> settings{{5, 20, 50, 80, 100, 160, 200, 300}, {5, 20, 20, 40, 40, 60, 60, 80},
+                                       {10, 10, 30, 30, 50, 50, 70, 70},     {0, 0, 0, 0, 0, 0, 0, 0},
+                                       {0, 0, 0, 0, 1e6f, 1e6f, 1e6f, 1e6f}};
+    for (const Levels& b : settings)
+        for (int levels = 1; levels <= 3; ++levels) {
+            CAPTURE(b.v2s);
+            CAPTURE(levels);
+            const shader::vec4 ramps = shader::lod_volume_ramps(levels, b.v2s, b.v2f, b.v3s, b.v3f);
+            int nonempty[4] = {0, 0, 0, 0};
+            int outside_nonempty = 0;
+            for (float d = 0.0f; d <= 350.0f; d += 0.73f) {
+                const shader::vec2 cuts = shader::lod_cuts(d, b.gf, b.gn, b.is, b.ifull);
+                shader::vec2 bands[5] = {shader::lod_band(shader::GRASS_LOD_GEOMETRY, cuts), {}, {}, {},
+                                         shader::lod_band(shader::GRASS_LOD_IMAGE, cuts)};
+                for (int level = 1; level <= 3; ++level) {
+                    bands[level] = shader::lod_volume_level_band(level, cuts, d, ramps);
+                    const bool empty = !(bands[level].y > bands[level].x);
+                    nonempty[level] += empty ? 0 : 1;
+                    // A level beyond those used, or outside its distances, draws nothing.
+                    const shader::vec2 range = shader::lod_volume_level_distances(level, ramps, b.gf, b.ifull);
+                    if (!empty && (level > levels || d < range.x || d > range.y)) ++outside_nonempty;
+                }
+                // One level: level 1 is the volume's band.
+                if (levels == 1) REQUIRE(bands[1] == shader::lod_band(shader::GRASS_LOD_VOLUME, cuts));
+                for (float ld : kDensities)
+                    for (float th : thresholds()) {
+                        int drawn = 0;
+                        for (const shader::vec2& band : bands) drawn += shader::grass_blade_in_band(th, ld, band) ? 1 : 0;
+                        if (drawn != (th <= ld ? 1 : 0)) {
+                            CAPTURE(d);
+                            CAPTURE(ld);
+                            CAPTURE(th);
+                            REQUIRE(drawn == (th <= ld ? 1 : 0));
+                        }
+                    }
+            }
+            CHECK(outside_nonempty == 0);
+            // With Lemme's distances every level used draws somewhere.
+            if (b.v3f == 160.0f)
+                for (int level = 1; level <= levels; ++level) CHECK(nonempty[level] > 0);
+        }
+    // Lemme's table: at 65 m levels 1 and 2 share the blades, at 130 m levels 2 and 3, at 250 m level 3
+    // and the image; level 1 has none left from 80 m, level 2 from 160 m.
+    const shader::vec4 lemme = shader::lod_volume_ramps(3, 50, 80, 100, 160);
+    const auto band = [&](int level, float d) {
+        return shader::lod_volume_level_band(level, shader::lod_cuts(d, 5, 20, 200, 300), d, lemme);
+    };
+    CHECK(band(1, 65).y > band(1, 65).x);
+    CHECK(band(2, 65).y > band(2, 65).x);
+    CHECK(band(3, 65).y == band(3, 65).x);
+    CHECK(band(1, 130).y == band(1, 130).x);
+    CHECK(band(2, 130).y > band(2, 130).x);
+    CHECK(band(3, 130).y > band(3, 130).x);
+    CHECK(band(2, 250).y == band(2, 250).x);
+    CHECK(band(3, 250).y > band(3, 250).x);
+    CHECK(band(3, 250).y < 1.0f);  // the image has the rest
+}
