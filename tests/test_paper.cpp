@@ -290,6 +290,52 @@ right_column = "ant"
     CHECK(judge_claims(*e.paper, run)[0].outcome == "not measured");
 }
 
+TEST_CASE("a row may sum several passes round by round (Lemme's t_v over his three volume levels)") {
+    const std::string paper = R"(
+[paper]
+id = "T4"
+unit = "ms"
+column_key = "scene"
+columns = ["high"]
+baseline = "frame"
+[[paper.row]]
+label = "frame"
+technique = "shadow.hard"
+values = [10]
+[[paper.row]]
+label = "two passes"
+technique = "shadow.hard"
+pass = ["depth", "lit"]
+values = [6]
+)";
+    const Experiment e = load_experiment(write_experiment("passes.toml", paper), TechniqueRegistry::instance());
+    REQUIRE(e.paper);
+    CHECK(e.paper->rows[1].pass == "depth + lit");
+    CHECK(e.paper->rows[1].passes == std::vector<std::string>{"depth", "lit"});
+    // The two passes are 0.2 and 0.4 of every round's frame, rounds swinging: their sum is 0.6 of it.
+    CaseResult c = fake_case("shadow.hard", 0, alternating(10.0, 0.8, 1.3), 0.0);
+    c.id = c.scene = "high";
+    for (const auto& [name, share] : {std::pair{"depth", 0.2}, std::pair{"lit", 0.4}}) {
+        TimingSeries pass;
+        pass.name = name;
+        for (double s : c.gpu_frame.samples_ms) pass.samples_ms.push_back(share * s);
+        pass.stats = summarize(pass.samples_ms);
+        c.passes.push_back(pass);
+    }
+    RunRecord run;
+    run.cases = {c};
+    const std::string report = paper_report(*e.paper, run);
+    CHECK(report.find("| two passes | 0.60 → **0.60** [0.60, 0.60] |") != std::string::npos);
+    // A case missing one of them: no number.
+    run.cases[0].passes.pop_back();
+    CHECK(paper_report(*e.paper, run).find("| two passes | 0.60 → - |") != std::string::npos);
+    // An empty list is refused, naming the row.
+    const std::string list = "[\"depth\", \"lit\"]";
+    const std::string empty = std::string(paper).replace(paper.find(list), list.size(), "[]");
+    CHECK_THROWS_WITH_AS(load_experiment(write_experiment("passes-empty.toml", empty), TechniqueRegistry::instance()),
+                         doctest::Contains("lists no pass"), ConfigError);
+}
+
 TEST_CASE("a claim across columns names both, and only both") {
     const auto error_of = [](const std::string& claim) {
         const std::string paper = "\n[paper]\nid = \"T3\"\ncolumns = [\"a\", \"b\"]\n[[paper.row]]\nlabel = \"x\"\n"

@@ -22,8 +22,11 @@ struct PaperRow {
     std::map<std::string, ParamValue> params;  // subset that must match
     std::vector<double> values;                // the paper's numbers, one per column (NaN: none)
     // The row's time is this GPU pass's, not the whole frame's: a part of a frame the paper times
-    // apart (Lemme's t_g, t_v, t_i). "" = the frame.
+    // apart (Lemme's t_g, t_v, t_i). "" = the frame. Several passes (`pass = [...]` in TOML) are
+    // summed round by round (Lemme's t_v over his three volume levels); `pass` then names them
+    // joined by " + ".
     std::string pass;
+    std::vector<std::string> passes;  // what `pass` names: empty for the frame
     SourceLocation where;
 };
 

@@ -48,7 +48,15 @@ PaperRow read_row(TomlReader& r, const TechniqueRegistry& registry, size_t colum
         }
         params->finish();
     }
-    row.pass = r.get_string("pass", "");
+    if (const toml::node* pass = r.node("pass"); pass && pass->is_array()) {
+        row.passes = r.get_string_array("pass");
+        if (row.passes.empty())
+            throw r.error_at(*pass, "'pass' lists no pass", "pass = \"blades\", or pass = [\"volume_volumes\", \"volume2_volumes\"]");
+        for (const std::string& name : row.passes) row.pass += (row.pass.empty() ? "" : " + ") + name;
+    } else {
+        row.pass = r.get_string("pass", "");
+        if (!row.pass.empty()) row.passes = {row.pass};
+    }
     if (const toml::node* values = r.node("values")) {
         const toml::array* array = values->as_array();
         if (!array) throw r.error_at(*values, "'values' must be a list of numbers", "values = [481, 342, 142]");

@@ -4,12 +4,14 @@
 #include "report/atomic_file.hpp"
 #include "report/text_table.hpp"
 #include "run/case_ratio.hpp"
+#include "run/statistics.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace canopy {
 
@@ -42,18 +44,27 @@ const CaseResult* find_case(const PaperComparison& paper, const RunRecord& run, 
     return nullptr;
 }
 
-// The row's times in case c: the frame's GPU time, or its pass's (PaperRow::pass); nullptr when
-// the case has no such pass.
-const TimingSeries* row_series(const PaperRow& row, const CaseResult& c) {
-    if (row.pass.empty()) return &c.gpu_frame;
-    for (const TimingSeries& p : c.passes)
-        if (p.name == row.pass) return &p;
-    return nullptr;
+// The row's times in case c: the frame's GPU time, or its passes' summed round by round
+// (PaperRow::passes); none when the case lacks one of them.
+std::optional<TimingSeries> row_series(const PaperRow& row, const CaseResult& c) {
+    if (row.passes.empty()) return c.gpu_frame;
+    std::vector<const TimingSeries*> parts;
+    for (const std::string& name : row.passes) {
+        const auto p = std::find_if(c.passes.begin(), c.passes.end(), [&](const TimingSeries& s) { return s.name == name; });
+        if (p == c.passes.end() || p->samples_ms.size() != c.passes.front().samples_ms.size()) return std::nullopt;
+        parts.push_back(&*p);
+    }
+    if (parts.size() == 1) return *parts.front();
+    TimingSeries sum{.name = row.pass, .samples_ms = std::vector<double>(parts.front()->samples_ms.size(), 0.0)};
+    for (const TimingSeries* part : parts)
+        for (size_t i = 0; i < sum.samples_ms.size(); ++i) sum.samples_ms[i] += part->samples_ms[i];
+    sum.stats = summarize(sum.samples_ms);
+    return sum;
 }
 
 // Row `lr`'s time in case l over row `rr`'s in case r, with its interval.
 CaseRatio row_ratio(const PaperRow& lr, const CaseResult& l, const PaperRow& rr, const CaseResult& r) {
-    const TimingSeries *a = row_series(lr, l), *b = row_series(rr, r);
+    const std::optional<TimingSeries> a = row_series(lr, l), b = row_series(rr, r);
     if (!a || !b) return {Estimate{kMissing, {kMissing, kMissing}, 0}, RatioPairing::unpaired};
     return series_ratio(l, *a, r, *b);
 }
@@ -75,7 +86,7 @@ double paper_time(const PaperComparison& paper, const PaperRow& row, size_t colu
 // column judges nothing.
 double metric_of(const PaperRow& row, const CaseResult& c, std::string_view claim) {
     if (claim == kTimeClaim) {
-        const TimingSeries* series = row_series(row, c);
+        const std::optional<TimingSeries> series = row_series(row, c);
         return series ? series->stats.median : kMissing;
     }
     const MetricInfo* metric = find_claim_metric(claim);
@@ -272,7 +283,7 @@ std::string paper_report(const PaperComparison& paper, const RunRecord& run) {
         for (size_t col = 0; col < paper.columns.size(); ++col) {
             const CaseResult* mine = find_case(paper, run, row, col);
             const std::string paper_value = row.values.empty() ? "-" : number(row.values[col], "{:.4g}") + " " + paper.unit;
-            const TimingSeries* series = mine ? row_series(row, *mine) : nullptr;
+            const std::optional<TimingSeries> series = mine ? row_series(row, *mine) : std::nullopt;
             cells.push_back(fmt::format("{} / {}", paper_value,
                                         series ? fmt::format("{:.2f} ± {:.2f} ms", series->stats.median, series->stats.mad)
                                                : std::string("-")));
@@ -390,7 +401,7 @@ nlohmann::json paper_data(const PaperComparison& paper, const RunRecord& run) {
                     canopy_ratio = json{{"median", e.value}, {"low", number_or_null(e.ci.low)}, {"high", number_or_null(e.ci.high)}};
             }
             ratio.push_back(canopy_ratio);
-            const TimingSeries* series = mine ? row_series(row, *mine) : nullptr;
+            const std::optional<TimingSeries> series = mine ? row_series(row, *mine) : std::nullopt;
             ms.push_back(series ? json{{"median", series->stats.median}, {"mad", series->stats.mad}} : json(nullptr));
             ids.push_back(mine ? json(mine->id) : json(nullptr));
             for (const MetricInfo& metric : registered_metrics()) {
