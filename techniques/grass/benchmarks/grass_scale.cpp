@@ -136,6 +136,9 @@ private:
                               "use a field of at least 2 cells along one side");
         const std::vector<std::pair<std::string, Timed>> cases{
             {"grass.lod, culling = quadtree", {"grass.lod", {{"culling", std::string("quadtree")}}}},
+            {"grass.lod, culling = quadtree, Lemme's five levels",
+             {"grass.lod",
+              {{"culling", std::string("quadtree")}, {"volume_levels", 3LL}, {"image_start", 200.0}, {"image_full", 300.0}}}},
             {"grass.lod, culling = gpu", {"grass.lod", {{"culling", std::string("gpu")}}}},
             {"grass.geometry, culling = gpu", {"grass.geometry", {{"culling", std::string("gpu")}}}},
         };

@@ -34,8 +34,7 @@ std::string quadtree_list(const std::string& band) { return band + "_quadtree_li
 std::string quadtree_draw(const std::string& band) { return band + "_quadtree_draw"; }
 std::string quadtree_ranges(const std::string& band) { return band + "_quadtree_ranges"; }
 
-void declare_quadtree(FrameGraph& g, const std::vector<QuadtreeBandDecl>& bands, uint32_t copy_capacity,
-                      const std::string& capacity_parameter) {
+void declare_quadtree(FrameGraph& g, const std::vector<QuadtreeBandDecl>& bands, const QuadtreeCapacity& capacity) {
     g.needs.population_copies_on_gpu = false;
     g.buffers.push_back({.name = macro_names::kCells, .bytes_per_copy = sizeof(shader::GrassCell),
                          .usage = kStorageBuffer, .persistent = true});
@@ -49,13 +48,13 @@ void declare_quadtree(FrameGraph& g, const std::vector<QuadtreeBandDecl>& bands,
                          .host_visible = true, .only_on_terrain = true});
     for (const QuadtreeBandDecl& band : bands) {
         if (draws_copies(band))
-            g.buffers.push_back({.name = quadtree_list(band.name), .bytes = uint64_t(copy_capacity) * sizeof(PopulationInstance),
+            g.buffers.push_back({.name = quadtree_list(band.name), .bytes = uint64_t(capacity.copies) * sizeof(PopulationInstance),
                                  .usage = kVertexBuffer, .host_visible = true});
         else
-            g.buffers.push_back({.name = quadtree_list(band.name), .bytes_per_copy = sizeof(MacroInstance),
+            g.buffers.push_back({.name = quadtree_list(band.name), .bytes = uint64_t(capacity.macros) * sizeof(MacroInstance),
                                  .usage = kVertexBuffer, .host_visible = true});
         if (!draws_copies(band) && band.height_ranges)
-            g.buffers.push_back({.name = quadtree_ranges(band.name), .bytes_per_copy = sizeof(glm::vec2),
+            g.buffers.push_back({.name = quadtree_ranges(band.name), .bytes = uint64_t(capacity.macros) * sizeof(glm::vec2),
                                  .usage = kStorageBuffer, .host_visible = true, .only_on_terrain = true});
         g.buffers.push_back({.name = quadtree_draw(band.name),
                              .bytes = draws_copies(band) ? sizeof(VkDrawIndexedIndirectCommand) : sizeof(VkDrawIndirectCommand),
@@ -106,8 +105,8 @@ void declare_quadtree(FrameGraph& g, const std::vector<QuadtreeBandDecl>& bands,
                                     : fmt::format(" unplanarity<={} on a terrain", band.max_unplanarity),
                                 band.height_ranges ? " height ranges on a terrain" : "");
     }
-    select.settings = fmt::format("{}; copy capacity {}", settings, copy_capacity);
-    select.run = [bands, copy_capacity, capacity_parameter](CpuPassContext& cc) {
+    select.settings = fmt::format("{}; capacity {} copies, {} macro-cells", settings, capacity.copies, capacity.macros);
+    select.run = [bands, capacity](CpuPassContext& cc) {
         const GeneratedPopulation* grass = first_grass(cc.populations());
         size_t grass_populations = 0;
         for (const GeneratedPopulation& p : cc.populations()) grass_populations += p.kind == kGrassPopulationKind;
@@ -143,11 +142,11 @@ void declare_quadtree(FrameGraph& g, const std::vector<QuadtreeBandDecl>& bands,
             cc.count(band.name + "_cells", double(cells));
             cc.count(band.name + "_draws", double(nodes.size()));
             if (draws_copies(band)) {
-                if (nodes.size() > copy_capacity)
+                if (nodes.size() > capacity.copies)
                     throw GpuError(fmt::format("the {} band keeps {} cells this frame, more than {} = {}: raise {} (each "
                                                "costs {} bytes) or move the band's far end nearer",
-                                               band.name, nodes.size(), capacity_parameter, copy_capacity,
-                                               capacity_parameter, sizeof(PopulationInstance)));
+                                               band.name, nodes.size(), capacity.copies_parameter, capacity.copies,
+                                               capacity.copies_parameter, sizeof(PopulationInstance)));
                 std::vector<PopulationInstance> copies;
                 copies.reserve(nodes.size());
                 for (const QuadtreeNode& n : nodes)
@@ -160,6 +159,12 @@ void declare_quadtree(FrameGraph& g, const std::vector<QuadtreeBandDecl>& bands,
                 if (!copies.empty()) cc.upload(quadtree_list(band.name), copies.data(), copies.size() * sizeof(PopulationInstance));
                 cc.upload(quadtree_draw(band.name), &draw, sizeof(draw));
             } else {
+                if (nodes.size() > capacity.macros)
+                    throw GpuError(fmt::format("the {} band keeps {} macro-cells this frame, more than {} = {}: raise {} "
+                                               "(each costs {} bytes, {} on a terrain)",
+                                               band.name, nodes.size(), capacity.macros_parameter, capacity.macros,
+                                               capacity.macros_parameter, sizeof(MacroInstance),
+                                               sizeof(MacroInstance) + sizeof(glm::vec2)));
                 std::vector<MacroInstance> macros;
                 macros.reserve(nodes.size());
                 for (const QuadtreeNode& n : nodes) macros.emplace_back(n.first.x, n.first.y, n.span.x, n.span.y);

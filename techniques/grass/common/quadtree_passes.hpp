@@ -43,14 +43,21 @@ std::string quadtree_list(const std::string& band);
 std::string quadtree_draw(const std::string& band);
 std::string quadtree_ranges(const std::string& band);
 
+// How many entries a band's list holds: a frame whose selection keeps more fails, naming the
+// parameter to raise. Sized by these, not by the field, the lists cost O(1) memory whatever the
+// field's size: what a frame draws depends on the view.
+struct QuadtreeCapacity {
+    uint32_t copies = 8192;  // cells a copies band (the blades) may keep
+    std::string copies_parameter;
+    uint32_t macros = 16384;  // macro-cells (single cells included) a macro band may keep
+    std::string macros_parameter;
+};
+
 // The field's records (macro_names::kCells, kField; on a terrain kHeights, which the traversal
-// reads too) and their load-phase upload, the bands'
-// host-visible lists and records, and the frame's CPU pass `quadtree`. `copy_capacity`: the most
-// cells a copies band may keep in a frame (more fails the frame, naming `capacity_parameter`).
-// Counts per frame: <band>_cells (cells drawn), <band>_draws (instances: cells or macro-cells),
-// quadtree_nodes (nodes tested).
-void declare_quadtree(FrameGraph& g, const std::vector<QuadtreeBandDecl>& bands, uint32_t copy_capacity,
-                      const std::string& capacity_parameter);
+// reads too) and their load-phase upload, the bands' host-visible lists and records, and the
+// frame's CPU pass `quadtree`. Counts per frame: <band>_cells (cells drawn), <band>_draws
+// (instances: cells or macro-cells), quadtree_nodes (nodes tested).
+void declare_quadtree(FrameGraph& g, const std::vector<QuadtreeBandDecl>& bands, const QuadtreeCapacity& capacity);
 
 // The uses a pass drawing a band's list adds: a copies band's list (vertex) and record
 // (indirect); a macro band's also the field's records (uniform at binding 3, storage at 4), its

@@ -249,21 +249,26 @@ public:
         const bool culled = gpu_culled;
         g.report["culling"] = culled     ? "gpu, each band's copies within its distances"
                               : quadtree ? fmt::format("quadtree, macro-cells up to {} (middle) and {} (far) cells a side, "
-                                                       "at most {} near cells",
+                                                       "at most {} near cells and {} macro-cells a band",
                                                        middle_band.max_macro, far_band.max_macro,
-                                                       params.integer("near_capacity"))
+                                                       params.integer("near_capacity"), params.integer("macro_capacity"))
                                          : "none";
         if (!quadtree) {
             // The quadtree's settings, when given without it: said, so a sweep over them shows why nothing moves.
             const std::string unused =
-                given_values(params, {"middle_macro_max", "far_macro_max", "near_capacity", "macro_unplanarity"});
+                given_values(params, {"middle_macro_max", "far_macro_max", "near_capacity", "macro_capacity",
+                                      "macro_unplanarity"});
             if (!unused.empty()) g.report["culling"] += " (" + unused + " unused: culling = \"quadtree\" only)";
         }
         if (quadtree) {
             std::vector<grass::QuadtreeBandDecl> bands{near_band};
             bands.insert(bands.end(), middle_bands.begin(), middle_bands.end());
             bands.push_back(far_band);
-            grass::declare_quadtree(g, bands, uint32_t(params.integer("near_capacity")), "near_capacity");
+            grass::declare_quadtree(g, bands,
+                                    {.copies = uint32_t(params.integer("near_capacity")),
+                                     .copies_parameter = "near_capacity",
+                                     .macros = uint32_t(params.integer("macro_capacity")),
+                                     .macros_parameter = "macro_capacity"});
         }
         if (culled) {
             // One cull per band, to the distances outside which its share of a cell is nothing.

@@ -35,6 +35,8 @@
          "culling = quadtree: the widest macro-cell (cells a side) the middle band draws (Lemme's football field: 40)") \
     PLAN(integer, far_macro_max, (500, 1, 4096),                                                            \
          "culling = quadtree: the widest macro-cell (cells a side) the far band draws (Lemme's football field: 500)") \
+    PLAN(integer, macro_capacity, (16384, 1, 16777216),                                                     \
+         "culling = quadtree: the most macro-cells (single cells included) each middle or far band may draw in a frame (8 bytes each, 16 on a terrain, on the GPU); a frame that keeps more fails, naming this parameter") \
     PLAN(real, macro_unplanarity, (0.05, 0.0, 1e4),                                                        \
          "culling = quadtree on a terrain: a far-band macro-cell whose ground departs from the bilinear patch of its corners by more than this (world units) is split, down to single cells (grass.image's macro_unplanarity; Lemme L906-908 gives no value)") \
     PLAN(integer, near_capacity, (8192, 1, 1048576),                                                        \

@@ -195,9 +195,10 @@ TEST_CASE("grass.lod quadtree: the field's copies stay on the CPU") {
     CHECK(gpu_scene - quadtree_scene == 9 * sizeof(PopulationInstance));
 }
 
-TEST_CASE("grass.lod quadtree: a field costs 48 bytes of GPU memory a cell, whatever its size") {
-    // GrassCell (32 bytes) and the middle and far bands' macro-cells (8 bytes each) per cell; the
-    // copies (128 bytes) stay on the CPU. `canopy bench grass-scale` reports the same slope.
+TEST_CASE("grass.lod quadtree: a field costs 32 bytes of GPU memory a cell, whatever its size") {
+    // GrassCell (32 bytes) per cell; the bands' lists are sized by near_capacity and
+    // macro_capacity, not by the field; the copies (128 bytes) stay on the CPU. `canopy bench
+    // grass-scale` reports the same slope.
     const auto gpu_bytes = [](uint32_t side) {
         Scene scene = lod_field_scene();
         override_population_params(scene.populations.at(0), {{"cells_x", (long long)side}, {"cells_z", (long long)side}},
@@ -205,10 +206,9 @@ TEST_CASE("grass.lod quadtree: a field costs 48 bytes of GPU memory a cell, what
         const MemoryUse m = renderer(scene, "grass.lod", quadtree_values(2.0, 2.6, 3.0, 3.4))->memory();
         return m.technique_bytes + m.scene_bytes;
     };
-    CHECK(gpu_bytes(6) - gpu_bytes(3) == (36 - 9) * 48);
-    CHECK(gpu_bytes(20) - gpu_bytes(3) == (400 - 9) * 48);
-    // On a terrain, 12 more: the grid heights (4 bytes a cell) and the middle band's height ranges
-    // (8 bytes a macro-cell, at most one a cell).
+    CHECK(gpu_bytes(6) - gpu_bytes(3) == (36 - 9) * 32);
+    CHECK(gpu_bytes(20) - gpu_bytes(3) == (400 - 9) * 32);
+    // On a terrain, 4 more: the grid heights.
     const auto terrain_bytes = [](uint32_t side) {
         const Scene scene = parse_scene(
             fmt::format("[scene]\nname = \"hills\"\n[camera]\nposition = [0, 3, 4]\ntarget = [0, 0, 0]\n"
@@ -222,15 +222,25 @@ TEST_CASE("grass.lod quadtree: a field costs 48 bytes of GPU memory a cell, what
         // The technique's alone: the scene's ground mesh grows with the field too.
         return renderer(scene, "grass.lod", quadtree_values(2.0, 2.6, 3.0, 3.4))->memory().technique_bytes;
     };
-    CHECK(terrain_bytes(20) - terrain_bytes(3) == (400 - 9) * 60);
+    CHECK(terrain_bytes(20) - terrain_bytes(3) == (400 - 9) * 36);
 }
 
-TEST_CASE("grass.lod quadtree: more near cells than near_capacity, or two grass populations, fail the frame saying what to change") {
+TEST_CASE("grass.lod quadtree: more near cells than near_capacity, more macro-cells than macro_capacity, or two grass "
+          "populations, fail the frame saying what to change") {
     {
         Values values = quadtree_values(1e6, 1e6, 1e6, 1e6);
         values["near_capacity"] = 4LL;
         auto r = renderer(lod_field_scene(), "grass.lod", values);
         CHECK_THROWS_WITH_AS(r->render(), doctest::Contains("raise near_capacity"), GpuError);
+    }
+    {
+        // All image: the 3 x 3 cells as macro-cells of at most 2 a side are 4 draws.
+        Values values = quadtree_values(0, 0, 0, 0);
+        values["macro_capacity"] = 4LL;
+        CHECK_NOTHROW(renderer(lod_field_scene(), "grass.lod", values)->render());
+        values["macro_capacity"] = 3LL;
+        auto r = renderer(lod_field_scene(), "grass.lod", values);
+        CHECK_THROWS_WITH_AS(r->render(), doctest::Contains("the far band keeps 4 macro-cells this frame, more than macro_capacity = 3: raise macro_capacity"), GpuError);
     }
     {
         const Scene two = lod_field_scene(R"([[population]]
