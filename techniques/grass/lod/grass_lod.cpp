@@ -1,6 +1,6 @@
-// grass.lod: a field drawn near as blades, in the middle as the ray-cast volume (Lemme) or the BTF
-// slices (Boulanger) and far as the image slice (Boulanger 2008 §4.2.5, Lemme 2012 §5.4), the
-// three meeting by density thresholds:
+// grass.lod: a field drawn near as blades, in the middle as the ray-cast volume (Lemme; in up to
+// three levels of slices, his football field's 8, 2 and 1) or the BTF slices (Boulanger) and far as
+// the image slice (Boulanger 2008 §4.2.5, Lemme 2012 §5.4), the three meeting by density thresholds:
 // at a cell's distance, lod_cuts (shaders/lod_selection.h) splits its blades' thresholds into
 // three bands, and each representation draws only the blades of its band, so a transition moves
 // blades one by one and none is drawn twice or dropped. One pass per band, so each band's share
@@ -117,7 +117,7 @@ class GrassLod final : public Technique {
 public:
     std::string name() const override { return "grass.lod"; }
     std::string summary() const override {
-        return "grass in three distance bands: blades near, the ray-cast volume or BTF slices in the middle, the image slice far, meeting blade by blade by density thresholds";
+        return "grass in three distance bands: blades near, the ray-cast volume (in up to three levels of slices) or BTF slices in the middle, the image slice far, meeting blade by blade by density thresholds";
     }
     std::string paper() const override {
         return "Boulanger 2008 §4.2.5 (eq 4.3-4.6, Algorithm 1); Lemme 2012 §5.4 (eq 5.22-5.26)";
