@@ -218,6 +218,12 @@ TEST_CASE("grass.lod's volume levels (Lemme's 8, 2, 1 slices): each kept blade f
     const std::vector<Levels> settings{{5, 20, 50, 80, 100, 160, 200, 300}, {5, 20, 20, 40, 40, 60, 60, 80},
                                        {10, 10, 30, 30, 50, 50, 70, 70},     {0, 0, 0, 0, 0, 0, 0, 0},
                                        {0, 0, 0, 0, 1e6f, 1e6f, 1e6f, 1e6f}};
+    // Every 16th threshold of the patch's (the cuts are continuous: this finds a gap or an overlap of
+    // more than 1/256) keeps the sanitizer build's run short.
+    const std::vector<float> all_thresholds = thresholds();
+    std::vector<float> some_thresholds;
+    for (size_t i = 0; i < all_thresholds.size(); i += 16) some_thresholds.push_back(all_thresholds[i]);
+    some_thresholds.push_back(1.0f);
     for (const Levels& b : settings)
         for (int levels = 1; levels <= 3; ++levels) {
             CAPTURE(b.v2s);
@@ -240,7 +246,7 @@ TEST_CASE("grass.lod's volume levels (Lemme's 8, 2, 1 slices): each kept blade f
                 // One level: level 1 is the volume's band.
                 if (levels == 1) REQUIRE(bands[1] == shader::lod_band(shader::GRASS_LOD_VOLUME, cuts));
                 for (float ld : kDensities)
-                    for (float th : thresholds()) {
+                    for (float th : some_thresholds) {
                         int drawn = 0;
                         for (const shader::vec2& band : bands) drawn += shader::grass_blade_in_band(th, ld, band) ? 1 : 0;
                         if (drawn != (th <= ld ? 1 : 0)) {
