@@ -15,6 +15,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <stdexcept>
 #include <type_traits>
 
 namespace canopy::grass {
@@ -126,8 +127,11 @@ void declare_quadtree(FrameGraph& g, const std::vector<QuadtreeBandDecl>& bands,
             std::span<const float> grid;
             if (on_terrain) {
                 const std::span<const std::byte> bytes = cc.read(macro_names::kHeights);
-                grid = {reinterpret_cast<const float*>(bytes.data()),
-                        size_t(field.cells.x + 1) * size_t(field.cells.y + 1)};
+                const size_t vertices = size_t(field.cells.x + 1) * size_t(field.cells.y + 1);
+                if (bytes.size() < vertices * sizeof(float))
+                    throw std::logic_error(fmt::format("the quadtree's grid heights hold {} bytes for {} grid vertices",
+                                                       bytes.size(), vertices));
+                grid = {reinterpret_cast<const float*>(bytes.data()), vertices};
             }
             selection = select_cells(field, tests, cc.frame().camera.position, cc.view_proj(), grid);
         } else {
@@ -161,10 +165,12 @@ void declare_quadtree(FrameGraph& g, const std::vector<QuadtreeBandDecl>& bands,
             } else {
                 if (nodes.size() > capacity.macros)
                     throw GpuError(fmt::format("the {} band keeps {} macro-cells this frame, more than {} = {}: raise {} "
-                                               "(each costs {} bytes, {} on a terrain)",
+                                               "(each costs {} bytes{})",
                                                band.name, nodes.size(), capacity.macros_parameter, capacity.macros,
                                                capacity.macros_parameter, sizeof(MacroInstance),
-                                               sizeof(MacroInstance) + sizeof(glm::vec2)));
+                                               band.height_ranges ? fmt::format(", {} on a terrain",
+                                                                                sizeof(MacroInstance) + sizeof(glm::vec2))
+                                                                  : std::string()));
                 std::vector<MacroInstance> macros;
                 macros.reserve(nodes.size());
                 for (const QuadtreeNode& n : nodes) macros.emplace_back(n.first.x, n.first.y, n.span.x, n.span.y);
