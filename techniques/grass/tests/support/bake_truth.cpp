@@ -162,17 +162,19 @@ Scene hills_scene(const std::string& camera, double height_scale) {
                        "hills.toml");
 }
 
-FlatAndHills flat_and_hills_coverage_error(const std::string& camera, const std::function<Image(const Scene&)>& render) {
+FlatAndHills flat_and_hills_coverage_error(const std::string& camera, const std::function<Image(const Scene&)>& render,
+                                         double height_scale) {
     FlatAndHills out;
-    const Scene flat = hills_scene(camera, 0.0), hills = hills_scene(camera, 1.2);
+    const Scene flat = hills_scene(camera, 0.0), hills = hills_scene(camera, height_scale);
     out.flat = tile_coverage_error(flat, render(flat), 8, &out.flat_blades);
     out.hills = tile_coverage_error(hills, render(hills), 8, &out.hills_blades);
     return out;
 }
 
 void check_follows_terrain(const std::string& camera, double bound, const std::function<Image(const Scene&)>& render,
-                           int min_blades) {
-    const FlatAndHills e = flat_and_hills_coverage_error(camera, render);
+                           int min_blades, double height_scale) {
+    const FlatAndHills e = flat_and_hills_coverage_error(camera, render, height_scale);
+    CAPTURE(height_scale);
     CAPTURE(camera);
     CAPTURE(e.flat_blades);
     CAPTURE(e.hills_blades);

@@ -92,12 +92,14 @@ struct FlatAndHills {
     double flat = 0.0, hills = 0.0;
     int flat_blades = 0, hills_blades = 0;
 };
-FlatAndHills flat_and_hills_coverage_error(const std::string& camera, const std::function<Image(const Scene&)>& render);
+FlatAndHills flat_and_hills_coverage_error(const std::string& camera, const std::function<Image(const Scene&)>& render,
+                                         double height_scale = 1.2);
 
 // A representation follows the terrain: with flat_and_hills_coverage_error's fields, the reference
 // finds more than `min_blades` blade pixels in each, the flat field's error is above 0 and the
-// hills' at most `bound` times it. Reports the errors when a check fails.
+// hills' at most `bound` times it. Reports the errors when a check fails. `height_scale`: the
+// hills' height (hills_scene's).
 void check_follows_terrain(const std::string& camera, double bound, const std::function<Image(const Scene&)>& render,
-                           int min_blades = 1000);
+                           int min_blades = 1000, double height_scale = 1.2);
 
 }  // namespace canopy::grass::test
