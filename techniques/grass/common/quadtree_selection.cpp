@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 namespace canopy::grass {
@@ -37,19 +38,27 @@ public:
 
     QuadtreeSelection run() {
         if (field_.cells.x == 0 || field_.cells.y == 0 || bands_.empty()) return std::move(out_);
-        visit(quadtree_root_level(field_.cells), glm::uvec2(0), (1u << bands_.size()) - 1u);
+        const uint32_t root = quadtree_root_level(field_.cells);
+        visit(root, glm::uvec2(0), *node_at(root, glm::uvec2(0)), (1u << bands_.size()) - 1u);
         return std::move(out_);
     }
 
 private:
-    // The node, with its ground's height range on a terrain.
-    QuadtreeNode node_at(uint32_t level, glm::uvec2 index) const {
+    // A node as the traversal tests it: with its ground's height range on a terrain, and the
+    // eye's distances to its cells' centres. Worked out once: on a terrain both read its grid.
+    struct Tested {
+        QuadtreeNode node;
+        glm::vec2 distances;
+    };
+
+    // The node at (level, index), or none beyond the field.
+    std::optional<Tested> node_at(uint32_t level, glm::uvec2 index) const {
         const uint32_t size = 1u << level;
         const glm::uvec2 first = index * size;
-        if (first.x >= field_.cells.x || first.y >= field_.cells.y) return {first, glm::uvec2(0)};  // beyond the field
+        if (first.x >= field_.cells.x || first.y >= field_.cells.y) return std::nullopt;
         QuadtreeNode node{first, glm::min(glm::uvec2(size), field_.cells - first)};
         if (!grid_.empty()) node.heights = macro_height_range(grid_, field_.cells, macro_of(node));
-        return node;
+        return Tested{node, node_centre_distances(field_, node, eye_, centre_heights(node))};
     }
 
     static MacroInstance macro_of(const QuadtreeNode& n) { return MacroInstance(n.first.x, n.first.y, n.span.x, n.span.y); }
@@ -60,8 +69,8 @@ private:
         return macro_height_range(grid_, field_.cells, MacroInstance(n.first.x, n.first.y, n.span.x - 1, n.span.y - 1));
     }
 
-    void visit(uint32_t level, glm::uvec2 index, uint32_t active) {
-        const QuadtreeNode node = node_at(level, index);
+    void visit(uint32_t level, glm::uvec2 index, const Tested& tested, uint32_t active) {
+        const QuadtreeNode& node = tested.node;
         ++out_.nodes_visited;
         // Field units: the heights scaled by the cell's width, as the model scales y.
         const glm::vec2 lift = node.heights / field_.cell_size;
@@ -69,7 +78,7 @@ private:
         const glm::vec3 hi(float(node.first.x + node.span.x - 1) + hi_.x, hi_.y + lift.y,
                            float(node.first.y + node.span.y - 1) + hi_.z);
         if (!shader::grass_cell_visible(view_proj_, eye_, model_, lo, hi, 0.0f, 0.0f)) return;
-        const glm::vec2 d = node_centre_distances(field_, node, eye_, centre_heights(node));
+        const glm::vec2 d = tested.distances;
         const float slack = kSlack * std::max(1.0f, d.y);
         uint32_t split = 0;
         for (size_t b = 0; b < bands_.size(); ++b) {
@@ -86,17 +95,16 @@ private:
         }
         if (split == 0) return;
         // The children that exist, nearest first.
-        std::array<std::pair<float, glm::uvec2>, 4> children;
+        std::array<std::pair<Tested, glm::uvec2>, 4> children;
         size_t count = 0;
         for (uint32_t c = 0; c < 4; ++c) {
             const glm::uvec2 child = index * 2u + glm::uvec2(c & 1u, c >> 1);
-            const QuadtreeNode n = node_at(level - 1, child);
-            if (n.first.x >= field_.cells.x || n.first.y >= field_.cells.y) continue;
-            children[count++] = {node_centre_distances(field_, n, eye_, centre_heights(n)).x, child};
+            if (const std::optional<Tested> n = node_at(level - 1, child)) children[count++] = {*n, child};
         }
         for (size_t i = 1; i < count; ++i)  // insertion sort of at most 4
-            for (size_t j = i; j > 0 && children[j].first < children[j - 1].first; --j) std::swap(children[j], children[j - 1]);
-        for (size_t c = 0; c < count; ++c) visit(level - 1, children[c].second, split);
+            for (size_t j = i; j > 0 && children[j].first.distances.x < children[j - 1].first.distances.x; --j)
+                std::swap(children[j], children[j - 1]);
+        for (size_t c = 0; c < count; ++c) visit(level - 1, children[c].second, children[c].first, split);
     }
 
     bool flat_enough(const QuadtreeNode& node, const QuadtreeBand& band) const {
