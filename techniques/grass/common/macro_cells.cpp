@@ -82,7 +82,7 @@ glm::vec2 macro_height_range(std::span<const float> grid, glm::uvec2 cells, Macr
     return range;
 }
 
-std::vector<MacroInstance> macro_instances_on_terrain(glm::uvec2 cells, uint32_t k, const std::vector<float>& grid,
+std::vector<MacroInstance> macro_instances_on_terrain(glm::uvec2 cells, uint32_t k, std::span<const float> grid,
                                                       float max_unplanarity) {
     std::vector<MacroInstance> out;
     const std::function<void(MacroInstance)> place = [&](MacroInstance m) {

@@ -49,7 +49,7 @@ glm::vec2 macro_height_range(std::span<const float> grid, glm::uvec2 cells, Macr
 // four (spans halved, rounded up), and so on until each part is under it or one cell (Lemme's lod
 // test that splits cells until their unplanarity falls below a threshold, L906-908). Parts follow
 // their macro-cell in the list; on flat ground the list is macro_instances'.
-std::vector<MacroInstance> macro_instances_on_terrain(glm::uvec2 cells, uint32_t k, const std::vector<float>& grid,
+std::vector<MacroInstance> macro_instances_on_terrain(glm::uvec2 cells, uint32_t k, std::span<const float> grid,
                                                       float max_unplanarity);
 
 // The field's placement for the macro shaders; `top`: the bake frame's top (patch units);

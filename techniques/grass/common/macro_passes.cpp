@@ -28,6 +28,20 @@ bool macros_on_terrain(std::span<const GeneratedPopulation> populations) {
     return grass && grass->on_terrain;
 }
 
+BufferDecl grid_heights_buffer(bool host_visible) {
+    // (cells.x + 1)(cells.z + 1) floats: one a copy, plus the far row and column of a field of at
+    // most kMaxFieldSide cells a side.
+    return {.name = macro_names::kHeights, .bytes = sizeof(float) * (2 * kMaxFieldSide + 1),
+            .bytes_per_copy = sizeof(float), .usage = kStorageBuffer, .persistent = true,
+            .host_visible = host_visible, .only_on_terrain = true};
+}
+
+std::vector<float> upload_grid_heights(PassContext& pc, const GrassField& field, const GeneratedPopulation& grass) {
+    std::vector<float> heights = grid_heights(field, grass.instances);
+    pc.upload(macro_names::kHeights, heights.data(), heights.size() * sizeof(float));
+    return heights;
+}
+
 void declare_macro_buffers(FrameGraph& g, const MacroTerrain& terrain) {
     g.buffers.push_back({.name = macro_names::kCells, .bytes_per_copy = sizeof(shader::GrassCell),
                          .usage = kStorageBuffer, .persistent = true});
@@ -35,11 +49,7 @@ void declare_macro_buffers(FrameGraph& g, const MacroTerrain& terrain) {
                          .persistent = true});
     g.buffers.push_back({.name = macro_names::kField, .bytes = sizeof(shader::GrassMacroField),
                          .usage = kUniformBuffer, .persistent = true});
-    // (cells.x + 1)(cells.z + 1) floats: one a copy, plus the far row and column of a field of at
-    // most kMaxFieldSide cells a side.
-    g.buffers.push_back({.name = macro_names::kHeights, .bytes = sizeof(float) * (2 * kMaxFieldSide + 1),
-                         .bytes_per_copy = sizeof(float), .usage = kStorageBuffer, .persistent = true,
-                         .only_on_terrain = true});
+    g.buffers.push_back(grid_heights_buffer(false));
     // At most one macro-cell a cell, splits included.
     if (terrain.height_ranges)
         g.buffers.push_back({.name = macro_names::kRanges, .bytes_per_copy = sizeof(glm::vec2), .usage = kStorageBuffer,
@@ -64,11 +74,10 @@ PassDecl macro_setup_pass(uint32_t k, const MacroTerrain& terrain) {
         const std::vector<shader::GrassCell> cells = grass_cells(field, grass->instances);
         std::vector<MacroInstance> macros;
         if (macros_on_terrain(pc.populations())) {
-            const std::vector<float> heights = grid_heights(field, grass->instances);
+            const std::vector<float> heights = upload_grid_heights(pc, field, *grass);
             macros = terrain.max_unplanarity
                          ? macro_instances_on_terrain(field.cells, k, heights, *terrain.max_unplanarity)
                          : macro_instances(field.cells, k);
-            pc.upload(macro_names::kHeights, heights.data(), heights.size() * sizeof(float));
             if (terrain.height_ranges) {
                 std::vector<glm::vec2> ranges;
                 ranges.reserve(macros.size());

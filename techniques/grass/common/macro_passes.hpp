@@ -8,11 +8,14 @@
 #include "graph/pass_context.hpp"
 #include "graph/raster_state.hpp"
 
+#include "grass_field.hpp"
+
 #include <cstdint>
 #include <memory>
 #include <optional>
 #include <span>
 #include <string>
+#include <vector>
 
 namespace canopy::grass {
 
@@ -41,6 +44,13 @@ struct MacroTerrain {
 
 // Whether the macro-cells follow a terrain: the first grass population stands on one.
 bool macros_on_terrain(std::span<const GeneratedPopulation> populations);
+
+// The field's grid heights (macro_names::kHeights), one float a grid vertex, on a terrain only;
+// `host_visible` for a reader on the CPU (the quadtree's traversal).
+BufferDecl grid_heights_buffer(bool host_visible);
+
+// Writes `grass`'s grid heights (grid_heights) into that buffer at load, and returns them.
+std::vector<float> upload_grid_heights(PassContext& pc, const GrassField& field, const GeneratedPopulation& grass);
 
 // Declares the buffers: field_cells and macros sized by the scene's copies, the field, and the
 // terrain's heights and (with `terrain.height_ranges`) ranges.

@@ -43,10 +43,8 @@ void declare_quadtree(FrameGraph& g, const std::vector<QuadtreeBandDecl>& bands,
                          .usage = kUniformBuffer, .persistent = true});
     g.buffers.push_back({.name = kQuadtreeField, .bytes = sizeof(QuadtreeField), .usage = kStorageBuffer,
                          .persistent = true, .host_visible = true});
-    // The grid heights (macro_passes.hpp's), read by the traversal on the CPU and the macro shaders.
-    g.buffers.push_back({.name = macro_names::kHeights, .bytes = sizeof(float) * (2 * kMaxFieldSide + 1),
-                         .bytes_per_copy = sizeof(float), .usage = kStorageBuffer, .persistent = true,
-                         .host_visible = true, .only_on_terrain = true});
+    // The grid heights, read by the traversal on the CPU and by the macro shaders.
+    g.buffers.push_back(grid_heights_buffer(true));
     for (const QuadtreeBandDecl& band : bands) {
         if (draws_copies(band))
             g.buffers.push_back({.name = quadtree_list(band.name), .bytes = uint64_t(capacity.copies) * sizeof(PopulationInstance),
@@ -82,10 +80,7 @@ void declare_quadtree(FrameGraph& g, const std::vector<QuadtreeBandDecl>& bands,
         const shader::GrassMacroField placement = macro_field(field, 0, cell_frame(bounds).max.y, grass->transmission);
         pc.upload(macro_names::kCells, cells.data(), cells.size() * sizeof(shader::GrassCell));
         pc.upload(macro_names::kField, &placement, sizeof(placement));
-        if (macros_on_terrain(pc.populations())) {
-            const std::vector<float> heights = grid_heights(field, grass->instances);
-            pc.upload(macro_names::kHeights, heights.data(), heights.size() * sizeof(float));
-        }
+        if (macros_on_terrain(pc.populations())) upload_grid_heights(pc, field, *grass);
     };
     g.passes.push_back(std::move(setup));
 
