@@ -168,7 +168,8 @@ public:
         const bool to_coverage = block.coverage == shader::GRASS_COVERAGE_ALPHA_TO_COVERAGE;
         const bool gpu_culled = params.choice("culling") == "gpu";
         const bool quadtree = params.choice("culling") == "quadtree";
-        // The quadtree's bands (Lemme §6.1-6.2): the blades' copies, the volume's and image's macro-cells.
+        // Each band's distances, for the quadtree (Lemme §6.1-6.2: the blades' copies, the volume's and image's
+        // macro-cells) and the GPU culls alike.
         const auto band_distances = [&](int representation) {
             return shader::lod_band_distances(representation, block.geometry_full, block.geometry_none, block.image_start,
                                               block.image_full);
@@ -272,25 +273,20 @@ public:
         }
         if (culled) {
             // One cull per band, to the distances outside which its share of a cell is nothing.
-            const auto band = [&](int representation, std::string prefix, uint32_t vertices, uint32_t on_terrain = 0) {
-                const shader::vec2 d = shader::lod_band_distances(representation, block.geometry_full, block.geometry_none,
-                                                                  block.image_start, block.image_full);
-                return grass::CullBand{.prefix = std::move(prefix), .min_distance = d.x,
-                                       .max_distance = d.y >= shader::LOD_NO_DISTANCE ? 0.0f : d.y,
+            // The same distances as the quadtree's bands (lod_band_distances, lod_volume_level_distances).
+            const auto cull = [](const grass::QuadtreeBandDecl& band, uint32_t vertices, uint32_t on_terrain = 0) {
+                return grass::CullBand{.prefix = band.name == "near" ? "" : band.name + "_",
+                                       .min_distance = band.min_distance,
+                                       .max_distance = band.max_distance >= shader::LOD_NO_DISTANCE ? 0.0f : band.max_distance,
                                        .vertex_count = vertices, .vertex_count_on_terrain = on_terrain};
             };
-            std::vector<grass::CullBand> culls{band(shader::GRASS_LOD_GEOMETRY, "", 0)};
+            std::vector<grass::CullBand> culls{cull(near_band, 0)};
             if (btf)
-                culls.push_back(band(shader::GRASS_LOD_VOLUME, "middle_", grass::slices_cell_vertices(slices),
+                culls.push_back(cull(middle_band, grass::slices_cell_vertices(slices),
                                      grass::slices_cell_vertices_on_terrain(slices)));
             else
-                for (const grass::QuadtreeBandDecl& level : middle_bands)  // the levels' distances
-                    culls.push_back(grass::CullBand{.prefix = level.name + "_", .min_distance = level.min_distance,
-                                                    .max_distance = level.max_distance >= shader::LOD_NO_DISTANCE
-                                                                        ? 0.0f
-                                                                        : level.max_distance,
-                                                    .vertex_count = grass::kVolumeCellVertices});
-            culls.push_back(band(shader::GRASS_LOD_IMAGE, "far_", grass::kImageCellVertices));
+                for (const grass::QuadtreeBandDecl& level : middle_bands) culls.push_back(cull(level, grass::kVolumeCellVertices));
+            culls.push_back(cull(far_band, grass::kImageCellVertices));
             grass::declare_grass_cull(g, culls);
         }
         if (samples > 1) {
