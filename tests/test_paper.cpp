@@ -257,7 +257,7 @@ right_column = "ant"
 )";
     const Experiment e = load_experiment(write_experiment("pass.toml", paper), TechniqueRegistry::instance());
     REQUIRE(e.paper);
-    CHECK(e.paper->rows[1].pass == "lit");
+    CHECK(pass_label(e.paper->rows[1]) == "lit");
     CHECK(e.paper->claims[1].left_column == "high");
     // Two views, each its own group: the lit pass is a fixed share of each round's frame, however
     // the rounds swing.
@@ -310,7 +310,7 @@ values = [6]
 )";
     const Experiment e = load_experiment(write_experiment("passes.toml", paper), TechniqueRegistry::instance());
     REQUIRE(e.paper);
-    CHECK(e.paper->rows[1].pass == "depth + lit");
+    CHECK(pass_label(e.paper->rows[1]) == "depth + lit");
     CHECK(e.paper->rows[1].passes == std::vector<std::string>{"depth", "lit"});
     // The two passes are 0.2 and 0.4 of every round's frame, rounds swinging: their sum is 0.6 of it.
     CaseResult c = fake_case("shadow.hard", 0, alternating(10.0, 0.8, 1.3), 0.0);

@@ -21,14 +21,19 @@ struct PaperRow {
     std::string technique;                     // "shadow.vsm"
     std::map<std::string, ParamValue> params;  // subset that must match
     std::vector<double> values;                // the paper's numbers, one per column (NaN: none)
-    // The row's time is this GPU pass's, not the whole frame's: a part of a frame the paper times
-    // apart (Lemme's t_g, t_v, t_i). "" = the frame. Several passes (`pass = [...]` in TOML) are
-    // summed round by round (Lemme's t_v over his three volume levels); `pass` then names them
-    // joined by " + ".
-    std::string pass;
-    std::vector<std::string> passes;  // what `pass` names: empty for the frame
+    // The row's time is these GPU passes', not the whole frame's: a part of a frame the paper times
+    // apart (Lemme's t_g, t_v, t_i); several (`pass = [...]` in TOML) are summed round by round
+    // (Lemme's t_v over his three volume levels). Empty: the frame.
+    std::vector<std::string> passes;
     SourceLocation where;
 };
+
+// The row's passes as reports name them, joined by " + "; "" for the frame.
+inline std::string pass_label(const PaperRow& row) {
+    std::string label;
+    for (const std::string& name : row.passes) label += (label.empty() ? "" : " + ") + name;
+    return label;
+}
 
 // "left relation right" on a metric, for every column where both rows have cases.
 struct PaperClaim {

@@ -52,10 +52,8 @@ PaperRow read_row(TomlReader& r, const TechniqueRegistry& registry, size_t colum
         row.passes = r.get_string_array("pass");
         if (row.passes.empty())
             throw r.error_at(*pass, "'pass' lists no pass", "pass = \"blades\", or pass = [\"volume_volumes\", \"volume2_volumes\"]");
-        for (const std::string& name : row.passes) row.pass += (row.pass.empty() ? "" : " + ") + name;
-    } else {
-        row.pass = r.get_string("pass", "");
-        if (!row.pass.empty()) row.passes = {row.pass};
+    } else if (std::string name = r.get_string("pass", ""); !name.empty()) {
+        row.passes = {std::move(name)};
     }
     if (const toml::node* values = r.node("values")) {
         const toml::array* array = values->as_array();

@@ -55,7 +55,7 @@ std::optional<TimingSeries> row_series(const PaperRow& row, const CaseResult& c)
         parts.push_back(&*p);
     }
     if (parts.size() == 1) return *parts.front();
-    TimingSeries sum{.name = row.pass, .samples_ms = std::vector<double>(parts.front()->samples_ms.size(), 0.0)};
+    TimingSeries sum{.name = pass_label(row), .samples_ms = std::vector<double>(parts.front()->samples_ms.size(), 0.0)};
     for (const TimingSeries* part : parts)
         for (size_t i = 0; i < sum.samples_ms.size(); ++i) sum.samples_ms[i] += part->samples_ms[i];
     sum.stats = summarize(sum.samples_ms);
@@ -263,7 +263,7 @@ std::string paper_report(const PaperComparison& paper, const RunRecord& run) {
         out += fmt::format("## Frame time relative to {} (paper → **canopy**)\n\n", paper.baseline);
         out += table(header, rows);
         bool pass_rows = false;
-        for (const PaperRow& row : paper.rows) pass_rows = pass_rows || !row.pass.empty();
+        for (const PaperRow& row : paper.rows) pass_rows = pass_rows || !row.passes.empty();
         out += fmt::format("\nPaper: time = {}; canopy: GPU time of all passes (Vulkan timestamps{}) relative to the "
                            "baseline row, paired sample by sample (cases of one scene and resolution are measured "
                            "together, round by round, each sample between two of the group's baseline), median over "
@@ -301,7 +301,7 @@ std::string paper_report(const PaperComparison& paper, const RunRecord& run) {
             std::vector<std::vector<std::string>> rows;
             bool any_value = false;  // a metric no row's technique declares (a shadow metric for grass) is left out
             for (const PaperRow& row : paper.rows) {
-                if (!row.pass.empty()) continue;  // a part of a frame: the image's error is its frame row's
+                if (!row.passes.empty()) continue;  // a part of a frame: the image's error is its frame row's
                 std::vector<std::string> cells{row.label};
                 for (size_t col = 0; col < paper.columns.size(); ++col) {
                     const CaseResult* mine = find_case(paper, run, row, col);
@@ -382,7 +382,7 @@ nlohmann::json paper_data(const PaperComparison& paper, const RunRecord& run) {
     const PaperRow* base = paper.baseline.empty() ? nullptr : row_named(paper, paper.baseline);
     json rows = json::array();
     for (const PaperRow& row : paper.rows) {
-        json r{{"label", row.label}, {"technique", row.technique}, {"pass", row.pass}};
+        json r{{"label", row.label}, {"technique", row.technique}, {"pass", pass_label(row)}};
         json params = json::object();
         for (const auto& [name, value] : row.params) params[name] = to_string(value);
         r["params"] = params;
@@ -407,7 +407,7 @@ nlohmann::json paper_data(const PaperComparison& paper, const RunRecord& run) {
             for (const MetricInfo& metric : registered_metrics()) {
                 json& column_values = errors[std::string(metric.name)];
                 if (column_values.is_null()) column_values = json::array();
-                const bool frame_row = row.pass.empty();
+                const bool frame_row = row.passes.empty();
                 column_values.push_back(mine && frame_row && mine->image_error
                                             ? number_or_null(metric.meaningful_value(*mine->image_error))
                                             : json(nullptr));
