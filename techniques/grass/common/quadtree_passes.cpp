@@ -206,12 +206,16 @@ void draw_quadtree_band(PassContext& pc, const QuadtreeBandDecl& band, const std
     pc.draw_indirect(buffers, quadtree_draw(band.name));
 }
 
-void record_quadtree_band(PassContext& pc, const std::optional<RasterState>& ground, const RasterState& over,
-                          const RasterState& over_on_terrain, const QuadtreeBandDecl& band,
-                          const std::string& vertex_buffer) {
-    if (ground) record_ground(pc, *ground);
-    pc.bind(pc.raster_pipeline(macros_on_terrain(pc.populations()) ? over_on_terrain : over));
-    draw_quadtree_band(pc, band, vertex_buffer);
+void declare_macro_band_pass(PassDecl& frame, const QuadtreeBandDecl& band, const std::optional<RasterState>& ground,
+                             RasterState over, RasterState over_on_terrain, const std::string& vertex_buffer) {
+    use_quadtree_band(frame, band);
+    over.vertices = macro_layout();
+    over_on_terrain.vertices = macro_layout();
+    frame.record = [ground, over, over_on_terrain, band, vertex_buffer](PassContext& pc) {
+        if (ground) record_ground(pc, *ground);
+        pc.bind(pc.raster_pipeline(macros_on_terrain(pc.populations()) ? over_on_terrain : over));
+        draw_quadtree_band(pc, band, vertex_buffer);
+    };
 }
 
 }  // namespace canopy::grass

@@ -68,11 +68,13 @@ void use_quadtree_band(PassDecl& pass, const QuadtreeBandDecl& band);
 // kept copies), or a macro band: `vertex_buffer` (binding 0) once per macro-cell (binding 1).
 void draw_quadtree_band(PassContext& pc, const QuadtreeBandDecl& band, const std::string& vertex_buffer = "");
 
-// What a macro band's frame pass records (grass.volume's and grass.image's passes under a
-// quadtree): the scene's objects with `ground` when given, then the band drawn with `over`, or
-// `over_on_terrain` when the first grass population stands on a terrain.
-void record_quadtree_band(PassContext& pc, const std::optional<RasterState>& ground, const RasterState& over,
-                          const RasterState& over_on_terrain, const QuadtreeBandDecl& band,
-                          const std::string& vertex_buffer);
+// Makes `frame` a macro band's frame pass (grass.volume's and grass.image's under a quadtree):
+// the band's uses (use_quadtree_band), and a record that draws the scene's objects with `ground`
+// when given, then the band's cells and macro-cells with the per-cell shaders `over` on
+// macro-cell vertices (macro_layout), or `over_on_terrain` when the first grass population stands
+// on a terrain. `vertex_buffer` is the representation's own (binding 0). The caller says what
+// the pass draws in `frame.settings`.
+void declare_macro_band_pass(PassDecl& frame, const QuadtreeBandDecl& band, const std::optional<RasterState>& ground,
+                             RasterState over, RasterState over_on_terrain, const std::string& vertex_buffer);
 
 }  // namespace canopy::grass

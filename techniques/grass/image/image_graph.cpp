@@ -103,17 +103,10 @@ PassDecl image_frame_pass(const ImageSettings& s, const RasterState& per_cell, b
     frame.uses.insert(frame.uses.end(), attachments.begin(), attachments.end());
     const std::optional<RasterState> objects = ground ? std::optional<RasterState>(ground_state()) : std::nullopt;
     if (s.selected_by) {
-        use_quadtree_band(frame, *s.selected_by);
         if (!per_cell_on_terrain) throw std::logic_error("image_frame_pass: a quadtree's band needs its shaders on a terrain");
-        RasterState slice = per_cell;
-        slice.vertices = macro_layout();
-        RasterState on_terrain = *per_cell_on_terrain;
-        on_terrain.vertices = macro_layout();
+        declare_macro_band_pass(frame, *s.selected_by, objects, per_cell, *per_cell_on_terrain, names.quad);
         frame.settings = fmt::format("one quad per cell or macro-cell (at most {} a side) the quadtree's {} band keeps",
                                      s.selected_by->max_macro, s.selected_by->name);
-        frame.record = [objects, slice, on_terrain, band = *s.selected_by, quad = names.quad](PassContext& pc) {
-            record_quadtree_band(pc, objects, slice, on_terrain, band, quad);
-        };
     } else if (macro > 0) {
         if (!objects) throw std::logic_error("image_frame_pass: macro-cells draw the ground in their pass");
         if (s.culled_by) throw std::logic_error("image_frame_pass: macro-cells are not culled");

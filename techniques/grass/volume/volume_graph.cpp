@@ -164,18 +164,11 @@ PassDecl volume_frame_pass(const VolumeSettings& s, const RasterState& per_cell,
     frame.uses.insert(frame.uses.end(), attachments.begin(), attachments.end());
     const std::optional<RasterState> objects = ground ? std::optional<RasterState>(ground_state()) : std::nullopt;
     if (s.selected_by) {
-        use_quadtree_band(frame, *s.selected_by);
         if (!per_cell_on_terrain) throw std::logic_error("volume_frame_pass: a quadtree's band needs its shaders on a terrain");
-        RasterState volume = per_cell;
-        volume.vertices = macro_layout();
-        RasterState on_terrain = *per_cell_on_terrain;
-        on_terrain.vertices = macro_layout();
+        declare_macro_band_pass(frame, *s.selected_by, objects, per_cell, *per_cell_on_terrain, names.cuboid);
         frame.settings = fmt::format("one cuboid per cell or macro-cell (at most {} a side) the quadtree's {} band keeps, "
                                      "its exit faces drawn",
                                      s.selected_by->max_macro, s.selected_by->name);
-        frame.record = [objects, volume, on_terrain, band = *s.selected_by, cuboid = names.cuboid](PassContext& pc) {
-            record_quadtree_band(pc, objects, volume, on_terrain, band, cuboid);
-        };
     } else if (macro > 0) {
         if (!objects) throw std::logic_error("volume_frame_pass: macro-cells draw the ground in their pass");
         if (s.culled_by) throw std::logic_error("volume_frame_pass: macro-cells are not culled");
