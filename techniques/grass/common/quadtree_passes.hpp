@@ -34,6 +34,8 @@ struct QuadtreeBandDecl {
     float max_unplanarity = std::numeric_limits<float>::infinity();
     // On a terrain: write each macro-cell's height range beside its record (the volume's cuboids span it).
     bool height_ranges = false;
+    // Only the nodes whose box reaches above the eye (QuadtreeBand::above_eye: Lemme's hilltops).
+    bool above_eye = false;
 };
 
 // Names of a band's buffers: "<name>_quadtree_list" (copies or macro-cells),

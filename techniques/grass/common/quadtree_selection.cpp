@@ -80,10 +80,12 @@ private:
         if (!shader::grass_cell_visible(view_proj_, eye_, model_, lo, hi, 0.0f, 0.0f)) return;
         const glm::vec2 d = tested.distances;
         const float slack = kSlack * std::max(1.0f, d.y);
+        const bool reaches_above_eye = field_.origin.y + field_.cell_size * hi.y > eye_.y;
         uint32_t split = 0;
         for (size_t b = 0; b < bands_.size(); ++b) {
             if (!(active & (1u << b))) continue;
             const QuadtreeBand& band = bands_[b];
+            if (band.above_eye && !reaches_above_eye) continue;  // discard: no child reaches higher
             const bool unbounded = band.max_distance >= shader::LOD_NO_DISTANCE;
             const bool none = d.y < band.min_distance - slack || (!unbounded && d.x > band.max_distance + slack);
             if (none) continue;  // discard

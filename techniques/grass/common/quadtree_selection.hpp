@@ -21,7 +21,8 @@
 // height under it, its cells' centres are lifted to their first corners' ground (where a copy's
 // model puts them, and where the shaders measure a cell's distance), and a band may require its
 // macro-cells to be flat enough: a node whose unplanarity (macro_unplanarity) exceeds the band's
-// is split, Lemme's lod test for a terrain (L906-908).
+// is split, Lemme's lod test for a terrain (L906-908). A band may also keep only the nodes whose
+// box reaches above the eye (Lemme's hilltops, §6.4.6).
 //
 // Pure CPU: tests check it against a brute-force pass over every cell.
 #pragma once
@@ -56,6 +57,10 @@ struct QuadtreeBand {
     // On a terrain: the most a macro-cell's ground may depart from the bilinear patch of its
     // corners (world units); a node beyond it is split. Infinite: never split for it.
     float max_unplanarity = std::numeric_limits<float>::infinity();
+    // Lemme's hilltop test (§6.4.6, L917-920): the band draws only nodes whose box (its cells'
+    // blades over their ground) reaches above the eye, where the grass may stand against the sky;
+    // a node whose box tops out at or below the eye is discarded with all its children.
+    bool above_eye = false;
 };
 
 // A drawn node: its first cell and its span in cells (x, z), as the macro shaders read it.

@@ -90,20 +90,21 @@ std::string given_values(const ParamSet& params, std::initializer_list<const cha
 
 // Each volume level's GrassLodVolumeLevel (its level and slices, binding 7 of its pass), uploaded at load.
 std::string volume_level_name(const grass::VolumeSettings& volume) { return volume.prefix + "level"; }
+constexpr const char* kHilltopLevel = "hilltop_level";  // the hilltop pass's: the last level's, z = 1
 
-void declare_volume_levels(FrameGraph& g, const std::vector<grass::VolumeSettings>& volumes) {
+void declare_volume_levels(FrameGraph& g, const std::vector<grass::VolumeSettings>& volumes, bool hilltop) {
     PassDecl setup{.name = "volume_levels_setup", .kind = PassKind::copy, .phase = Phase::load};
-    std::vector<shader::GrassLodVolumeLevel> records;
-    for (size_t level = 0; level < volumes.size(); ++level) {
-        g.buffers.push_back({.name = volume_level_name(volumes[level]), .bytes = sizeof(shader::GrassLodVolumeLevel),
-                             .usage = kUniformBuffer, .persistent = true});
-        setup.uses.push_back(use(volume_level_name(volumes[level]), Use::transfer_write));
-        records.push_back({glm::ivec4(int(level + 1), int(volumes[level].slices), 0, 0)});
+    std::vector<std::pair<std::string, shader::GrassLodVolumeLevel>> records;
+    for (size_t level = 0; level < volumes.size(); ++level)
+        records.push_back({volume_level_name(volumes[level]), {glm::ivec4(int(level + 1), int(volumes[level].slices), 0, 0)}});
+    if (hilltop) records.push_back({kHilltopLevel, {glm::ivec4(int(volumes.size()), int(volumes.back().slices), 1, 0)}});
+    for (const auto& [name, record] : records) {
+        g.buffers.push_back({.name = name, .bytes = sizeof(record), .usage = kUniformBuffer, .persistent = true});
+        setup.uses.push_back(use(name, Use::transfer_write));
     }
-    setup.settings = fmt::format("{} volume levels", volumes.size());
-    setup.record = [volumes, records](PassContext& pc) {
-        for (size_t level = 0; level < volumes.size(); ++level)
-            pc.upload(volume_level_name(volumes[level]), &records[level], sizeof(records[level]));
+    setup.settings = fmt::format("{} volume levels{}", volumes.size(), hilltop ? ", the hilltops' pass" : "");
+    setup.record = [records](PassContext& pc) {
+        for (const auto& [name, record] : records) pc.upload(name, &record, sizeof(record));
     };
     g.passes.push_back(std::move(setup));
 }
@@ -140,6 +141,10 @@ public:
             return ParamConflict{{"middle_per_sample", "samples", "middle"},
                                  "the middle band is ray-cast per sample only for the volume under 4x MSAA",
                                  "middle_per_sample = true with samples = 4 and middle = \"volume\", or middle_per_sample = false"};
+        if (params.boolean("hilltop_volume") && params.choice("culling") != "quadtree")
+            return ParamConflict{{"hilltop_volume", "culling"},
+                                 "the hilltops are a lod test of the quadtree's traversal (Lemme §6.4.6)",
+                                 "culling = \"quadtree\" with hilltop_volume, or hilltop_volume = false"};
         const long long levels = params.integer("volume_levels");
         if (levels > 1 && params.choice("middle") != "volume")
             return ParamConflict{{"volume_levels", "middle"},
@@ -201,6 +206,16 @@ public:
                                                .vertex_count = grass::kImageCellVertices,
                                                .max_macro = uint32_t(params.integer("far_macro_max")),
                                                .max_unplanarity = float(params.real("macro_unplanarity"))};
+        // Lemme's hilltops (§6.4.6): the far band's cells again, those whose box reaches above the
+        // eye, drawn by the volume in its own macro-cells.
+        const bool hilltop = quadtree && params.boolean("hilltop_volume");
+        const grass::QuadtreeBandDecl hilltop_band{.name = "hilltop",
+                                                   .min_distance = far_band.min_distance,
+                                                   .max_distance = far_band.max_distance,
+                                                   .vertex_count = grass::kVolumeCellVertices,
+                                                   .max_macro = middle_band.max_macro,
+                                                   .height_ranges = true,
+                                                   .above_eye = true};
         std::vector<grass::VolumeSettings> volumes;
         const uint32_t level_slices[3] = {uint32_t(block.slices), uint32_t(params.integer("slices_2")),
                                           uint32_t(params.integer("slices_3"))};
@@ -250,21 +265,23 @@ public:
         const bool culled = gpu_culled;
         g.report["culling"] = culled     ? "gpu, each band's copies within its distances"
                               : quadtree ? fmt::format("quadtree, macro-cells up to {} (middle) and {} (far) cells a side, "
-                                                       "at most {} near cells and {} macro-cells a band",
+                                                       "at most {} near cells and {} macro-cells a band{}",
                                                        middle_band.max_macro, far_band.max_macro,
-                                                       params.integer("near_capacity"), params.integer("macro_capacity"))
+                                                       params.integer("near_capacity"), params.integer("macro_capacity"),
+                                                       hilltop ? ", the volume again on hilltops" : "")
                                          : "none";
         if (!quadtree) {
             // The quadtree's settings, when given without it: said, so a sweep over them shows why nothing moves.
             const std::string unused =
                 given_values(params, {"middle_macro_max", "far_macro_max", "near_capacity", "macro_capacity",
-                                      "macro_unplanarity"});
+                                      "macro_unplanarity", "hilltop_volume"});
             if (!unused.empty()) g.report["culling"] += " (" + unused + " unused: culling = \"quadtree\" only)";
         }
         if (quadtree) {
             std::vector<grass::QuadtreeBandDecl> bands{near_band};
             bands.insert(bands.end(), middle_bands.begin(), middle_bands.end());
             bands.push_back(far_band);
+            if (hilltop) bands.push_back(hilltop_band);
             grass::declare_quadtree(g, bands,
                                     {.copies = uint32_t(params.integer("near_capacity")),
                                      .copies_parameter = "near_capacity",
@@ -298,7 +315,7 @@ public:
         if (btf) grass::declare_slices_bake(g, slices);
         else
             for (const grass::VolumeSettings& volume : volumes) grass::declare_volume_bake(g, volume);
-        if (!btf) declare_volume_levels(g, volumes);
+        if (!btf) declare_volume_levels(g, volumes, hilltop);
         grass::declare_image_bake(g, image);
 
         // Near: the ground and the blades of the geometry's band.
@@ -353,6 +370,20 @@ public:
                 // said, as unused culling settings are
                 if (!middle_shadows.empty()) g.passes.back().settings += ";" + middle_shadows;
             }
+        }
+        if (hilltop) {
+            // The last level's bake and slices, the hilltop band's macro-cells, the image's blades.
+            grass::VolumeSettings top = volumes.back();
+            top.selected_by = hilltop_band;
+            PassDecl pass = grass::volume_frame_pass(top, middle, false, band_attachments(samples, false, false),
+                                                     middle_on_terrain);
+            pass.name = "hilltop_volumes";
+            pass.uses.push_back(use(kHilltopLevel, Use::uniform, 7));
+            pass.settings += fmt::format("; the far band's blades again where a cell reaches above the eye, with volume "
+                                         "level {}'s {} slices (Lemme's hilltops)",
+                                         volumes.size(), top.slices);
+            if (per_sample) pass.settings += "; ray-cast once per covered sample";
+            g.passes.push_back(std::move(pass));
         }
         if (btf && per_sample) g.passes.back().settings += "; ray-cast once per covered sample";
         // The levels' settings, when given without their levels: said, as the quadtree's are.

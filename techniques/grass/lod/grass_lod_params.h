@@ -39,6 +39,8 @@
          "culling = quadtree: the most macro-cells (single cells included) each middle or far band may draw in a frame (8 bytes each, 16 on a terrain, on the GPU); a frame that keeps more fails, naming this parameter") \
     PLAN(real, macro_unplanarity, (0.05, 0.0, 1e4),                                                        \
          "culling = quadtree on a terrain: a far-band macro-cell whose ground departs from the bilinear patch of its corners by more than this (world units) is split, down to single cells (grass.image's macro_unplanarity; Lemme L906-908 gives no value)") \
+    PLAN(boolean, hilltop_volume, (false),                                                                  \
+         "culling = quadtree: Lemme's hilltop silhouettes (§6.4.6, L917-920): the far band's cells whose box reaches above the eye are drawn again by the volume, the image's blades as vertical slices (the last volume level's), in macro-cells of up to middle_macro_max cells a side, so the grass on a crest stands up against the sky") \
     PLAN(integer, near_capacity, (8192, 1, 1048576),                                                        \
          "culling = quadtree: the most cells the near band may draw in a frame (128 bytes each, on the GPU); a frame that keeps more fails, naming this parameter") \
     SHADER(choice, coverage, ("alpha_to_coverage", {"alpha_test", "alpha_to_coverage"}),                    \

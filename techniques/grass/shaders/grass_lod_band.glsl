@@ -8,7 +8,8 @@
 //
 // grass.lod's volume shaders define GRASS_LOD_VOLUME_LEVELS: one pass per volume level (Lemme's
 // 8, 2 and 1 slices), each with its level and slice count in a uniform at binding 7
-// (GrassLodVolumeLevel), draws that level's share of the volume's band (lod_volume_level_band).
+// (GrassLodVolumeLevel), draws that level's share of the volume's band (lod_volume_level_band);
+// the hilltop pass (its z set) draws the image's band instead.
 #include "grass_macro_cells.h"
 #include "lod_selection.h"
 
@@ -24,6 +25,8 @@ vec2 grass_representation_band_at(vec3 centre) {
     vec2 cuts = lod_cuts(d, frame.technique.geometry_full, frame.technique.geometry_none, frame.technique.image_start,
                          frame.technique.image_full);
 #ifdef GRASS_LOD_VOLUME_LEVELS
+    // The hilltop pass: the image's blades, drawn again as vertical slices (Lemme §6.4.6).
+    if (lod_level.level_slices.z != 0) return lod_band(GRASS_LOD_IMAGE, cuts);
     vec4 ramps = lod_volume_ramps(frame.technique.volume_levels, frame.technique.volume_2_start,
                                   frame.technique.volume_2_full, frame.technique.volume_3_start,
                                   frame.technique.volume_3_full);

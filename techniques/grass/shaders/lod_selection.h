@@ -137,7 +137,8 @@ CANOPY_FN vec2 lod_volume_level_band(int level, vec2 cuts, float d, vec4 ramps) 
 }
 
 // What one volume level's pass reads (std140, a uniform at binding 7): x, its level (1 to 3);
-// y, its slices a direction; zw: 0.
+// y, its slices a direction; z, 1 in grass.lod's hilltop pass, which draws the image's band of
+// its cells' blades again with that level's slices (Lemme §6.4.6), else 0; w: 0.
 struct GrassLodVolumeLevel {
     ivec4 level_slices;
 };

@@ -263,6 +263,21 @@ TEST_CASE("grass.lod quadtree: the BTF slices have no macro-cells, so middle = s
     CHECK(conflict->hint.find("middle = \"volume\"") != std::string::npos);
 }
 
+TEST_CASE("grass.lod: the hilltops are the quadtree's lod test, so hilltop_volume is refused without it") {
+    const Technique& t = technique("grass.lod");
+    for (const char* culling : {"gpu", "none"}) {
+        CAPTURE(culling);
+        Values values = quadtree_values(2.0, 2.6, 3.0, 3.4);
+        values["culling"] = std::string(culling);
+        values["hilltop_volume"] = true;
+        const auto conflict = t.conflict(ParamSet::resolve(t.params(), values, {}, {}, "grass.lod"));
+        REQUIRE(conflict);
+        CHECK(conflict->hint.find("culling = \"quadtree\"") != std::string::npos);
+        values["culling"] = std::string("quadtree");
+        CHECK(!t.conflict(ParamSet::resolve(t.params(), values, {}, {}, "grass.lod")));
+    }
+}
+
 TEST_CASE("grass.lod quadtree on a terrain: with its bands at either end it draws what each representation draws "
           "alone on the hills") {
     // The hills' 4 x 4 cells: the quadtree's nodes of at most 2 cells a side are the macro-cells
@@ -323,4 +338,42 @@ TEST_CASE("grass.lod quadtree on a terrain: the macro-cells' bands take a cell's
     // Past `cut` the cell is the other bands' alone: the check above sees a band that draws it.
     const double beyond = glm::length(eye - lifted) - 0.2;
     CHECK(max_difference(render(scene, "grass.lod", quadtree_values(beyond, beyond, 1e6, 1e6)), blades) > 0.1f);
+}
+
+TEST_CASE("grass.lod quadtree: Lemme's hilltops (§6.4.6) draw the far band's blades again where a cell reaches above "
+          "the eye, and nothing seen from above") {
+    // The hills' 4 x 4 cells all in the far band (the image's), seen from low across the crests.
+    const Scene low = grass::test::hills_scene("[camera]\nposition = [0.0, 0.25, 4.5]\ntarget = [0.0, 0.6, 0.0]\nfov = 45", 1.2);
+    const Scene high = grass::test::hills_scene("[camera]\nposition = [0.0, 6.0, 3.0]\ntarget = [0.0, 0.3, 0.0]\nfov = 45", 1.2);
+    Values plain = quadtree_values(0, 0, 0, 0);
+    Values hilltops = plain;
+    hilltops["hilltop_volume"] = true;
+    const auto frame = [&](const Scene& scene, const Values& values) {
+        auto r = renderer(scene, "grass.lod", values);
+        const FrameTiming t = r->render();
+        return std::make_pair(t, r->read_color());
+    };
+    const auto [low_timing, low_image] = frame(low, hilltops);
+    const auto [low_plain_timing, low_plain] = frame(low, plain);
+    for (float v : low_image.pixels) REQUIRE(std::isfinite(v));
+    CAPTURE(counter(low_timing, "hilltop_cells"));
+    CAPTURE(counter(low_timing, "far_cells"));
+    CHECK(counter(low_timing, "hilltop_cells") >= 1);
+    CHECK(counter(low_timing, "hilltop_cells") <= counter(low_timing, "far_cells"));
+    CHECK(max_difference(low_image, low_plain) > 0.1f);
+    // Seen from across, the image's quads lie flat on the hills: the crests' outline is bare
+    // ground against the sky (Lemme's "undesired flatness"). The blades standing above it come
+    // back with the volume's slices: per 8 x 8 tile, the share of pixels showing grass is nearer
+    // the reference's (here 0.0096 against 0.029).
+    int blade_pixels = 0;
+    const double with = grass::test::tile_coverage_error(low, low_image, 8, &blade_pixels);
+    const double without = grass::test::tile_coverage_error(low, low_plain);
+    CAPTURE(blade_pixels);
+    CAPTURE(with);
+    CAPTURE(without);
+    CHECK(blade_pixels > 300);
+    CHECK(with < 0.5 * without);
+    const auto [high_timing, high_image] = frame(high, hilltops);
+    CHECK(counter(high_timing, "hilltop_draws") == 0);
+    CHECK(max_difference(high_image, frame(high, plain).second) <= 1e-5f);
 }

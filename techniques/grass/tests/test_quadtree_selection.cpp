@@ -275,3 +275,84 @@ TEST_CASE("quadtree on a terrain: boxes and centres rise with the ground, and th
         CHECK(uneven.bands[2].size() > any.bands[2].size() * 2);
     }
 }
+
+TEST_CASE("quadtree: Lemme's hilltop band keeps the far band's cells whose box reaches above the eye (§6.4.6)") {
+    const QuadtreeField f = test_field();
+    // Hills up to 12 m, as above.
+    std::vector<float> grid(size_t(f.cells.x + 1) * (f.cells.y + 1));
+    for (uint32_t z = 0; z <= f.cells.y; ++z)
+        for (uint32_t x = 0; x <= f.cells.x; ++x)
+            grid[size_t(z) * (f.cells.x + 1) + x] = 6.0f + 6.0f * std::sin(float(x) / 6.5f) * std::cos(float(z) / 4.5f);
+    std::vector<QuadtreeBand> bands = lod_bands();
+    QuadtreeBand hilltop = bands[2];
+    hilltop.max_macro = 40;
+    hilltop.above_eye = true;
+    bands.push_back(hilltop);
+    // The top of a box: its highest grid height plus the tallest blade (field units times the cell).
+    const auto cell_top = [&](uint32_t x, uint32_t z) {
+        float high = -1e30f;
+        for (uint32_t c = 0; c < 4; ++c) high = std::max(high, grid_at(f, grid, x + (c & 1), z + (c >> 1)));
+        return f.origin.y + high + f.cell_size * f.patch_box.max.y;
+    };
+    const auto drawn_cells = [&](const std::vector<QuadtreeNode>& nodes) {
+        std::vector<int> drawn(size_t(f.cells.x) * f.cells.y, 0);
+        for (const QuadtreeNode& n : nodes)
+            for (uint32_t z = n.first.y; z < n.first.y + n.span.y; ++z)
+                for (uint32_t x = n.first.x; x < n.first.x + n.span.x; ++x) ++drawn[size_t(z) * f.cells.x + x];
+        return drawn;
+    };
+    SUBCASE("from 10 m up, on the hills (up to 12 m): the far band's crests, and only cells whose box reaches above the eye") {
+        const Camera cam = camera({-70.0f, 10.0f, 2.0f}, {0.0f, 6.0f, 0.0f}, 60.0f);
+        const QuadtreeSelection s = check_selection(f, {bands.begin(), bands.begin() + 3}, cam, grid);
+        const QuadtreeSelection h = select_cells(f, bands, cam.position, view_projection(cam, kWidth, kHeight), grid);
+        REQUIRE(h.bands.size() == 4);
+        // The other bands are as without the hilltops.
+        for (size_t b = 0; b < 3; ++b) CHECK(h.bands[b].size() == s.bands[b].size());
+        const std::vector<int> far = drawn_cells(h.bands[2]), top = drawn_cells(h.bands[3]);
+        std::vector<QuadtreeBand> single = bands;
+        single[3].max_macro = 1;
+        const glm::mat4 view_proj = view_projection(cam, kWidth, kHeight);
+        const std::vector<int> h1 = drawn_cells(select_cells(f, single, cam.position, view_proj, grid).bands[3]);
+        int extra = 0, missing_single = 0, single_cells = 0;
+        for (int n : h1) single_cells += n > 0;
+        int low_nodes = 0, too_wide = 0, not_far = 0, twice = 0, missing = 0, far_cells = 0, top_cells = 0;
+        for (const QuadtreeNode& n : h.bands[3]) {
+            low_nodes += f.origin.y + n.heights.y + f.cell_size * f.patch_box.max.y <= cam.position.y;
+            too_wide += std::max(n.span.x, n.span.y) > hilltop.max_macro;
+        }
+        for (uint32_t z = 0; z < f.cells.y; ++z)
+            for (uint32_t x = 0; x < f.cells.x; ++x) {
+                const size_t i = size_t(z) * f.cells.x + x;
+                far_cells += far[i] > 0;
+                top_cells += top[i] > 0;
+                not_far += top[i] > 0 && far[i] == 0;
+                twice += top[i] > 1;
+                // A far cell whose own box reaches above the eye is a hilltop's.
+                missing += far[i] > 0 && cell_top(x, z) > cam.position.y + 1e-3f && top[i] == 0;
+                // In single cells, only those (within the slack of a rounding), each if in view
+                // (a far macro-cell may hold cells out of view).
+                extra += h1[i] > 0 && cell_top(x, z) <= cam.position.y - 1e-3f;
+                missing_single += far[i] > 0 && cell_top(x, z) > cam.position.y + 1e-3f && h1[i] == 0 &&
+                                  cell_in_view(f, {x, z}, view_proj, grid);
+            }
+        CAPTURE(far_cells);
+        CAPTURE(top_cells);
+        CHECK(low_nodes == 0);
+        CHECK(too_wide == 0);
+        CHECK(not_far == 0);
+        CHECK(twice == 0);
+        CHECK(missing == 0);
+        CHECK(top_cells > 100);
+        CHECK(top_cells < far_cells);  // the valleys' far cells lie below the eye
+        CAPTURE(single_cells);
+        CHECK(extra == 0);
+        CHECK(missing_single == 0);
+        CHECK(single_cells * 2 < far_cells);  // in single cells, the crests alone
+    }
+    SUBCASE("from 150 m up nothing reaches above the eye") {
+        const Camera cam = camera({0.0f, 150.0f, 120.0f}, {0.0f, 0.0f, 0.0f});
+        const QuadtreeSelection h = select_cells(f, bands, cam.position, view_projection(cam, kWidth, kHeight), grid);
+        CHECK(!h.bands[2].empty());
+        CHECK(h.bands[3].empty());
+    }
+}
