@@ -102,3 +102,36 @@ TEST_CASE("check_supported: a missing area light and a missing shadow light have
     scene.lights[0].type = LightType::sphere;
     CHECK(!check_supported(test::gpu(), scene, plan));
 }
+
+TEST_CASE("a technique made for a population kind is refused on a scene without one, by run and by plan") {
+    // grass.geometry on a scene of boxes would time and score the boxes alone.
+    test::TempFolder folder;
+    folder.write("boxes.toml", "[scene]\nname = \"boxes\"\n[[light]]\ntype = \"directional\"\n[[object]]\nshape = \"box\"\n");
+    const std::filesystem::path file = folder.write(
+        "e.toml", "[experiment]\nscenes = [\"boxes.toml\"]\nresolutions = [[16, 16]]\n"
+                  "[[technique]]\nname = \"shadow.hard\"\n[[technique]]\nname = \"grass.geometry\"\n");
+    const Experiment experiment = load_experiment(file, TechniqueRegistry::instance());
+    const auto check = [&](const std::optional<ConfigError>& error) {
+        REQUIRE(error);
+        INFO(error->formatted());
+        CHECK(contains(error->what(), "1 case cannot run"));
+        CHECK(contains(error->what(), "boxes_16x16_grass.geometry: scene 'boxes' holds no 'grass' population"));
+        CHECK(contains(error->hint(), "add a [[population]] of kind 'grass'"));
+        CHECK(contains(error->hint(), "boxes.toml"));
+        CHECK(error->line() == 6);  // grass.geometry's [[technique]]
+    };
+    check(prepare_error(experiment));
+    const std::vector<Case> cases = expand_cases(experiment, TechniqueRegistry::instance());
+    check(test::config_error_of([&] { refuse_cases_scenes_cannot_run(experiment, cases, TechniqueRegistry::instance()); }));
+    // plan refuses what no device decides, as run does: a light missing here.
+    test::TempFolder dark;
+    dark.write("dark.toml",
+               "[scene]\nname = \"dark\"\n[[light]]\ntype = \"sphere\"\ncasts_shadows = false\n[[object]]\nshape = \"box\"\n");
+    const Experiment unlit = load_experiment(
+        dark.write("e.toml", "[experiment]\nscenes = [\"dark.toml\"]\n[[technique]]\nname = \"shadow.hard\"\n"),
+        TechniqueRegistry::instance());
+    const auto error = test::config_error_of(
+        [&] { refuse_cases_scenes_cannot_run(unlit, expand_cases(unlit, TechniqueRegistry::instance()), TechniqueRegistry::instance()); });
+    REQUIRE(error);
+    CHECK(contains(error->what(), "no shadow-casting light"));
+}

@@ -390,14 +390,16 @@ int plan(const fs::path& config, size_t shards, bool quick) {
     const TechniqueRegistry& registry = TechniqueRegistry::instance();
     const Experiment experiment = load_experiment(config, registry);
     const std::vector<Case> cases = expand_cases(experiment, registry);
+    refuse_cases_scenes_cannot_run(experiment, cases, registry);  // what `canopy run` would refuse, bar the device's
     RunOptions options;
     options.quick = quick;
     const RunPlan plan = plan_run(experiment, cases, registry, measurement_settings(experiment, options));
     const std::vector<size_t> shard_of = assign_shards(plan.group_cost, std::max<size_t>(shards, 1));
     double total = 0;
     for (double c : plan.group_cost) total += c;
-    fmt::print("{}: {} cases in {} groups, estimated cost {:.1f} megapixel-frames{}\n\n", experiment.name, cases.size(),
-               plan.groups.size(), total, quick ? " (--quick)" : "");
+    fmt::print("{}: {} case{} in {} group{}, estimated cost {:.1f} megapixel-frames{}\n\n", experiment.name,
+               cases.size(), cases.size() == 1 ? "" : "s", plan.groups.size(), plan.groups.size() == 1 ? "" : "s", total,
+               quick ? " (--quick)" : "");
     std::vector<std::vector<std::string>> rows;
     for (size_t g = 0; g < plan.groups.size(); ++g)
         for (size_t k = 0; k < plan.groups[g].cases.size(); ++k) {
@@ -881,6 +883,9 @@ int main(int argc, char** argv) {
     CLI::App* metrics_cmd = app.add_subcommand(
         "metrics", "List every error metric: its names in results and [paper] claims, unit, better direction, group, "
                    "compare tolerance.");
+    // The commands that only read and print (or write a file) run no case: their exit codes are these.
+    for (CLI::App* quick_cmd : {list_cmd, graph_cmd, devices_cmd, metrics_cmd, plan_cmd, export_cmd, export_paper_cmd})
+        quick_cmd->footer("Exit codes: 0 success, 1 a file could not be written, 2 bad input (the message names file:line).");
 
     try {
         app.parse(argc, argv);

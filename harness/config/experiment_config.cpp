@@ -164,7 +164,9 @@ std::vector<Scene> read_scenes(TomlReader& reader, std::vector<std::filesystem::
         if (!std::filesystem::is_regular_file(scene_file, ignored))
             throw reader.error_at(*file_node, fmt::format("scene file '{}' not found (looked for {})", name->get(),
                                                           scene_file.string()),
-                                  "scene paths are relative to the experiment file's folder");
+                                  std::filesystem::path(name->get()).is_absolute()
+                                      ? "check the path, or give it relative to the experiment file's folder"
+                                      : "scene paths are relative to the experiment file's folder");
         Scene scene = load_scene(scene_file);  // its errors carry the scene file's own file:line
         if (variant) apply_scene_variant(*variant, scene);
         scenes.push_back(std::move(scene));

@@ -74,6 +74,21 @@ std::optional<Unsupported> check_image(const GpuContext& gpu, const FrameGraph& 
 }  // namespace
 
 std::optional<Unsupported> check_supported(const GpuContext& gpu, const Scene& scene, const FrameGraph& graph) {
+    if (auto unsupported = check_scene_supported(scene, graph)) return unsupported;
+    for (const ImageDecl& image : graph.images)
+        if (auto unsupported = check_image(gpu, graph, image)) return unsupported;
+    for (const PassDecl& p : graph.passes)
+        for (const ResourceUse& u : p.uses)
+            if (u.use == Use::indirect && !gpu.draw_indirect_count())
+                return Unsupported{fmt::format("device '{}' lacks drawIndirectCount (needed by pass '{}')", gpu.info().name,
+                                               p.name),
+                                   device_hint()};
+    if (!(gpu.format_features(kColorTargetFormat) & VK_FORMAT_FEATURE_2_COLOR_ATTACHMENT_BIT))
+        return Unsupported{fmt::format("device '{}' cannot render to RGBA32F", gpu.info().name), device_hint()};
+    return std::nullopt;
+}
+
+std::optional<Unsupported> check_scene_supported(const Scene& scene, const FrameGraph& graph) {
     if (std::string problem = validate(graph); !problem.empty())
         return Unsupported{"the technique's frame graph is malformed: " + problem,
                            "a bug in the technique, please report it"};
@@ -115,16 +130,6 @@ std::optional<Unsupported> check_supported(const GpuContext& gpu, const Scene& s
                                           "give the shadow light a size: type = \"rect\" with size = [w, h], or "
                                           "type = \"sphere\" with radius = r")};
     }
-    for (const ImageDecl& image : graph.images)
-        if (auto unsupported = check_image(gpu, graph, image)) return unsupported;
-    for (const PassDecl& p : graph.passes)
-        for (const ResourceUse& u : p.uses)
-            if (u.use == Use::indirect && !gpu.draw_indirect_count())
-                return Unsupported{fmt::format("device '{}' lacks drawIndirectCount (needed by pass '{}')", gpu.info().name,
-                                               p.name),
-                                   device_hint()};
-    if (!(gpu.format_features(kColorTargetFormat) & VK_FORMAT_FEATURE_2_COLOR_ATTACHMENT_BIT))
-        return Unsupported{fmt::format("device '{}' cannot render to RGBA32F", gpu.info().name), device_hint()};
     return std::nullopt;
 }
 

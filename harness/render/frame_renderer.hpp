@@ -45,6 +45,9 @@ struct Unsupported {
 
 // Why `graph` cannot run on this device or scene, or nullopt when it can.
 std::optional<Unsupported> check_supported(const GpuContext& gpu, const Scene& scene, const FrameGraph& graph);
+// Its checks that need no device (the graph's shape, the scene's populations and light), which
+// check_supported makes first: `canopy plan` makes these alone.
+std::optional<Unsupported> check_scene_supported(const Scene& scene, const FrameGraph& graph);
 std::optional<std::string> unsupported_reason(const GpuContext& gpu, const Scene& scene, const FrameGraph& graph);
 
 class FrameRenderer {

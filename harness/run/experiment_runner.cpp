@@ -24,8 +24,10 @@
 
 #include <fmt/chrono.h>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
+#include <functional>
 #include <chrono>
 #include <cmath>
 #include <map>
@@ -74,30 +76,44 @@ void write_run_reports(const std::filesystem::path& dir, const RunRecord& run, c
     write_pareto_report(dir / "pareto.md", run);
 }
 
-PreparedExperiment prepare_experiment(const Experiment& experiment, const TechniqueRegistry& registry,
-                                      const GpuContext& gpu) {
-    PreparedExperiment prepared;
-    prepared.experiment = &experiment;
-    prepared.cases = expand_cases(experiment, registry);
-    for (const Scene& scene : experiment.scenes) prepared.meshes.push_back(build_scene_meshes(scene));
+namespace {
 
-    // Every case that cannot run, so one attempt shows them all.
+// A technique made to render a population kind, on a scene that holds none of it, would time and
+// score the scene's objects alone: an experiment refuses it (a renderer may still draw such a
+// graph, as tests do).
+std::optional<Unsupported> missing_population(const Scene& scene, const FrameGraph& graph) {
+    const std::vector<std::string>& kinds = graph.needs.populations;
+    const bool holds_one = std::any_of(scene.populations.begin(), scene.populations.end(), [&](const Population& p) {
+        return std::find(kinds.begin(), kinds.end(), p.kind) != kinds.end();
+    });
+    if (kinds.empty() || holds_one) return std::nullopt;
+    return Unsupported{fmt::format("scene '{}' holds no '{}' population, which this technique renders", scene.name,
+                                   fmt::join(kinds, "' or '")),
+                       fmt::format("add a [[population]] of kind '{}' to the scene (configs/scenes/meadow.toml has "
+                                   "one), or pick a technique for what the scene holds (`canopy list` shows what "
+                                   "each renders) ({})",
+                                   kinds.front(), scene.file.string())};
+}
+
+// Throws ConfigError naming the experiment's file:line and every case `check` refuses, so one
+// attempt shows them all.
+void refuse_unrunnable(const Experiment& experiment, const std::vector<Case>& cases, const TechniqueRegistry& registry,
+                       const std::function<std::optional<Unsupported>(const Scene&, const FrameGraph&)>& check) {
     struct Refused {
         const Case* c;
         Unsupported why;
     };
     std::vector<Refused> refused;
-    for (const Case& c : prepared.cases) {
+    for (const Case& c : cases) {
         const Technique* technique = registry.find(c.technique);
-        if (auto why = check_supported(gpu, experiment.scenes[c.scene_index], technique->graph(c.params)))
+        if (auto why = check(experiment.scenes[c.scene_index], technique->graph(c.params)))
             refused.push_back({&c, std::move(*why)});
     }
-    if (refused.empty()) return prepared;
+    if (refused.empty()) return;
 
     constexpr size_t kListed = 20;  // more lines than this would scroll the cause off the screen
-    std::string message = refused.size() == 1
-                              ? "1 case cannot run:"
-                              : fmt::format("{} of {} cases cannot run:", refused.size(), prepared.cases.size());
+    std::string message = refused.size() == 1 ? "1 case cannot run:"
+                                              : fmt::format("{} of {} cases cannot run:", refused.size(), cases.size());
     std::vector<std::string> hints;
     for (size_t i = 0; i < refused.size(); ++i) {
         const Refused& r = refused[i];
@@ -109,6 +125,29 @@ PreparedExperiment prepare_experiment(const Experiment& experiment, const Techni
     for (const std::string& h : hints) hint += (hint.empty() ? "" : "\n  hint: ") + h;
     const TechniqueEntry* entry = entry_for(experiment, refused.front().c->technique);
     throw ConfigError(experiment.file, entry ? entry->where.line : 0, message, hint);
+}
+
+}  // namespace
+
+PreparedExperiment prepare_experiment(const Experiment& experiment, const TechniqueRegistry& registry,
+                                      const GpuContext& gpu) {
+    PreparedExperiment prepared;
+    prepared.experiment = &experiment;
+    prepared.cases = expand_cases(experiment, registry);
+    for (const Scene& scene : experiment.scenes) prepared.meshes.push_back(build_scene_meshes(scene));
+    refuse_unrunnable(experiment, prepared.cases, registry, [&](const Scene& scene, const FrameGraph& graph) {
+        if (auto missing = missing_population(scene, graph)) return missing;
+        return check_supported(gpu, scene, graph);
+    });
+    return prepared;
+}
+
+void refuse_cases_scenes_cannot_run(const Experiment& experiment, const std::vector<Case>& cases,
+                                    const TechniqueRegistry& registry) {
+    refuse_unrunnable(experiment, cases, registry, [](const Scene& scene, const FrameGraph& graph) {
+        if (auto missing = missing_population(scene, graph)) return missing;
+        return check_scene_supported(scene, graph);
+    });
 }
 
 namespace {

@@ -55,6 +55,11 @@ struct PreparedExperiment {
 PreparedExperiment prepare_experiment(const Experiment& experiment, const TechniqueRegistry& registry,
                                       const GpuContext& gpu);
 
+// The same refusal for what no device decides (check_scene_supported): `canopy plan` on a machine
+// that may have no device refuses the cases no device could run.
+void refuse_cases_scenes_cannot_run(const Experiment& experiment, const std::vector<Case>& cases,
+                                    const TechniqueRegistry& registry);
+
 // Writes a run's reports into `dir`: results.json, results.csv, results.md, results.gbench.json,
 // pareto.md, and paper.md and paper.json for an experiment with a [paper] table.
 void write_run_reports(const std::filesystem::path& dir, const RunRecord& run, const Experiment& experiment);
