@@ -295,8 +295,17 @@ TEST_CASE("an output folder: new or empty starts, the same run continues, anythi
         CHECK(text.find("config_hash: the folder's run has '5d8ae7b4e274bd95', this one 'ffff'") != std::string::npos);
         CHECK(text.find("quick: the folder's run has 'true', this one 'false'") != std::string::npos);
         CHECK(text.find("--force") != std::string::npos);
+        // A config no option can match: resuming is not offered.
+        CHECK(text.find("resume") == std::string::npos);
+        CHECK(text.find("cannot continue it") != std::string::npos);
     }
-    CHECK_THROWS_AS(plan_output_folder(dir, identity(true, ImageOutput::png), false, true), ConfigError);
+    // Options alone differ: running with the folder's options resumes it.
+    try {
+        plan_output_folder(dir, identity(true, ImageOutput::png), false, true);
+        FAIL("not refused");
+    } catch (const ConfigError& e) {
+        CHECK(e.formatted().find("run with the options of the folder's run to resume it") != std::string::npos);
+    }
     // --force replaces it (without --resume).
     const OutputFolderPlan forced = plan_output_folder(dir, identity(false), true, false);
     CHECK(forced.replace);

@@ -6,12 +6,14 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <cstring>
 #include <fcntl.h>
 #include <sys/file.h>
 #include <unistd.h>
+#include <set>
 #include <vector>
 
 namespace canopy {
@@ -102,13 +104,24 @@ OutputFolderPlan plan_output_folder(const fs::path& dir, const RunIdentity& iden
                           another + ", or add --force to replace it");
     }
     const std::vector<std::string> differences = identity_differences(previous.identity, identity);
-    if (!differences.empty())
+    if (!differences.empty()) {
+        // Options alone (--quick, --images, ...) a rerun can match; a commit, build, machine or
+        // config it cannot, so the hint offers resuming only when options alone differ.
+        static const std::set<std::string> kOptions{"quick",  "shard",         "images",    "reference",
+                                                    "warmup_frames", "rounds", "frames_per_sample", "chunk_limits",
+                                                    "test_ballast"};
+        const bool options_alone = std::all_of(differences.begin(), differences.end(), [](const std::string& d) {
+            return kOptions.count(d.substr(0, d.find(':'))) > 0;
+        });
         throw ConfigError(dir, 0,
                           fmt::format("the folder holds another run (experiment '{}'); refusing to overwrite or mix "
                                       "its results. It differs in:{}",
                                       previous.experiment, bulleted(differences)),
-                          another + "; or run with the options of the folder's run to resume it; or add --force to "
-                                    "replace it");
+                          another + (options_alone ? "; or run with the options of the folder's run to resume it; or "
+                                                     "add --force to replace it"
+                                                   : "; or add --force to replace it (this build, machine or config "
+                                                     "cannot continue it)"));
+    }
     plan.previous = std::move(previous);
     return plan;
 }
