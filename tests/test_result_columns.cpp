@@ -4,7 +4,9 @@
 #include "metrics/metric_registry.hpp"
 #include "report/csv_report.hpp"
 #include "report/markdown_report.hpp"
+#include "report/pareto.hpp"
 #include "report/result_columns.hpp"
+#include "run/block_bootstrap.hpp"
 
 #include <doctest/doctest.h>
 
@@ -133,53 +135,71 @@ TEST_CASE("results.md's table: the columns the list shows there, in its order") 
     CHECK(table[3].find("96x64") != std::string::npos);
 }
 
-TEST_CASE("dominated_by: a case another beats significantly in time with no more FLIP, within a scene") {
-    RunRecord run;
-    run.frames_per_sample = 1;
-    const auto make = [&](const std::string& id, double ratio, double low, double high, double flip,
-                          const std::string& scene = "field") {
+TEST_CASE("dominated_by: pareto.md's judgement on the run's first Pareto axis, within a scene, from 6 rounds") {
+    // shadow.pcf's first Pareto axis is visibility RMSE (tolerance 5e-4 absolute).
+    const auto make = [](const std::string& id, double ratio, double visibility_rmse, int rounds,
+                         const std::string& scene = "field") {
         CaseResult c = timed_case(id, {"lit"}, {});
         c.scene = scene;
         c.ok = true;
-        c.technique = "grass." + id;
-        c.params_shown = "-";
+        c.technique = "shadow.pcf";
+        c.params_shown = id;
+        c.group = scene == "field" ? 0 : 1;
         c.group_baseline = id == "baseline";
-        if (!c.group_baseline) {
-            c.ratio.per_round = {ratio};
-            c.ratio.estimate.value = ratio;
-            c.ratio.estimate.ci = {low, high};
-        }
+        for (int r = 0; r < rounds; ++r) c.ratio.per_round.push_back(ratio * (1.0 + 0.01 * std::sin(2.4 * r)));
+        c.ratio.estimate = median_with_ci(c.ratio.per_round, bootstrap_seed(id));
         ImageMetrics m{};
-        m.flip_mean = flip;
+        m.visibility_rmse = visibility_rmse;
+        m.columns.visibility = true;
         c.image_error = m;
-        run.cases.push_back(c);
+        return c;
     };
-    make("baseline", 1, 1, 1, 0.10);
-    make("fast", 0.5, 0.45, 0.55, 0.05);            // beats the baseline in both
-    make("overlapping", 0.52, 0.40, 0.60, 0.20);    // slower than "fast" only within the intervals: kept
-    make("slow", 2.0, 1.9, 2.1, 0.30);              // beaten by the baseline (the first that beats it)
-    make("slow_but_exact", 2.0, 1.9, 2.1, 0.01);    // the least error: kept
-    make("elsewhere", 3.0, 2.9, 3.1, 0.50, "other");  // another scene: nothing to compare with
+    const auto run_of = [&](int rounds) {
+        RunRecord run;
+        run.frames_per_sample = 1;
+        run.rounds = rounds;
+        run.groups = {GroupRecord{"field 64x64", {}}, GroupRecord{"other 64x64", {}}};
+        run.cases = {make("baseline", 1.0, 0.10, rounds),
+                     make("fast", 0.5, 0.05, rounds),                 // beats the baseline in both
+                     make("as_fast_worse", 0.5, 0.20, rounds),        // as fast as "fast", more error: beaten by it
+                     make("slow_but_exact", 2.0, 0.01, rounds),       // the least error: on the front
+                     make("elsewhere", 3.0, 0.50, rounds, "other")};  // another scene: nothing to compare with
+        return run;
+    };
     const ResultColumn* column = nullptr;
     for (const ResultColumn& c : result_columns())
         if (c.name == "dominated_by") column = &c;
     REQUIRE(column);
+    const RunRecord run = run_of(30);
     const auto csv = column->csv(run);
     REQUIRE(csv.headers == std::vector<std::string>{"dominated_by"});
-    const auto cell = [&](size_t i) { return csv.cells(run.cases[i])[0]; };
-    CHECK(cell(0) == "\"fast\"");
-    CHECK(cell(1).empty());
-    CHECK(cell(2).empty());
-    CHECK(cell(3) == "\"baseline\"");
-    CHECK(cell(4).empty());
-    CHECK(cell(5).empty());
+    const auto cell = [&](const RunRecord& r, size_t i) { return column->csv(r).cells(r.cases[i])[0]; };
+    CHECK(cell(run, 0) == "\"fast\"");
+    CHECK(cell(run, 1).empty());
+    CHECK(cell(run, 2) == "\"fast\"");
+    CHECK(cell(run, 3).empty());
+    CHECK(cell(run, 4).empty());
+    // The same judgement as pareto.md's front on that axis.
+    for (const ParetoFront& front : pareto_fronts(run, "visibility_rmse"))
+        for (const ParetoPoint& p : front.points) {
+            CAPTURE(p.result->id);
+            const size_t i = size_t(std::find_if(run.cases.begin(), run.cases.end(),
+                                                 [&](const CaseResult& c) { return c.id == p.result->id; }) -
+                                    run.cases.begin());
+            CHECK(cell(run, i) == (p.dominated ? "\"" + p.dominated_by + "\"" : ""));
+        }
     const auto markdown = column->markdown(run);
     REQUIRE(markdown.headers.size() == 1);
-    CHECK(markdown.cells(run.cases[0])[0] == "grass.fast");
+    CHECK(markdown.cells(run.cases[0])[0] == "shadow.pcf fast");
     CHECK(markdown.cells(run.cases[1])[0] == "-");
+    // --quick's 3 rounds: no interval to judge by, nothing dominated (as canopy compare judges no change).
+    const RunRecord quick = run_of(3);
+    for (size_t i = 0; i < quick.cases.size(); ++i) CHECK(cell(quick, i).empty());
     // A failed case neither dominates nor is dominated.
-    run.cases[1].ok = false;
-    CHECK(column->csv(run).cells(run.cases[0])[0].empty());
+    RunRecord failed = run;
+    failed.cases[1].ok = false;
+    CHECK(cell(failed, 0).empty());
+    CHECK(cell(failed, 2).empty());
 }
 
 TEST_CASE("counters: a CSV column per name the run holds, and one results.md column when any case counted") {

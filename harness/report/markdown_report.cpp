@@ -55,9 +55,10 @@ std::string markdown_report(const RunRecord& run) {
                            e.binary_older_than);
     std::string resumed;
     for (const std::string& at : run.resumed_at) resumed += (resumed.empty() ? ", resumed " : " and ") + at;
-    out += fmt::format("- per case {} warm-up frames, then {} rounds of {} frame{} (each group's cases interleaved "
+    out += fmt::format("- per case {} warm-up frame{}, then {} rounds of {} frame{} (each group's cases interleaved "
                        "round by round){}; started {}{}, finished {}; status: {}\n",
-                       run.warmup_frames, run.rounds, run.frames_per_sample, run.frames_per_sample == 1 ? "" : "s",
+                       run.warmup_frames, run.warmup_frames == 1 ? "" : "s", run.rounds, run.frames_per_sample,
+                       run.frames_per_sample == 1 ? "" : "s",
                        run.quick ? " (--quick)" : "", run.started_at, resumed,
                        run.finished_at.empty() ? "-" : run.finished_at, run.status);
     if (!run.error.empty()) out += fmt::format("- the run stopped: {}\n", run.error);
@@ -78,9 +79,10 @@ std::string markdown_report(const RunRecord& run) {
            "scene and resolution (the group's baseline), each sample divided by the baseline's samples measured just "
            "before and after it, median over the rounds with its 95 % block-bootstrap interval. "
            "memory: device memory the technique's own resources take (shadow maps, ...). "
-           "dominated by: another case of the same scene and resolution that is significantly faster (its ratio's "
-           "95 % interval wholly below this one's) with no more FLIP; '-' where none is (a case as fast within the "
-           "intervals is never counted as beating it). "
+           "dominated by: another case of the same scene and resolution that beats it as pareto.md's first front "
+           "judges (on the first error its techniques declare as a Pareto axis: not significantly slower nor worse, "
+           "and significantly faster or better; none with fewer than 6 rounds, as --quick measures); '-' where none "
+           "does. "
            "Errors are against the ray-traced reference. How far the image is from the truth: RMSE, PSNR (peak 1), "
            "SSIM and FLIP over the whole image, in linear radiance (they include aliasing at silhouettes and "
            "shading, which no shadow technique changes). ";

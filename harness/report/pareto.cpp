@@ -3,6 +3,7 @@
 #include "core/registry.hpp"
 #include "metrics/metric_registry.hpp"
 #include "run/case_ratio.hpp"
+#include "run/run_comparison.hpp"
 
 #include <fmt/format.h>
 
@@ -28,6 +29,8 @@ double worse_by(const MetricInfo& info, double a, double b) { return info.better
 bool dominates(const ParetoPoint& b, const ParetoPoint& a, const std::string& metric) {
     const MetricInfo& info = metric_info(metric);
     if (!std::isfinite(a.error) || !std::isfinite(b.error) || a.result == b.result) return false;
+    // As canopy compare: fewer rounds than this (--quick measures 3) give no interval to judge by.
+    if (std::min(a.result->ratio.per_round.size(), b.result->ratio.per_round.size()) < kMinComparedRounds) return false;
     const double b_worse_by = worse_by(info, b.error, a.error);
     const double tolerance = info.tolerance.absolute + info.tolerance.relative * std::abs(a.error);
     if (b_worse_by > tolerance) return false;  // B's error is significantly worse

@@ -3,6 +3,7 @@
 #include "metrics/metric_registry.hpp"
 #include "report/atomic_file.hpp"
 #include "report/text_table.hpp"
+#include "run/run_comparison.hpp"
 
 #include <fmt/format.h>
 
@@ -57,8 +58,13 @@ std::string pareto_report(const RunRecord& run, const std::vector<std::string>& 
                "interval]), measured in the same rounds. A configuration is dominated when another is neither "
                "significantly worse in error (by more than the metric's compare tolerance) nor significantly slower "
                "(the interval of their paired time ratio lies above 1), and is significantly better in one: faster (the interval lies below 1) or lower in error by more than the "
-               "metric's compare tolerance (`canopy metrics`). \"front\" marks the others. Rows by time.\n",
-               run.experiment) +
+               "metric's compare tolerance (`canopy metrics`). \"front\" marks the others. Rows by time.{}\n",
+               run.experiment,
+               run.rounds < int(kMinComparedRounds)
+                   ? fmt::format(" This run measured {} rounds, fewer than the {} a time interval needs: no "
+                                 "configuration is judged dominated.",
+                                 run.rounds, kMinComparedRounds)
+                   : "") +
            body;
 }
 

@@ -1,11 +1,14 @@
 #include "report/result_columns.hpp"
 
+#include "report/pareto.hpp"
+
 #include "metrics/metric_registry.hpp"
 #include "report/text_table.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <map>
 #include <cmath>
 #include <optional>
 #include <set>
@@ -218,33 +221,24 @@ ResultColumn metric_family() {
     return column;
 }
 
-// Pareto dominance within a scene and resolution, on time and whole-image error: a case is
-// dominated by another that is significantly faster (its ratio's 95 % interval lies wholly below
-// this case's) and has no more FLIP. Conservative: a case as fast as another within the
-// intervals is never marked, however much more error it has. Both cases must be ok, timed
-// against a baseline and compared with a reference.
-struct TimeAndError {
-    Interval time;
-    double flip = 0;
-};
-std::optional<TimeAndError> time_and_error(const CaseResult& c) {
-    if (!c.ok || !c.image_error || !std::isfinite(c.image_error->flip_mean)) return std::nullopt;
-    if (c.ratio.measured()) return TimeAndError{c.ratio.estimate.ci, c.image_error->flip_mean};
-    if (c.group_baseline) return TimeAndError{Interval{1.0, 1.0}, c.image_error->flip_mean};
-    return std::nullopt;
+// Pareto dominance as pareto.md judges it (report/pareto.hpp), on the first error axis the run's
+// techniques declare (default_pareto_metrics): the id of a case that dominates `c` in its group,
+// or none. One definition, so results.md and pareto.md agree.
+std::map<std::string, std::string> dominance(const RunRecord& run) {
+    std::map<std::string, std::string> by;
+    const std::vector<std::string> declared = default_pareto_metrics(run);
+    // As pareto.md: an axis the registry does not hold is skipped.
+    const auto metric = std::find_if(declared.begin(), declared.end(), [](const std::string& m) { return find_metric(m); });
+    if (metric == declared.end()) return by;
+    for (const ParetoFront& front : pareto_fronts(run, *metric))
+        for (const ParetoPoint& p : front.points)
+            if (p.dominated) by[p.result->id] = p.dominated_by;
+    return by;
 }
 
-// The first case that dominates `c`, or nullptr.
-const CaseResult* dominating_case(const RunRecord& run, const CaseResult& c) {
-    const std::optional<TimeAndError> mine = time_and_error(c);
-    if (!mine) return nullptr;
-    for (const CaseResult& other : run.cases) {
-        if (&other == &c || other.scene != c.scene || other.resolution.width != c.resolution.width ||
-            other.resolution.height != c.resolution.height)
-            continue;
-        const std::optional<TimeAndError> theirs = time_and_error(other);
-        if (theirs && theirs->time.high < mine->time.low && theirs->flip <= mine->flip) return &other;
-    }
+const CaseResult* case_by_id(const RunRecord& run, const std::string& id) {
+    for (const CaseResult& c : run.cases)
+        if (c.id == id) return &c;
     return nullptr;
 }
 
@@ -256,18 +250,19 @@ ResultColumn dominance_column() {
     ResultColumn column;
     column.name = "dominated_by";
     column.csv = [](const RunRecord& run) {
-        return CsvBound{{"dominated_by"}, [&run](const CaseResult& c) {
-                            const CaseResult* by = dominating_case(run, c);
-                            return Cells{by ? quoted(by->id) : ""};
+        return CsvBound{{"dominated_by"}, [by = dominance(run)](const CaseResult& c) {
+                            const auto it = by.find(c.id);
+                            return Cells{it != by.end() ? quoted(it->second) : ""};
                         }};
     };
     column.markdown = [](const RunRecord& run) {
         bool measured = false;
         for (const CaseResult& c : run.cases) measured = measured || c.image_error.has_value();
         if (!measured) return MarkdownBound{{}, [](const CaseResult&) { return Cells{}; }};
-        return MarkdownBound{{{"dominated by", false}}, [&run](const CaseResult& c) {
-                                 const CaseResult* by = dominating_case(run, c);
-                                 return Cells{by ? case_label(*by) : "-"};
+        return MarkdownBound{{{"dominated by", false}}, [&run, by = dominance(run)](const CaseResult& c) {
+                                 const auto it = by.find(c.id);
+                                 const CaseResult* other = it != by.end() ? case_by_id(run, it->second) : nullptr;
+                                 return Cells{other ? case_label(*other) : "-"};
                              }};
     };
     return column;
