@@ -20,6 +20,9 @@ def load(pattern, metric):
 args = [a for a in sys.argv[1:] if a != '--passes']
 metric = args[2] if len(args) > 2 else 'gpu_frame'
 before, after = load(args[0], metric), load(args[1], metric)
+if not before or not after:
+    sys.exit(f'absolute_times.py: no results.json under {args[0] if not before else args[1]} '
+             '(the globs are relative to the current folder; quote them so the shell leaves them alone)')
 n = min(len(before), len(after))
 before, after = before[:n], after[:n]
 cases = [c for c in before[0] if all(c in r for r in before + after)]
