@@ -105,6 +105,15 @@ uint32_t ceil_pow2(uint32_t n) {
     return p;
 }
 
+// Grid heights of hills up to 12 m over the field, waves of about 40 and 28 m.
+std::vector<float> hills_grid(const QuadtreeField& f) {
+    std::vector<float> grid(size_t(f.cells.x + 1) * (f.cells.y + 1));
+    for (uint32_t z = 0; z <= f.cells.y; ++z)
+        for (uint32_t x = 0; x <= f.cells.x; ++x)
+            grid[size_t(z) * (f.cells.x + 1) + x] = 6.0f + 6.0f * std::sin(float(x) / 6.5f) * std::cos(float(z) / 4.5f);
+    return grid;
+}
+
 // Every check of the file's header for one camera; the selection, for further checks.
 QuadtreeSelection check_selection(const QuadtreeField& f, const std::vector<QuadtreeBand>& bands, const Camera& cam,
                                   const std::vector<float>& grid = {}) {
@@ -253,11 +262,7 @@ TEST_CASE("quadtree: macro-cells grow with the distance from the band's edges (L
 
 TEST_CASE("quadtree on a terrain: boxes and centres rise with the ground, and the far band's macro-cells are flat enough") {
     const QuadtreeField f = test_field();
-    // Hills up to 12 m, waves of about 40 and 28 m.
-    std::vector<float> grid(size_t(f.cells.x + 1) * (f.cells.y + 1));
-    for (uint32_t z = 0; z <= f.cells.y; ++z)
-        for (uint32_t x = 0; x <= f.cells.x; ++x)
-            grid[size_t(z) * (f.cells.x + 1) + x] = 6.0f + 6.0f * std::sin(float(x) / 6.5f) * std::cos(float(z) / 4.5f);
+    const std::vector<float> grid = hills_grid(f);
     std::vector<QuadtreeBand> bands = lod_bands();
     bands[2].max_unplanarity = 0.05f;
     SUBCASE("looking up a slope from a valley: flat boxes would lie below the view") {
@@ -278,11 +283,7 @@ TEST_CASE("quadtree on a terrain: boxes and centres rise with the ground, and th
 
 TEST_CASE("quadtree: Lemme's hilltop band keeps the far band's cells whose box reaches above the eye (§6.4.6)") {
     const QuadtreeField f = test_field();
-    // Hills up to 12 m, as above.
-    std::vector<float> grid(size_t(f.cells.x + 1) * (f.cells.y + 1));
-    for (uint32_t z = 0; z <= f.cells.y; ++z)
-        for (uint32_t x = 0; x <= f.cells.x; ++x)
-            grid[size_t(z) * (f.cells.x + 1) + x] = 6.0f + 6.0f * std::sin(float(x) / 6.5f) * std::cos(float(z) / 4.5f);
+    const std::vector<float> grid = hills_grid(f);
     std::vector<QuadtreeBand> bands = lod_bands();
     QuadtreeBand hilltop = bands[2];
     hilltop.max_macro = 40;
