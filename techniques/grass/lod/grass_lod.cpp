@@ -371,7 +371,13 @@ public:
                 if (!middle_shadows.empty()) g.passes.back().settings += ";" + middle_shadows;
             }
         }
-        if (hilltop) {
+        if (btf && per_sample) g.passes.back().settings += "; ray-cast once per covered sample";
+        // The levels' settings, when given without their levels: said, as the quadtree's are.
+        const std::string unused_2 = levels >= 2 ? "" : given_values(params, {"volume_2_start", "volume_2_full", "slices_2"});
+        const std::string unused_3 = levels >= 3 ? "" : given_values(params, {"volume_3_start", "volume_3_full", "slices_3"});
+        if (!unused_2.empty()) g.passes.back().settings += fmt::format("; {} unused: volume_levels >= 2 only", unused_2);
+        if (!unused_3.empty()) g.passes.back().settings += fmt::format("; {} unused: volume_levels = 3 only", unused_3);
+        if (hilltop) {  // after the levels' settings, which go on the middle band's last pass
             // The last level's bake and slices, the hilltop band's macro-cells, the image's blades.
             grass::VolumeSettings top = volumes.back();
             top.selected_by = hilltop_band;
@@ -385,12 +391,6 @@ public:
             if (per_sample) pass.settings += "; ray-cast once per covered sample";
             g.passes.push_back(std::move(pass));
         }
-        if (btf && per_sample) g.passes.back().settings += "; ray-cast once per covered sample";
-        // The levels' settings, when given without their levels: said, as the quadtree's are.
-        const std::string unused_2 = levels >= 2 ? "" : given_values(params, {"volume_2_start", "volume_2_full", "slices_2"});
-        const std::string unused_3 = levels >= 3 ? "" : given_values(params, {"volume_3_start", "volume_3_full", "slices_3"});
-        if (!unused_2.empty()) g.passes.back().settings += fmt::format("; {} unused: volume_levels >= 2 only", unused_2);
-        if (!unused_3.empty()) g.passes.back().settings += fmt::format("; {} unused: volume_levels = 3 only", unused_3);
         RasterState quads;
         quads.vertex_spirv = quadtree ? std::span<const uint32_t>(grass_lod_image_macro_vert)
                                       : std::span<const uint32_t>(grass_lod_image_vert);
