@@ -189,6 +189,19 @@ TEST_CASE("a run's identity: what differs is named, field by field") {
     for (const char* field : {"device", "driver", "commit", "build_type", "lp_num_threads", "heap", "nproc", "reference",
                               "rounds", "frames_per_sample", "round_order", "chunk_limits", "test_ballast"})
         CHECK_MESSAGE(identity().find(field) != nullptr, field);
+    // Options alone (the timing settings --quick sets among them) a rerun can match; a config, a
+    // commit, or a shard's run against a whole one's decide what resuming may offer.
+    CHECK_FALSE(only_options_differ(identity(), identity()));
+    CHECK(only_options_differ(identity(true), identity(false)));
+    CHECK(only_options_differ(identity(true, ImageOutput::png), identity(true, ImageOutput::all)));
+    CHECK_FALSE(only_options_differ(identity(true, ImageOutput::png, "aaaa"), identity(true, ImageOutput::all)));
+    RunIdentity other_commit = identity();
+    for (auto& [name, value] : other_commit.fields)
+        if (name == "commit") value = "0000000";
+    CHECK_FALSE(only_options_differ(other_commit, identity()));
+    RunIdentity shard = identity();
+    shard.fields.emplace_back("shard", "1/2");
+    CHECK(only_options_differ(shard, identity()));
 }
 
 TEST_CASE("results.json reads back exactly: every field, NaN, infinity, every digit") {

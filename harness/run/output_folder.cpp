@@ -6,14 +6,12 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <cstring>
 #include <fcntl.h>
 #include <sys/file.h>
 #include <unistd.h>
-#include <set>
 #include <vector>
 
 namespace canopy {
@@ -105,14 +103,9 @@ OutputFolderPlan plan_output_folder(const fs::path& dir, const RunIdentity& iden
     }
     const std::vector<std::string> differences = identity_differences(previous.identity, identity);
     if (!differences.empty()) {
-        // Options alone (--quick, --images, ...) a rerun can match; a commit, build, machine or
-        // config it cannot, so the hint offers resuming only when options alone differ.
-        static const std::set<std::string> kOptions{"quick",  "shard",         "images",    "reference",
-                                                    "warmup_frames", "rounds", "frames_per_sample", "chunk_limits",
-                                                    "test_ballast"};
-        const bool options_alone = std::all_of(differences.begin(), differences.end(), [](const std::string& d) {
-            return kOptions.count(d.substr(0, d.find(':'))) > 0;
-        });
+        // Options a rerun can match, or a commit, build, machine or config it cannot: resuming is
+        // offered for the first alone.
+        const bool options_alone = only_options_differ(previous.identity, identity);
         throw ConfigError(dir, 0,
                           fmt::format("the folder holds another run (experiment '{}'); refusing to overwrite or mix "
                                       "its results. It differs in:{}",

@@ -18,6 +18,9 @@ struct RunIdentity {
     // (name, value) in a fixed order, e.g. ("config_hash", "9f0c..."), ("quick", "true").
     // Adding a run option that changes results (a config override, ...) is one more field.
     std::vector<std::pair<std::string, std::string>> fields;
+    // The names of those fields the command line decides (--quick, --images, ...; the timing
+    // settings through --quick): a run with the same options could match them. Not recorded.
+    std::vector<std::string> set_by_options;
 
     const std::string* find(const std::string& name) const;
 };
@@ -27,5 +30,9 @@ RunIdentity make_run_identity(const Experiment& experiment, const RunOptions& op
 // One line per field that differs, "quick: the folder's run has true, this one false"; empty
 // when `recorded` (read from a results.json) and `now` match.
 std::vector<std::string> identity_differences(const RunIdentity& recorded, const RunIdentity& now);
+
+// Whether `recorded` and `now` differ, and only in fields `now` has from the command line: then
+// running with the recorded run's options continues it.
+bool only_options_differ(const RunIdentity& recorded, const RunIdentity& now);
 
 }  // namespace canopy
