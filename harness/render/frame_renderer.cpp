@@ -88,6 +88,21 @@ std::optional<Unsupported> check_supported(const GpuContext& gpu, const Scene& s
     return std::nullopt;
 }
 
+std::optional<Unsupported> check_population_present(const Scene& scene, const FrameGraph& graph) {
+    const std::vector<std::string>& kinds = graph.needs.populations;
+    const bool holds_one = std::any_of(scene.populations.begin(), scene.populations.end(), [&](const Population& p) {
+        return std::find(kinds.begin(), kinds.end(), p.kind) != kinds.end();
+    });
+    if (kinds.empty() || holds_one) return std::nullopt;
+    return Unsupported{fmt::format("scene '{}' holds no '{}' population, which this technique renders", scene.name,
+                                   fmt::join(kinds, "' or '")),
+                       scene_hint({scene.file, 0}, fmt::format("add a [[population]] of kind '{}' to the scene "
+                                                               "(configs/scenes/meadow.toml has one), or pick a "
+                                                               "technique for what the scene holds (`canopy list` "
+                                                               "shows what each renders)",
+                                                               kinds.front()))};
+}
+
 std::optional<Unsupported> check_scene_supported(const Scene& scene, const FrameGraph& graph) {
     if (std::string problem = validate(graph); !problem.empty())
         return Unsupported{"the technique's frame graph is malformed: " + problem,

@@ -48,6 +48,11 @@ std::optional<Unsupported> check_supported(const GpuContext& gpu, const Scene& s
 // Its checks that need no device (the graph's shape, the scene's populations and light), which
 // check_supported makes first: `canopy plan` makes these alone.
 std::optional<Unsupported> check_scene_supported(const Scene& scene, const FrameGraph& graph);
+// The other way round from the populations check_scene_supported refuses: a technique made to
+// render a population kind, on a scene holding none of it, would time and score the scene's
+// objects alone. Experiments refuse it (prepare_experiment, `canopy plan`); a renderer still draws
+// such a graph, as tests do.
+std::optional<Unsupported> check_population_present(const Scene& scene, const FrameGraph& graph);
 std::optional<std::string> unsupported_reason(const GpuContext& gpu, const Scene& scene, const FrameGraph& graph);
 
 class FrameRenderer {

@@ -24,12 +24,11 @@
 
 #include <fmt/chrono.h>
 #include <fmt/format.h>
-#include <fmt/ranges.h>
 
 #include <algorithm>
-#include <functional>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <optional>
 
@@ -78,24 +77,8 @@ void write_run_reports(const std::filesystem::path& dir, const RunRecord& run, c
 
 namespace {
 
-// A technique made to render a population kind, on a scene that holds none of it, would time and
-// score the scene's objects alone: an experiment refuses it (a renderer may still draw such a
-// graph, as tests do).
-std::optional<Unsupported> missing_population(const Scene& scene, const FrameGraph& graph) {
-    const std::vector<std::string>& kinds = graph.needs.populations;
-    const bool holds_one = std::any_of(scene.populations.begin(), scene.populations.end(), [&](const Population& p) {
-        return std::find(kinds.begin(), kinds.end(), p.kind) != kinds.end();
-    });
-    if (kinds.empty() || holds_one) return std::nullopt;
-    return Unsupported{fmt::format("scene '{}' holds no '{}' population, which this technique renders", scene.name,
-                                   fmt::join(kinds, "' or '")),
-                       fmt::format("add a [[population]] of kind '{}' to the scene (configs/scenes/meadow.toml has "
-                                   "one), or pick a technique for what the scene holds (`canopy list` shows what "
-                                   "each renders) ({})",
-                                   kinds.front(), scene.file.string())};
-}
-
-// Throws ConfigError naming the experiment's file:line and every case `check` refuses, so one
+// Throws ConfigError naming the experiment's file:line and every case that `check` refuses, or
+// whose scene lacks the population its technique renders (check_population_present), so one
 // attempt shows them all.
 void refuse_unrunnable(const Experiment& experiment, const std::vector<Case>& cases, const TechniqueRegistry& registry,
                        const std::function<std::optional<Unsupported>(const Scene&, const FrameGraph&)>& check) {
@@ -106,8 +89,11 @@ void refuse_unrunnable(const Experiment& experiment, const std::vector<Case>& ca
     std::vector<Refused> refused;
     for (const Case& c : cases) {
         const Technique* technique = registry.find(c.technique);
-        if (auto why = check(experiment.scenes[c.scene_index], technique->graph(c.params)))
-            refused.push_back({&c, std::move(*why)});
+        const Scene& scene = experiment.scenes[c.scene_index];
+        const FrameGraph graph = technique->graph(c.params);
+        std::optional<Unsupported> why = check_population_present(scene, graph);
+        if (!why) why = check(scene, graph);
+        if (why) refused.push_back({&c, std::move(*why)});
     }
     if (refused.empty()) return;
 
@@ -135,19 +121,14 @@ PreparedExperiment prepare_experiment(const Experiment& experiment, const Techni
     prepared.experiment = &experiment;
     prepared.cases = expand_cases(experiment, registry);
     for (const Scene& scene : experiment.scenes) prepared.meshes.push_back(build_scene_meshes(scene));
-    refuse_unrunnable(experiment, prepared.cases, registry, [&](const Scene& scene, const FrameGraph& graph) {
-        if (auto missing = missing_population(scene, graph)) return missing;
-        return check_supported(gpu, scene, graph);
-    });
+    refuse_unrunnable(experiment, prepared.cases, registry,
+                      [&](const Scene& scene, const FrameGraph& graph) { return check_supported(gpu, scene, graph); });
     return prepared;
 }
 
 void refuse_cases_scenes_cannot_run(const Experiment& experiment, const std::vector<Case>& cases,
                                     const TechniqueRegistry& registry) {
-    refuse_unrunnable(experiment, cases, registry, [](const Scene& scene, const FrameGraph& graph) {
-        if (auto missing = missing_population(scene, graph)) return missing;
-        return check_scene_supported(scene, graph);
-    });
+    refuse_unrunnable(experiment, cases, registry, check_scene_supported);
 }
 
 namespace {
