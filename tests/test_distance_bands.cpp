@@ -168,7 +168,8 @@ TEST_CASE("[reference] distance_bands: two distances in order, or an error at it
     const std::string claim = "\n[paper]\nid = \"x\"\ntitle = \"x\"\nsource = \"x\"\ncolumn_key = \"scene\"\n"
                               "columns = [\"scene\"]\nbaseline = \"a\"\n[[paper.row]]\nlabel = \"a\"\n"
                               "technique = \"shadow.hard\"\nvalues = [1.0]\n[[paper.claim]]\ntext = \"x\"\n"
-                              "left = \"a\"\nright = \"a\"\nmetric = \"flip_far\"\noffset = 0.02\n";
+                              "left = \"a\"\nright = \"a\"\nmetric = \"flip_far\"\noffset = 0.02\n"
+                              "states = \"direction\"\nwhy = \"canopy target\"\n";
     CHECK(load("distance_bands = [1, 2]" + claim).paper->claims.size() == 1);
     const auto error = test::config_error_of([&] { load("seed = 2" + claim); });
     REQUIRE(error);

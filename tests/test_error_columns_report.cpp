@@ -141,7 +141,7 @@ TEST_CASE("paper claims may name the visibility metrics; an undeclared column ju
     paper.claims.push_back(claim);
     claim.left = claim.right = "cards";
     paper.claims.push_back(claim);
-    const auto verdicts = judge_claims(paper, two_families());
+    const auto verdicts = judge_claims(paper, two_families(), RunToRunNoise{});
     REQUIRE(verdicts.size() == 2);
     CHECK(verdicts[0].outcome == "holds");
     CHECK(verdicts[0].because.find("0.0555") != std::string::npos);

@@ -124,7 +124,8 @@ Experiment parse_claim(const std::string& metric, const std::string& relation) {
         name, fmt::format("[experiment]\nscenes = [\"{}/scenes/tiny.toml\"]\n[[technique]]\nname = \"shadow.hard\"\n"
                           "[reference]\ndistance_bands = [1, 2]\n[paper]\nid = \"R\"\ncolumns = [\"96x64\"]\n[[paper.row]]\nlabel = \"hard\"\n"
                           "technique = \"shadow.hard\"\n[[paper.claim]]\ntext = \"t\"\nleft = \"hard\"\n"
-                          "right = \"hard\"\nmetric = \"{}\"\nrelation = \"{}\"\n",
+                          "right = \"hard\"\nmetric = \"{}\"\nrelation = \"{}\"\nstates = \"direction\"\n"
+                          "why = \"no number\"\n",
                           CANOPY_TEST_DATA, metric, relation));
     return load_experiment(file, TechniqueRegistry::instance());
 }
@@ -154,7 +155,7 @@ void check_every_metric_everywhere() {
     const auto csv_header = split(csv_lines[0], ','), csv_row = split(csv_lines[1], ',');
     REQUIRE(csv_header.size() == csv_row.size());
     const std::string markdown = markdown_table(run), console = console_table(run);
-    const std::string paper = paper_report(one_row_paper(""), run);
+    const std::string paper = paper_report(one_row_paper(""), run, RunToRunNoise{});
     const std::string list = metric_list();
 
     std::set<std::string> names, claims, columns;
@@ -191,7 +192,7 @@ void check_every_metric_everywhere() {
         const Experiment parsed = parse_claim(std::string(metric.claim), "better");
         CHECK(parsed.paper->claims.at(0).metric == metric.claim);
         CHECK(parsed.paper->claims.at(0).relation == (metric.better == Better::lower ? "less" : "greater"));
-        const auto verdicts = judge_claims(one_row_paper(std::string(metric.claim)), run);
+        const auto verdicts = judge_claims(one_row_paper(std::string(metric.claim)), run, RunToRunNoise{});
         CHECK(verdicts.at(0).outcome == "holds");
         CHECK(verdicts.at(0).because.find(fmt::format("{:.4g}", value)) != std::string::npos);
 
@@ -270,7 +271,7 @@ TEST_CASE("a metric added to the list reaches them too, with no other change") {
     const nlohmann::json json = nlohmann::json::parse(json_report(run));
     CHECK_FALSE(json.at("cases").at(0).at("image_error").contains("rmse"));
     CHECK(csv_report(run).find(",nonfinite_pixels,blade_coverage_error,psnr_db,device,") != std::string::npos);
-    CHECK(paper_report(one_row_paper(""), run).find("| blades | 101 |") != std::string::npos);
+    CHECK(paper_report(one_row_paper(""), run, RunToRunNoise{}).find("| blades | 101 |") != std::string::npos);
     // Undeclared group: no column where no case declares it, n/a beside a case that does, no verdict.
     RunRecord undeclared = run;
     undeclared.cases[0].image_error->columns = {};
@@ -279,7 +280,7 @@ TEST_CASE("a metric added to the list reaches them too, with no other change") {
     mixed.cases.insert(mixed.cases.begin(), run.cases[0]);
     mixed.cases[1].id += "_other";
     CHECK(markdown_table(mixed).find(" n/a |") != std::string::npos);
-    CHECK(judge_claims(one_row_paper("blade_coverage"), undeclared).at(0).outcome == "not measured");
+    CHECK(judge_claims(one_row_paper("blade_coverage"), undeclared, RunToRunNoise{}).at(0).outcome == "not measured");
     // A name not in the list is refused with the list's names.
     try {
         parse_claim("rmse", "less");

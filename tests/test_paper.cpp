@@ -48,19 +48,27 @@ text = "PCF 5 costs more than PCF 3"
 left = "PCF 5"
 right = "PCF 3"
 relation = "greater"
+states = "magnitude"
 [[paper.claim]]
 text = "PCF 3 costs about as much as hard shadows"
 left = "PCF 3"
 right = "hard"
 relation = "about"
 tolerance = 0.1
+tolerance_reason = "the test's own, to show a tolerance other than the table's"
+states = "magnitude"
 [[paper.claim]]
 text = "PCF 5 is closer to the truth in the penumbra than hard shadows"
 left = "PCF 5"
 right = "hard"
 metric = "penumbra_rmse"
 relation = "less"
+states = "direction"
+why = "no number"
 )";
+
+// The tests of one run's numbers alone: no spread between runs added to the intervals.
+const RunToRunNoise kNoNoise{};
 
 // A case of the one group (tiny 96x64) measured in the same rounds as the others, with these GPU
 // samples, one per round.
@@ -108,35 +116,35 @@ TEST_CASE("claims are judged per column from canopy's numbers") {
     RunRecord run;
     run.cases = {fake_case("shadow.hard", 0, constant(10.0), 0.06), fake_case("shadow.pcf", 3, constant(10.5), 0.04),
                  fake_case("shadow.pcf", 5, constant(20.0), 0.03)};
-    auto verdicts = judge_claims(*e.paper, run);
+    auto verdicts = judge_claims(*e.paper, run, kNoNoise);
     REQUIRE(verdicts.size() == 3);
     CHECK(verdicts[0].outcome == "holds");  // 20 > 10.5 in every round
     CHECK(verdicts[1].outcome == "holds");  // 10.5 / 10 within 10 % in every round
     CHECK(verdicts[2].outcome == "holds");  // 0.03 < 0.06
     run.cases[1].gpu_frame.samples_ms = constant(12.0);  // now 20 % above hard in every round
-    verdicts = judge_claims(*e.paper, run);
+    verdicts = judge_claims(*e.paper, run, kNoNoise);
     CHECK(verdicts[1].outcome == "does not hold");
     CHECK(verdicts[1].because.find("ratio 1.20 [1.20, 1.20]") != std::string::npos);
-    std::string report = paper_report(*e.paper, run);
+    std::string report = paper_report(*e.paper, run, kNoNoise);
     CHECK(report.find("# T1") != std::string::npos);
     CHECK(report.find("2.00 → **1.20** [1.20, 1.20]") != std::string::npos);  // paper 400 vs 200 fps: twice the time
 
     // A ratio of 1.1 at the median that swings between 0.95 and 1.25 from round to round: its
     // interval reaches both sides of the 10 % tolerance -> within noise.
     run.cases[1].gpu_frame.samples_ms = alternating(10.0, 0.95, 1.25);
-    verdicts = judge_claims(*e.paper, run);
+    verdicts = judge_claims(*e.paper, run, kNoNoise);
     CHECK(verdicts[1].outcome == "within noise");
     // PCF 5 at 1.05 x PCF 3 at the median, swinging between 0.8 and 1.3: within noise.
     std::vector<double> pcf5;
     for (size_t r = 0; r < 20; ++r) pcf5.push_back(run.cases[1].gpu_frame.samples_ms[r] * (r % 4 < 2 ? 0.8 : 1.3));
     run.cases[2].gpu_frame.samples_ms = pcf5;
-    verdicts = judge_claims(*e.paper, run);
+    verdicts = judge_claims(*e.paper, run, kNoNoise);
     CHECK(verdicts[0].outcome == "within noise");
     CHECK_FALSE(verdicts[0].holds());
     // The rows' medians alone (10.0 x 1.1 and 10.0 x 1.1 x 1.05) would say "holds": the verdict
     // comes from the paired rounds.
     run.cases.pop_back();  // no PCF 5 case: not measured, never "holds"
-    verdicts = judge_claims(*e.paper, run);
+    verdicts = judge_claims(*e.paper, run, kNoNoise);
     CHECK(verdicts[0].outcome == "not measured");
     CHECK_FALSE(verdicts[0].decided());
 }
@@ -146,7 +154,7 @@ TEST_CASE("a timing claim from too few samples says so instead of a verdict") {
     RunRecord run;
     run.cases = {fake_case("shadow.hard", 0, constant(10.0, 3), 0.06), fake_case("shadow.pcf", 3, constant(10.5, 3), 0.04),
                  fake_case("shadow.pcf", 5, constant(20.0, 3), 0.03)};  // --quick: 3 rounds
-    auto verdicts = judge_claims(*e.paper, run);
+    auto verdicts = judge_claims(*e.paper, run, kNoNoise);
     CHECK(verdicts[0].outcome == "too few samples");  // 20 > 10.5, but from 3 rounds each
     CHECK(verdicts[0].because.find("too few samples (3 < 6)") == 0);
     CHECK_FALSE(verdicts[0].decided());
@@ -159,13 +167,13 @@ TEST_CASE("a timing claim from too few samples says so instead of a verdict") {
     };
     set_rounds(0, kMinTimingSamples);
     set_rounds(2, kMinTimingSamples);
-    verdicts = judge_claims(*e.paper, run);
+    verdicts = judge_claims(*e.paper, run, kNoNoise);
     CHECK(verdicts[0].outcome == "too few samples");  // PCF 3 still has 3
     set_rounds(1, kMinTimingSamples);
-    verdicts = judge_claims(*e.paper, run);
+    verdicts = judge_claims(*e.paper, run, kNoNoise);
     CHECK(verdicts[0].outcome == "holds");
     CHECK(verdicts[1].outcome == "holds");
-    const std::string report = paper_report(*e.paper, run);
+    const std::string report = paper_report(*e.paper, run, kNoNoise);
     CHECK(report.find("too few samples") != std::string::npos);  // the note on the rule
 }
 
@@ -248,12 +256,14 @@ values = [5, 20]
 text = "the lit pass is less than the frame"
 left = "lit pass"
 right = "frame"
+states = "magnitude"
 [[paper.claim]]
 text = "the high view is faster than the ant's"
 left = "frame"
 right = "frame"
 left_column = "high"
 right_column = "ant"
+states = "magnitude"
 )";
     const Experiment e = load_experiment(write_experiment("pass.toml", paper), TechniqueRegistry::instance());
     REQUIRE(e.paper);
@@ -275,10 +285,10 @@ right_column = "ant"
     };
     RunRecord run;
     run.cases = {view("high", 10.0, 0.5, 0), view("ant", 80.0, 0.25, 1)};
-    const std::string report = paper_report(*e.paper, run);
+    const std::string report = paper_report(*e.paper, run, kNoNoise);
     CHECK(report.find("| lit pass | 0.50 → **0.50** [0.50, 0.50] | 0.25 → **0.25** [0.25, 0.25] |") != std::string::npos);
     CHECK(report.find("5 ms / 5.") != std::string::npos);  // raw: the pass's own median
-    const auto verdicts = judge_claims(*e.paper, run);
+    const auto verdicts = judge_claims(*e.paper, run, kNoNoise);
     REQUIRE(verdicts.size() == 2);
     CHECK(verdicts[0].outcome == "holds");
     CHECK(verdicts[1].outcome == "holds");
@@ -287,7 +297,7 @@ right_column = "ant"
     // A case without the pass: no number, not a verdict.
     run.cases[0].passes.clear();
     run.cases[1].passes.clear();
-    CHECK(judge_claims(*e.paper, run)[0].outcome == "not measured");
+    CHECK(judge_claims(*e.paper, run, kNoNoise)[0].outcome == "not measured");
 }
 
 TEST_CASE("a row may sum several passes round by round (Lemme's t_v over his three volume levels)") {
@@ -324,11 +334,11 @@ values = [6]
     }
     RunRecord run;
     run.cases = {c};
-    const std::string report = paper_report(*e.paper, run);
+    const std::string report = paper_report(*e.paper, run, kNoNoise);
     CHECK(report.find("| two passes | 0.60 → **0.60** [0.60, 0.60] |") != std::string::npos);
     // A case missing one of them: no number.
     run.cases[0].passes.pop_back();
-    CHECK(paper_report(*e.paper, run).find("| two passes | 0.60 → - |") != std::string::npos);
+    CHECK(paper_report(*e.paper, run, kNoNoise).find("| two passes | 0.60 → - |") != std::string::npos);
     // An empty list is refused, naming the row.
     const std::string list = "[\"depth\", \"lit\"]";
     const std::string empty = std::string(paper).replace(paper.find(list), list.size(), "[]");
@@ -339,7 +349,8 @@ values = [6]
 TEST_CASE("a claim across columns names both, and only both") {
     const auto error_of = [](const std::string& claim) {
         const std::string paper = "\n[paper]\nid = \"T3\"\ncolumns = [\"a\", \"b\"]\n[[paper.row]]\nlabel = \"x\"\n"
-                                  "technique = \"shadow.hard\"\n[[paper.claim]]\ntext = \"t\"\nleft = \"x\"\nright = \"x\"\n" +
+                                  "technique = \"shadow.hard\"\n[[paper.claim]]\ntext = \"t\"\nleft = \"x\"\nright = \"x\"\n"
+                                  "states = \"direction\"\nwhy = \"no number\"\n" +
                                   claim;
         try {
             load_experiment(write_experiment("cross.toml", paper), TechniqueRegistry::instance());
@@ -362,25 +373,28 @@ text = "PCF 3 costs less than 0.6 x PCF 5"
 left = "PCF 3"
 right = "PCF 5"
 factor = 0.6
+states = "magnitude"
 [[paper.claim]]
 text = "PCF 3's penumbra error is at most 0.015 above PCF 5's"
 left = "PCF 3"
 right = "PCF 5"
 metric = "penumbra_rmse"
 offset = 0.015
+states = "direction"
+why = "canopy target"
 )";
     const Experiment e = load_experiment(write_experiment("factor.toml", paper), TechniqueRegistry::instance());
     RunRecord run;
     run.cases = {fake_case("shadow.hard", 0, constant(10.0), 0.06), fake_case("shadow.pcf", 3, constant(10.5), 0.04),
                  fake_case("shadow.pcf", 5, constant(20.0), 0.03)};
-    auto verdicts = judge_claims(*e.paper, run);
+    auto verdicts = judge_claims(*e.paper, run, kNoNoise);
     REQUIRE(verdicts.size() == 5);
     CHECK(verdicts[3].outcome == "holds");  // 10.5 / 20 = 0.525 < 0.6
     CHECK(verdicts[3].because.find("below 0.6 x PCF 5's") != std::string::npos);
     CHECK(verdicts[4].outcome == "holds");  // 0.04 < 0.03 + 0.015
     run.cases[1].gpu_frame.samples_ms = constant(13.0);  // 0.65 > 0.6
     run.cases[1].image_error->penumbra_rmse = 0.05;       // 0.05 >= 0.045
-    verdicts = judge_claims(*e.paper, run);
+    verdicts = judge_claims(*e.paper, run, kNoNoise);
     CHECK(verdicts[3].outcome == "does not hold");
     CHECK(verdicts[4].outcome == "does not hold");
     // Offsets are for error metrics; factor and offset go with less or greater.
@@ -406,7 +420,7 @@ TEST_CASE("paper.json holds paper.md's numbers as data: ratios with intervals, t
     run.environment.git_commit = "0123abcd";
     run.environment.device.name = "llvmpipe (test)";
     run.cases = {fake_case("shadow.hard", 0, constant(10.0), 0.06), fake_case("shadow.pcf", 3, constant(12.0), 0.04)};
-    const nlohmann::json data = paper_data(*e.paper, run);
+    const nlohmann::json data = paper_data(*e.paper, run, kNoNoise);
     CHECK(data["id"] == "T1");
     // Where the numbers come from: the run's commit and device, and its whole environment.
     CHECK(data["commit"] == "0123abcd");
@@ -430,7 +444,7 @@ TEST_CASE("paper.json holds paper.md's numbers as data: ratios with intervals, t
     CHECK(pcf5["canopy_ms"][0].is_null());
     CHECK(pcf5["errors"]["penumbra_rmse"][0].is_null());
     // The claims, as judge_claims (and paper.md) has them.
-    const std::vector<ClaimVerdict> verdicts = judge_claims(*e.paper, run);
+    const std::vector<ClaimVerdict> verdicts = judge_claims(*e.paper, run, kNoNoise);
     REQUIRE(data["claims"].size() == verdicts.size());
     for (size_t i = 0; i < verdicts.size(); ++i) {
         CHECK(data["claims"][i]["outcome"] == verdicts[i].outcome);

@@ -26,6 +26,7 @@
 #include "report/stability_report.hpp"
 #include "core/graph_requirements.hpp"
 #include "graph/frame_graph.hpp"
+#include "config/paper_table_change.hpp"
 #include "run/environment.hpp"
 #include "run/heap_settings.hpp"
 #include "run/output_folder.hpp"
@@ -363,24 +364,41 @@ int export_gbench(const std::vector<std::string>& runs, bool force) {
     return kExitOk;
 }
 
-// paper.json of recorded paper runs, from their results.json and the experiment config they name
-// (which must still hash to what the run recorded).
-int export_paper(const std::vector<std::string>& runs, bool force) {
+// paper.md and paper.json of recorded paper runs, from their results.json and the experiment
+// config they name: unchanged since the run, or (--rejudge) changed only in its [paper] table,
+// shown against the run's commit's config (config/paper_table_change.hpp).
+int export_paper(const std::vector<std::string>& runs, bool force, bool rejudge) {
     for (const std::string& where : runs) {
         const RunRecord run = read_run(where);
         const fs::path dir = run_folder(where);
-        refuse_committed(dir, force, "add --force to write its paper.json (then review `git diff`)");
+        refuse_committed(dir, force, "add --force to write its paper.md and paper.json (then review `git diff`)");
         const fs::path config = recorded_config(run);
         const Experiment experiment = load_experiment(config, TechniqueRegistry::instance());
         if (!experiment.paper)
             throw ConfigError(config, 0, "this experiment has no [paper] table", "export-paper is for paper experiments");
-        if (experiment.config_hash != run.environment.config_hash)
-            throw ConfigError(config, 0,
-                              fmt::format("the config hashes to {}, the run recorded {}: it changed since the run",
-                                          experiment.config_hash, run.environment.config_hash),
-                              "rerun the experiment (scripts/reproduce --only ID), or check out the run's commit");
-        write_paper_data(dir / "paper.json", *experiment.paper, run);
-        fmt::print("{}\n", (dir / "paper.json").string());
+        if (experiment.config_hash != run.environment.config_hash) {
+            if (!rejudge)
+                throw ConfigError(config, 0,
+                                  fmt::format("the config hashes to {}, the run recorded {}: it changed since the run",
+                                              experiment.config_hash, run.environment.config_hash),
+                                  "rerun the experiment (scripts/reproduce --only ID), check out the run's commit, or, "
+                                  "when only its [paper] table changed, add --rejudge");
+            const std::optional<std::string> text_at_run = checkout_file_at(run.environment.git_commit, run.config_file);
+            if (!text_at_run)
+                throw ConfigError(config, 0,
+                                  fmt::format("the run's commit {} has no {} in this checkout",
+                                              run.environment.git_commit.substr(0, 9), run.config_file),
+                                  "rerun the experiment: --rejudge needs the config the run measured");
+            if (const std::string differs = paper_table_only_change(experiment, config, *text_at_run,
+                                                                     run.environment.config_hash);
+                !differs.empty())
+                throw ConfigError(config, 0, "cannot judge the run again: " + differs,
+                                  "rerun the experiment (scripts/reproduce --only ID)");
+        }
+        const RunToRunNoise noise = checkout_run_to_run_noise(run.environment.device.name);
+        write_paper_report(dir / "paper.md", *experiment.paper, run, noise);
+        write_paper_data(dir / "paper.json", *experiment.paper, run, noise);
+        fmt::print("{}\n{}\n", (dir / "paper.md").string(), (dir / "paper.json").string());
     }
     return kExitOk;
 }
@@ -609,8 +627,10 @@ int run(const RunCommand& command, const ReferenceOptions& reference_options) {
     }
     if (experiment.paper) {
         fmt::print("\n{} ({}): claims\n", experiment.paper->id, experiment.paper->source);
-        for (const ClaimVerdict& v : judge_claims(*experiment.paper, record))
-            fmt::print("  {:<15} {}\n", v.outcome, v.text);
+        for (const ClaimVerdict& v : judge_claims(*experiment.paper, record,
+                                                  checkout_run_to_run_noise(record.environment.device.name)))
+            fmt::print("  {:<15} {}{}\n", v.outcome, v.text,
+                       v.magnitude_stated ? fmt::format(" [magnitude: {}]", v.magnitude_outcome) : std::string());
     }
     if (!record.error.empty()) {
         fmt::print(stderr, "canopy: the run failed: {}\n  hint: fix the cause (free space, permissions), then run the "
@@ -866,12 +886,16 @@ int main(int argc, char** argv) {
                       "folder. Exit 1 when cases are missing (they are listed) or a case failed.");
 
     std::vector<std::string> paper_runs;
-    bool paper_force = false;
+    bool paper_force = false, paper_rejudge = false;
     CLI::App* export_paper_cmd = app.add_subcommand(
-        "export-paper", "Write paper.json (paper.md's numbers as data, for plots) of recorded paper runs from their "
-                        "results.json and the experiment config, which must be unchanged since the run.");
+        "export-paper", "Write paper.md and paper.json (its numbers as data, for plots) of recorded paper runs from "
+                        "their results.json and the experiment config, which must be unchanged since the run.");
     export_paper_cmd->add_option("runs", paper_runs, "run folders or their results.json")->required();
     export_paper_cmd->add_flag("--force", paper_force, "also into committed results (results/paper/)");
+    export_paper_cmd->add_flag("--rejudge", paper_rejudge,
+                               "judge the run's claims again under a [paper] table changed since the run: refused unless "
+                               "the config at the run's commit hashes to what the run recorded and differs from today's "
+                               "only in [paper]");
 
     CLI::App* list_cmd = app.add_subcommand("list", "List every technique with its parameters (type, range, default), then the population kinds technique families define for scenes.");
     std::string graph_technique;
@@ -928,7 +952,7 @@ int main(int argc, char** argv) {
         if (*compare_cmd) return compare(compare_command);
         if (*report_cmd) return report(report_command);
         if (*export_cmd) return export_gbench(export_runs, export_force);
-        if (*export_paper_cmd) return export_paper(paper_runs, paper_force);
+        if (*export_paper_cmd) return export_paper(paper_runs, paper_force, paper_rejudge);
         if (*plan_cmd) return plan(plan_config, plan_shards, plan_quick);
         if (*merge_cmd) return merge(merge_dirs, merge_out, merge_force);
         if (*bench_stability_cmd) return bench_stability(stability);

@@ -62,6 +62,8 @@ struct Experiment {
     std::optional<PaperComparison> paper;
     // Hash of the experiment file and every scene file it uses (hex), for the results record.
     std::string config_hash;
+    // The files hashed after the experiment's own bytes, in order (scenes, meshes, maps).
+    std::vector<std::filesystem::path> hashed_files;
 };
 
 // One thing to run: one scene, one resolution, one technique with concrete parameters.

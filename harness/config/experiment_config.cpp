@@ -283,12 +283,6 @@ void check_case_count(const Experiment& experiment) {
                                   largest > kMaxCases ? "more than " : "", std::min(largest, kMaxCases)));
 }
 
-std::string hash_files(const std::string& experiment_bytes, const std::vector<std::filesystem::path>& files) {
-    uint64_t hash = fnv1a_64(experiment_bytes);
-    for (const std::filesystem::path& file : files) hash = fnv1a_64(read_config_file(file), hash);
-    return fmt::format("{:016x}", hash);
-}
-
 // [reference]: whether and how precisely to ray-trace the ground truth.
 void read_reference(TomlReader& section, Experiment& experiment) {
     experiment.reference_enabled = section.get_bool("enabled", experiment.reference_enabled);
@@ -321,6 +315,13 @@ void read_reference(TomlReader& section, Experiment& experiment) {
 }
 
 }  // namespace
+
+std::string hash_files(const std::string& experiment_bytes, const std::vector<std::filesystem::path>& files) {
+    uint64_t hash = fnv1a_64(experiment_bytes);
+    for (const std::filesystem::path& file : files) hash = fnv1a_64(read_config_file(file), hash);
+    return fmt::format("{:016x}", hash);
+}
+
 
 const char* to_string(BaselinePairing pairing) { return pairing == BaselinePairing::round ? "round" : "adjacent"; }
 
@@ -432,6 +433,7 @@ Experiment load_experiment(const std::filesystem::path& file, const TechniqueReg
         }
     }
     experiment.config_hash = hash_files(text, hashed_files);
+    experiment.hashed_files = std::move(hashed_files);
     return experiment;
 }
 

@@ -23,5 +23,7 @@ std::vector<Case> expand_cases(const Experiment& experiment, const TechniqueRegi
 // 64-bit FNV-1a, continuing from `state` so several files can be hashed as one stream.
 inline constexpr uint64_t kFnv1aOffsetBasis = 0xcbf29ce484222325ull;
 uint64_t fnv1a_64(std::string_view bytes, uint64_t state = kFnv1aOffsetBasis);
+// Experiment::config_hash: the experiment file's bytes, then each file's (hex).
+std::string hash_files(const std::string& experiment_bytes, const std::vector<std::filesystem::path>& files);
 
 }  // namespace canopy

@@ -6,6 +6,7 @@
 #include "core/param.hpp"
 #include "scene/scene.hpp"
 
+#include <limits>
 #include <map>
 #include <optional>
 #include <string>
@@ -35,7 +36,11 @@ inline std::string pass_label(const PaperRow& row) {
     return label;
 }
 
-// "left relation right" on a metric, for every column where both rows have cases.
+// What a claim states of the paper: its number (checked as a number) or only a direction.
+enum class ClaimStates { magnitude, direction };
+
+// "left relation right" on a metric, for every column where both rows have cases; with
+// `states = magnitude` also left/right against the paper's own ratio (config/claim_rules.hpp).
 struct PaperClaim {
     std::string text;        // the paper's claim in words
     std::string left, right; // row labels
@@ -43,7 +48,7 @@ struct PaperClaim {
     // `canopy metrics`).
     std::string metric = "time";
     std::string relation = "less";  // less | greater | about ("better" in the config is read as less or greater)
-    double tolerance = 0.15; // about: |left/right - 1| <= tolerance
+    double tolerance = 0.15; // about: |left/right - 1| <= tolerance (the rules' table, or tolerance_reason)
     // less and greater compare left with factor x right + offset (e.g. "costs at most a quarter":
     // factor 0.25; "FLIP at most 0.02 above": offset 0.02, error metrics only).
     double factor = 1.0, offset = 0.0;
@@ -51,6 +56,17 @@ struct PaperClaim {
     // Left measured in one column and right in another (e.g. two views of a scene, which are
     // measured apart: the ratio is not paired); both or neither.
     std::string left_column, right_column;
+
+    ClaimStates states = ClaimStates::direction;
+    std::string why;         // direction: a key of direction_reasons()
+    // magnitude: the paper's left/right, given where its table lacks the rows' values (NaN: taken
+    // from the table, column by column), and how far canopy's may lie from it (1 ± t).
+    double ratio = std::numeric_limits<double>::quiet_NaN();
+    double ratio_tolerance = 0.25;
+    std::string tolerance_reason;  // why a tolerance differs from the rules' table ("" = it does not)
+    // Why canopy does not test it (a claim about what happens from frame to frame, judged on still
+    // images); "" = tested.
+    std::string untested;
     SourceLocation where;
 };
 

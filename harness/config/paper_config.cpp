@@ -1,5 +1,6 @@
 #include "config/paper_config.hpp"
 
+#include "config/claim_rules.hpp"
 #include "metrics/metric_registry.hpp"
 
 #include <fmt/format.h>
@@ -71,6 +72,126 @@ PaperRow read_row(TomlReader& r, const TechniqueRegistry& registry, size_t colum
     return row;
 }
 
+// The paper's left/right time in one column pair from its table, NaN where a row has no number.
+double table_ratio(const PaperComparison& paper, const PaperRow& left, const PaperRow& right, size_t left_col,
+                   size_t right_col) {
+    if (left.values.empty() || right.values.empty()) return std::numeric_limits<double>::quiet_NaN();
+    const double a = left.values[left_col], b = right.values[right_col];
+    return paper.unit == "fps" ? b / a : a / b;
+}
+
+// The column pairs (left's, right's) a claim judges: each column with itself, or the one pair
+// across columns.
+std::vector<std::pair<size_t, size_t>> judged_columns(const PaperComparison& paper, const PaperClaim& claim) {
+    const auto index = [&](const std::string& label) {
+        return size_t(std::find(paper.columns.begin(), paper.columns.end(), label) - paper.columns.begin());
+    };
+    std::vector<std::pair<size_t, size_t>> pairs;
+    if (!claim.left_column.empty()) pairs.emplace_back(index(claim.left_column), index(claim.right_column));
+    else
+        for (size_t col = 0; col < paper.columns.size(); ++col)
+            if (claim.column.empty() || paper.columns[col] == claim.column) pairs.emplace_back(col, col);
+    return pairs;
+}
+
+const PaperRow& row_labelled(const PaperComparison& paper, const std::string& label) {
+    return *std::find_if(paper.rows.begin(), paper.rows.end(), [&](const PaperRow& r) { return r.label == label; });
+}
+
+std::string reason_list() {
+    std::string list;
+    for (const DirectionReason& reason : direction_reasons())
+        list += fmt::format("{}\"{}\" ({})", list.empty() ? "" : ", ", reason.key, reason.meaning);
+    return list;
+}
+
+// What the claim states of the paper (claim_rules.hpp): its number, checked as a number, or a
+// direction with its reason; a claim about what happens in time is tested in time or says why
+// not; a tolerance other than the rules' says why.
+void read_claim_states(TomlReader& r, const PaperComparison& paper, PaperClaim& claim) {
+    const bool timing = claim.metric == kTimeClaim;
+    if (!r.has("states"))
+        throw r.error("states", "a claim must say whether it checks the paper's number or only a direction",
+                      "states = \"magnitude\" (the paper's ratio from its table, or ratio = ...), or states = "
+                      "\"direction\" with why = one of: " + reason_list());
+    claim.states = one_of(r, "states", "direction", {"magnitude", "direction"}) == "magnitude" ? ClaimStates::magnitude
+                                                                                                 : ClaimStates::direction;
+    const PaperRow& left = row_labelled(paper, claim.left);
+    const PaperRow& right = row_labelled(paper, claim.right);
+    bool table_has_ratio = timing;
+    std::string table_example;
+    for (const auto& [l, rc] : judged_columns(paper, claim)) {
+        const double ratio = table_ratio(paper, left, right, l, rc);
+        table_has_ratio = table_has_ratio && std::isfinite(ratio) && ratio > 0;
+        if (table_example.empty() && std::isfinite(ratio))
+            table_example = fmt::format("{:.3g} in column {}", ratio, paper.columns[l]);
+    }
+    if (claim.states == ClaimStates::direction) {
+        claim.why = r.get_string("why", "");
+        if (claim.why.empty())
+            throw r.error("why", "a claim that checks only a direction must say why", "why = one of: " + reason_list());
+        if (!find_direction_reason(claim.why)) {
+            std::vector<std::string> keys;
+            for (const DirectionReason& reason : direction_reasons()) keys.emplace_back(reason.key);
+            const std::string near = closest_match(claim.why, keys);
+            throw r.error("why", fmt::format("'{}' is not one of the reasons a claim may check only a direction", claim.why),
+                          (near.empty() ? "" : fmt::format("did you mean '{}'? ", near)) + "use one of: " + reason_list());
+        }
+        if (table_has_ratio)
+            throw r.error("states", fmt::format("the paper's table gives this claim's number (left/right = {}): a "
+                                                "direction check would not test it",
+                                                table_example),
+                          "states = \"magnitude\" (the target is taken from the table, column by column)");
+        if (const auto number = quoted_measurement(claim.text))
+            throw r.error("states", fmt::format("the claim's text quotes '{}', which a direction check does not test", *number),
+                          "check it as a number (states = \"magnitude\", with ratio = the paper's left/right where its "
+                          "table has none), or leave the number out of the text (paper.md prints canopy's)");
+        if (r.has("ratio")) throw r.error("ratio", "'ratio' is the paper's number: it goes with states = \"magnitude\"", "remove ratio");
+        if (r.has("ratio_tolerance"))
+            throw r.error("ratio_tolerance", "'ratio_tolerance' goes with states = \"magnitude\"", "remove ratio_tolerance");
+    } else {
+        if (r.has("why")) throw r.error("why", "'why' says why a claim checks only a direction", "remove why, or states = \"direction\"");
+        if (r.has("ratio")) {
+            claim.ratio = r.get_float("ratio", 0.0);
+            if (!(claim.ratio > 0)) throw r.error("ratio", "'ratio' must be positive: the paper's left/right", "ratio = 0.155");
+            if (table_has_ratio)
+                throw r.error("ratio", fmt::format("the paper's table gives this ratio ({}): it is taken from there", table_example),
+                              "remove ratio");
+        } else if (!table_has_ratio) {
+            throw r.error("ratio",
+                          timing ? "the paper's table has no number for one of the rows in a column this claim judges: "
+                                   "give the paper's ratio"
+                                 : "the paper's table holds times: an error claim's magnitude needs the paper's ratio",
+                          "ratio = 0.155 (left/right, as the paper states it), or states = \"direction\" with why");
+        }
+        const double rule = default_tolerance(timing ? ToleranceUse::time_magnitude : ToleranceUse::error_magnitude);
+        claim.ratio_tolerance = r.get_float("ratio_tolerance", rule);
+        if (!(claim.ratio_tolerance > 0 && claim.ratio_tolerance < 1))
+            throw r.error("ratio_tolerance", "'ratio_tolerance' must lie in (0, 1)", "ratio_tolerance = 0.25");
+    }
+    claim.tolerance_reason = r.get_string("tolerance_reason", "");
+    const bool about_differs = claim.relation == "about" &&
+                               claim.tolerance != default_tolerance(timing ? ToleranceUse::time_about : ToleranceUse::error_about);
+    const bool magnitude_differs =
+        claim.states == ClaimStates::magnitude &&
+        claim.ratio_tolerance != default_tolerance(timing ? ToleranceUse::time_magnitude : ToleranceUse::error_magnitude);
+    if ((about_differs || magnitude_differs) && claim.tolerance_reason.empty())
+        throw r.error(about_differs ? "tolerance" : "ratio_tolerance",
+                      "a tolerance other than the rules' table (configs/README.md, \"Claims\") must say why, before the run",
+                      "tolerance_reason = \"...\", or remove the tolerance to take the table's");
+    if (!about_differs && !magnitude_differs && !claim.tolerance_reason.empty())
+        throw r.error("tolerance_reason", "'tolerance_reason' explains a tolerance other than the rules', and none differs",
+                      "remove tolerance_reason");
+    claim.untested = r.get_string("untested", "");
+    if (claim.untested.empty() && claim.metric != "popping")
+        if (const auto event = quoted_event_in_time(claim.text))
+            throw r.error("text",
+                          fmt::format("the claim speaks of '{}', which happens from frame to frame: a still image cannot "
+                                      "test it",
+                                      *event),
+                          "measure it along a [camera_path] (metric = \"popping\"), or say why canopy does not: untested = \"...\"");
+}
+
 }  // namespace
 
 PaperComparison read_paper(TomlReader& section, const TechniqueRegistry& registry) {
@@ -113,8 +234,13 @@ PaperComparison read_paper(TomlReader& section, const TechniqueRegistry& registr
         claim.metric = one_of(r, "metric", std::string(kTimeClaim), claim_metric_names());
         claim.relation = one_of(r, "relation", "less", kRelations);
         if (claim.relation == "better") claim.relation = claim_metric_better(claim.metric) == Better::lower ? "less" : "greater";
-        claim.tolerance = r.get_float("tolerance", claim.tolerance);
+        const bool timing = claim.metric == kTimeClaim;
+        const double about_rule = default_tolerance(timing ? ToleranceUse::time_about : ToleranceUse::error_about);
+        claim.tolerance = r.get_float("tolerance", about_rule);
         if (claim.tolerance < 0) throw r.error("tolerance", "'tolerance' must not be negative", "tolerance = 0.15");
+        if (r.has("tolerance") && claim.relation != "about")
+            throw r.error("tolerance", "'tolerance' goes with relation = \"about\"",
+                          "the magnitude's tolerance is ratio_tolerance; less and greater take factor or offset");
         claim.factor = r.get_float("factor", claim.factor);
         claim.offset = r.get_float("offset", claim.offset);
         if (!(claim.factor > 0)) throw r.error("factor", "'factor' must be positive", "factor = 0.25");
@@ -144,6 +270,7 @@ PaperComparison read_paper(TomlReader& section, const TechniqueRegistry& registr
         if (!claim.left_column.empty() && !claim.column.empty())
             throw r.error("column", "a claim across columns takes left_column and right_column, not column",
                           "remove column");
+        read_claim_states(r, paper, claim);
         r.finish();
         paper.claims.push_back(std::move(claim));
     }

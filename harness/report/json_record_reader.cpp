@@ -159,6 +159,11 @@ CaseResult read_case(const json& j) {
     c.shadow_sampler = j.at("shadow_sampler").get<std::string>();
     c.nonfinite_pixels = j.at("nonfinite_pixels").get<long long>();
     if (!j.at("image_error").is_null()) c.image_error = read_error(j.at("image_error"));
+    if (j.contains("reference_replicates"))  // absent in results.json written before the reference's noise was measured
+        for (const auto& [name, values] : j.at("reference_replicates").items())
+            for (const json& v : values)
+                c.reference_replicates[name].push_back(v.is_null() ? std::numeric_limits<double>::quiet_NaN()
+                                                                   : v.get<double>());
     const json& images = j.at("images");
     c.image_exr = images.at("exr").get<std::string>();
     c.image_png = images.at("png").get<std::string>();

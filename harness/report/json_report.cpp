@@ -140,6 +140,17 @@ nlohmann::json counters_json(const std::vector<std::pair<std::string, double>>& 
     return out;
 }
 
+// Non-finite replicate values are written null, as the metrics are.
+nlohmann::json replicates_json(const std::map<std::string, std::vector<double>>& replicates) {
+    nlohmann::json j = nlohmann::json::object();
+    for (const auto& [name, values] : replicates) {
+        nlohmann::json list = nlohmann::json::array();
+        for (double v : values) list.push_back(std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr));
+        j[name] = list;
+    }
+    return j;
+}
+
 nlohmann::json case_json(const CaseResult& c) {
     nlohmann::json params = nlohmann::json::object();
     for (const auto& [name, value] : c.params) params[name] = param_json(value);
@@ -182,6 +193,7 @@ nlohmann::json case_json(const CaseResult& c) {
             {"shadow_sampler", c.shadow_sampler},
             {"nonfinite_pixels", c.nonfinite_pixels},
             {"image_error", c.image_error ? error_json(*c.image_error) : nlohmann::json(nullptr)},
+            {"reference_replicates", replicates_json(c.reference_replicates)},
             {"images", {{"exr", c.image_exr}, {"png", c.image_png}, {"visibility_exr", c.visibility_exr},
                         {"error_map_png", c.error_map_png}, {"flip_map_png", c.flip_map_png}}}};
 }

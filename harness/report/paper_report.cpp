@@ -1,6 +1,9 @@
 #include "report/paper_report.hpp"
 
+#include "config/claim_rules.hpp"
+#include "core/registry.hpp"
 #include "metrics/metric_registry.hpp"
+#include "metrics/reference_noise.hpp"
 #include "report/atomic_file.hpp"
 #include "report/text_table.hpp"
 #include "run/case_ratio.hpp"
@@ -9,6 +12,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <functional>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -130,15 +134,109 @@ std::string table(const std::vector<std::string>& header, const std::vector<std:
 
 }  // namespace
 
-std::vector<ClaimVerdict> judge_claims(const PaperComparison& paper, const RunRecord& run) {
+Estimate with_run_to_run_noise(const Estimate& e, double sigma) {
+    if (!(sigma > 0) || !(e.value > 0) || !(e.ci.low > 0) || !(e.ci.high > 0)) return e;
+    // On the log-ratio, each side of the run's own interval and 1.96 sigma added in quadrature:
+    // ±1.96 √(se_within² + σ_run²) where the run's interval is symmetric, its shape kept where not.
+    const double centre = std::log(e.value), spread = 1.96 * sigma;
+    const double below = std::hypot(centre - std::log(e.ci.low), spread);
+    const double above = std::hypot(std::log(e.ci.high) - centre, spread);
+    Estimate wide = e;
+    wide.ci = {std::exp(centre - below), std::exp(centre + above)};
+    return wide;
+}
+
+namespace {
+
+// "holds" / "does not hold" / "within noise" of an interval against [low, high] (an inside claim)
+// or against one boundary (a side claim).
+struct Tally {
+    int measured = 0, holding = 0, failing = 0;
+    void add(bool holds, bool fails) {
+        ++measured;
+        holding += holds ? 1 : 0;
+        failing += fails ? 1 : 0;
+    }
+    std::string outcome() const {
+        if (measured == 0) return "not measured";
+        if (failing > 0) return "does not hold";
+        if (holding == measured) return "holds";
+        return "within noise";
+    }
+};
+
+// Where two rows a speed claim compares are drawn differently (two cases), how far apart their
+// errors lie on the axes their families judge quality by, beyond each metric's compare tolerance:
+// "FLIP 0.21 vs 0.09; coverage lost or gained 71 % vs 0.2 %". "" when they agree.
+std::string quality_gap(const CaseResult& l, const CaseResult& r) {
+    if (&l == &r || !l.image_error || !r.image_error) return "";
+    std::vector<std::string> names;
+    for (const CaseResult* c : {&l, &r})
+        if (const Technique* technique = TechniqueRegistry::instance().find(c->technique))
+            for (const std::string& m : technique->pareto_errors())
+                if (std::find(names.begin(), names.end(), m) == names.end()) names.push_back(m);
+    // FLIP over the whole image, which every family reports, and the coverage lost or gained where
+    // the family declares coverage.
+    for (const char* shared : {"flip_mean", "coverage_total_error"})
+        if (std::find(names.begin(), names.end(), shared) == names.end()) names.push_back(shared);
+    std::string gaps;
+    for (const std::string& name : names) {
+        const MetricInfo* metric = find_metric(name);
+        if (!metric) continue;
+        const double a = metric->meaningful_value(*l.image_error), b = metric->meaningful_value(*r.image_error);
+        if (!std::isfinite(a) || !std::isfinite(b)) continue;
+        if (std::abs(a - b) <= metric->tolerance.absolute + metric->tolerance.relative * std::max(std::abs(a), std::abs(b)))
+            continue;
+        const auto shown = [&](double v) {
+            return metric->percent ? fmt::format("{:.3g} %", 100.0 * v) : fmt::format("{:.3g}", v);
+        };
+        gaps += fmt::format("{}{} {} vs {}", gaps.empty() ? "" : "; ", metric->column, shown(a), shown(b));
+    }
+    return gaps;
+}
+
+// The spread of a claim's margin over the reference's noisy replicates, left's and right's taken
+// replicate by replicate (the same perturbation for both); NaN when either case lacks them.
+double reference_noise_of_margin(const std::string& claim_metric, const CaseResult& l, const CaseResult& r,
+                                 const std::function<double(double, double)>& margin) {
+    const MetricInfo* metric = find_claim_metric(claim_metric);
+    if (!metric) return kMissing;
+    const auto a = l.reference_replicates.find(std::string(metric->name));
+    const auto b = r.reference_replicates.find(std::string(metric->name));
+    if (a == l.reference_replicates.end() || b == r.reference_replicates.end() || a->second.size() != b->second.size())
+        return kMissing;
+    std::vector<double> margins;
+    for (size_t k = 0; k < a->second.size(); ++k) margins.push_back(margin(a->second[k], b->second[k]));
+    return replicate_spread(margins);
+}
+
+std::string direction_reason(const PaperClaim& claim) {
+    const DirectionReason* reason = find_direction_reason(claim.why);
+    return reason ? std::string(reason->meaning) : claim.why;
+}
+
+}  // namespace
+
+std::vector<ClaimVerdict> judge_claims(const PaperComparison& paper, const RunRecord& run, const RunToRunNoise& noise) {
     std::vector<ClaimVerdict> verdicts;
+    const bool cpu_rasteriser = run.environment.device.is_lavapipe();
     for (const PaperClaim& claim : paper.claims) {
         ClaimVerdict v;
         v.text = claim.text;
+        v.magnitude_stated = claim.states == ClaimStates::magnitude;
+        if (!v.magnitude_stated) v.direction_only = direction_reason(claim);
+        if (!claim.untested.empty()) {
+            v.outcome = "not tested by canopy";
+            v.because = claim.untested;
+            if (v.magnitude_stated) v.magnitude_outcome = "not tested by canopy";
+            verdicts.push_back(v);
+            continue;
+        }
         const PaperRow* left = row_named(paper, claim.left);
         const PaperRow* right = row_named(paper, claim.right);
-        std::string numbers;
-        int measured = 0, holding = 0, failing = 0;
+        std::string numbers, magnitudes, gaps;
+        Tally direction, magnitude;
+        bool noise_unknown = false;
         size_t fewest_samples = std::numeric_limits<size_t>::max();
         const bool timing = claim.metric == kTimeClaim;
         const auto column_index = [&](const std::string& label) {
@@ -151,81 +249,109 @@ std::vector<ClaimVerdict> judge_claims(const PaperComparison& paper, const RunRe
         else
             for (size_t col = 0; col < paper.columns.size(); ++col)
                 if (claim.column.empty() || paper.columns[col] == claim.column) pairs.emplace_back(col, col);
+        const double t = claim.ratio_tolerance;
         for (const auto& [col, right_col] : pairs) {
             const CaseResult* l = find_case(paper, run, *left, col);
             const CaseResult* r = find_case(paper, run, *right, right_col);
             if (!l || !r) continue;
             const std::string where = col == right_col ? paper.columns[col]
                                                        : paper.columns[col] + " vs " + paper.columns[right_col];
-            bool holds = false, fails = false;
+            // The paper's left/right in this column pair: the claim's, or its table's.
+            const double target = std::isfinite(claim.ratio)
+                                      ? claim.ratio
+                                      : paper_time(paper, *left, col) / paper_time(paper, *right, right_col);
             if (timing) {
-                // left / right with its 95 % interval: a claim is decided only when the interval
-                // lies wholly on one side.
+                // left / right with its 95 % interval widened by the run-to-run spread: a claim is
+                // decided only when the interval lies wholly on one side.
                 const CaseRatio ratio = row_ratio(*left, *l, *right, *r);
-                const Estimate& e = ratio.estimate;
-                if (std::isnan(e.value)) continue;
-                ++measured;
+                if (std::isnan(ratio.estimate.value)) continue;
+                const Estimate e = with_run_to_run_noise(ratio.estimate, noise.sigma);
                 fewest_samples = std::min({fewest_samples, row_series(*left, *l)->samples_ms.size(),
                                            row_series(*right, *r)->samples_ms.size()});
-                if (claim.relation == "less") {
-                    holds = e.ci.high < claim.factor;
-                    fails = e.ci.low > claim.factor;
-                } else if (claim.relation == "greater") {
-                    holds = e.ci.low > claim.factor;
-                    fails = e.ci.high < claim.factor;
-                } else {
-                    holds = e.ci.low >= 1.0 - claim.tolerance && e.ci.high <= 1.0 + claim.tolerance;
-                    fails = e.ci.low > 1.0 + claim.tolerance || e.ci.high < 1.0 - claim.tolerance;
-                }
+                if (claim.relation == "less") direction.add(e.ci.high < claim.factor, e.ci.low > claim.factor);
+                else if (claim.relation == "greater") direction.add(e.ci.low > claim.factor, e.ci.high < claim.factor);
+                else
+                    direction.add(e.ci.low >= 1.0 - claim.tolerance && e.ci.high <= 1.0 + claim.tolerance,
+                                  e.ci.low > 1.0 + claim.tolerance || e.ci.high < 1.0 - claim.tolerance);
                 numbers += fmt::format("{}{}: {} vs {} ms, ratio {}{}", numbers.empty() ? "" : "; ", where,
                                        number(metric_of(*left, *l, kTimeClaim), "{:.4g}"),
                                        number(metric_of(*right, *r, kTimeClaim), "{:.4g}"), ratio_cell(e),
                                        ratio.pairing == RatioPairing::unpaired ? " (not paired: other groups)" : "");
+                if (v.magnitude_stated && std::isfinite(target) && target > 0) {
+                    const double k = e.value / target, k_low = e.ci.low / target, k_high = e.ci.high / target;
+                    magnitude.add(k_low >= 1.0 - t && k_high <= 1.0 + t, k_low > 1.0 + t || k_high < 1.0 - t);
+                    magnitudes += fmt::format("{}{}: ×{} [{}, {}] of the paper's {:.3g}", magnitudes.empty() ? "" : "; ",
+                                              where, ratio_number(k), ratio_number(k_low), ratio_number(k_high), target);
+                }
+                if (const std::string gap = quality_gap(*l, *r); !gap.empty())
+                    gaps += fmt::format("{}{}: {}", gaps.empty() ? "" : "; ", where, gap);
             } else {
                 const double a = metric_of(*left, *l, claim.metric), b = metric_of(*right, *r, claim.metric);
                 if (std::isnan(a) || std::isnan(b)) continue;
-                ++measured;
-                // Renders are deterministic: no noise band.
-                const double bound = claim.factor * b + claim.offset;
-                if (claim.relation == "less") {
-                    holds = a < bound;
-                    fails = a >= bound;
-                } else if (claim.relation == "greater") {
-                    holds = a > bound;
-                    fails = a <= bound;
+                // Renders are deterministic; the reference is not. The margin by which the relation
+                // holds (> 0) or fails (< 0), and the same against each of the reference's noisy
+                // replicates (metrics/reference_noise.hpp): a margin inside 1.96 times their
+                // spread decides nothing.
+                const auto margin = [&](double left_value, double right_value) {
+                    const double bound = claim.factor * right_value + claim.offset;
+                    if (claim.relation == "less") return bound - left_value;
+                    if (claim.relation == "greater") return left_value - bound;
+                    return claim.tolerance * std::abs(right_value) - std::abs(left_value - right_value);
+                };
+                const double m = margin(a, b);
+                const double noise = reference_noise_of_margin(claim.metric, *l, *r, margin);
+                noise_unknown = noise_unknown || std::isnan(noise);
+                if (std::isnan(noise) || noise == 0.0) {
+                    // Exact: "about" holds on its boundary, less and greater fail there.
+                    if (claim.relation == "about") direction.add(m >= 0, m < 0);
+                    else direction.add(m > 0, m <= 0);
                 } else {
-                    const double allowed = claim.tolerance * std::abs(b);
-                    holds = std::abs(a - b) <= allowed;
-                    fails = !holds;
+                    direction.add(m > 1.96 * noise, m < -1.96 * noise);
                 }
-                numbers += fmt::format("{}{}: {} vs {}{}", numbers.empty() ? "" : "; ", where,
+                numbers += fmt::format("{}{}: {} vs {}{}{}", numbers.empty() ? "" : "; ", where,
                                        number(a, "{:.4g}"), number(b, "{:.4g}"),
-                                       claim.relation == "about" && b != 0.0 ? fmt::format(" (ratio {:.2f})", a / b) : "");
+                                       claim.relation == "about" && b != 0.0 ? fmt::format(" (ratio {:.2f})", a / b) : "",
+                                       std::isnan(noise) ? std::string()
+                                                         : fmt::format(", margin {:.3g} against the reference's noise ±{:.2g}",
+                                                                       m, 1.96 * noise));
+                if (v.magnitude_stated && b != 0.0 && std::isfinite(target)) {
+                    const double k = (a / b) / target;
+                    magnitude.add(std::abs(k - 1.0) <= t, std::abs(k - 1.0) > t);
+                    magnitudes += fmt::format("{}{}: ×{} of the paper's {:.3g}", magnitudes.empty() ? "" : "; ", where,
+                                              ratio_number(k), target);
+                }
             }
-            holding += holds ? 1 : 0;
-            failing += fails ? 1 : 0;
         }
-        const bool too_few = measured > 0 && fewest_samples < kMinTimingSamples;
-        if (measured == 0) v.outcome = "not measured";
-        else if (too_few) v.outcome = "too few samples";
-        else if (failing > 0) v.outcome = "does not hold";
-        else if (holding == measured) v.outcome = "holds";
-        else v.outcome = "within noise";
+        const bool too_few = direction.measured > 0 && fewest_samples < kMinTimingSamples;
+        v.outcome = too_few ? "too few samples" : direction.outcome();
         const std::string relation = claim.relation == "about" ? fmt::format("within {:.0f} % of", 100.0 * claim.tolerance)
                                      : claim.relation == "less" ? "below" : "above";
-        const std::string target = fmt::format("{}{}'s{}", claim.factor != 1.0 ? fmt::format("{:g} x ", claim.factor) : "",
-                                               claim.right, claim.offset != 0.0 ? fmt::format(" {:+g}", claim.offset) : "");
-        v.because = measured ? fmt::format("{} of {} is {} {}: {}", claim.metric, claim.left, relation, target, numbers)
-                             : "no measured case for one of the rows";
+        const std::string bound = fmt::format("{}{}'s{}", claim.factor != 1.0 ? fmt::format("{:g} x ", claim.factor) : "",
+                                              claim.right, claim.offset != 0.0 ? fmt::format(" {:+g}", claim.offset) : "");
+        v.because = direction.measured ? fmt::format("{} of {} is {} {}: {}", claim.metric, claim.left, relation, bound, numbers)
+                                       : "no measured case for one of the rows";
         if (too_few)
             v.because = fmt::format("too few samples ({} < {}) to judge a timing claim; {}", fewest_samples,
                                     kMinTimingSamples, v.because);
+        if (v.magnitude_stated) {
+            v.magnitude = magnitudes;
+            v.magnitude_outcome = too_few ? "too few samples" : magnitude.outcome();
+            // A CPU rasteriser is not the paper's class of hardware: its ratios say how the
+            // techniques' costs fall there, not whether the paper's numbers reproduce.
+            if (timing && cpu_rasteriser && magnitude.measured > 0) v.magnitude_outcome = "not judged on a CPU rasteriser";
+            if (magnitude.measured > 0)
+                v.magnitude += fmt::format(" (holds inside 1 ± {:g})", t);
+        }
+        if (!gaps.empty()) v.unequal_quality = "unequal quality: " + gaps;
+        if (noise_unknown && direction.measured > 0)
+            v.because += "; the reference's noise was not measured by this run (made before canopy measured it): "
+                         "the verdict does not account for it";
         verdicts.push_back(v);
     }
     return verdicts;
 }
 
-std::string paper_report(const PaperComparison& paper, const RunRecord& run) {
+std::string paper_report(const PaperComparison& paper, const RunRecord& run, const RunToRunNoise& noise) {
     std::string out = fmt::format("# {} — {}\n\n", paper.id, paper.title);
     if (!paper.source.empty()) out += fmt::format("Source: {}.\n\n", paper.source);
     const Environment& e = run.environment;
@@ -251,7 +377,7 @@ std::string paper_report(const PaperComparison& paper, const RunRecord& run) {
                 const CaseResult* mine_base = find_case(paper, run, *base, col);
                 std::string canopy_ratio = "-";
                 if (mine && mine_base) {
-                    const Estimate e = row_ratio(row, *mine, *base, *mine_base).estimate;
+                    const Estimate e = with_run_to_run_noise(row_ratio(row, *mine, *base, *mine_base).estimate, noise.sigma);
                     if (!std::isnan(e.value))
                         canopy_ratio = fmt::format("**{}** [{}, {}]", ratio_number(e.value), ratio_number(e.ci.low),
                                                    ratio_number(e.ci.high));
@@ -344,23 +470,47 @@ std::string paper_report(const PaperComparison& paper, const RunRecord& run) {
         }
     }
 
-    const auto verdicts = judge_claims(paper, run);
+    const auto verdicts = judge_claims(paper, run, noise);
     if (!verdicts.empty()) {
         out += "## Claims\n\n";
-        for (const ClaimVerdict& v : verdicts) out += fmt::format("- **{}** — {} ({})\n", v.outcome, v.text, v.because);
+        bool magnitude_not_judged = false;
+        for (const ClaimVerdict& v : verdicts) {
+            out += fmt::format("- **{}** — {}\n  - {}\n", v.outcome, v.text, v.because);
+            if (v.magnitude_stated)
+                out += fmt::format("  - the paper's number: **{}**{}\n", v.magnitude_outcome,
+                                   v.magnitude.empty() ? "" : " — " + v.magnitude);
+            else
+                out += fmt::format("  - a direction only: {}\n", v.direction_only);
+            if (!v.unequal_quality.empty()) out += "  - **" + v.unequal_quality + "**\n";
+            magnitude_not_judged = magnitude_not_judged || v.magnitude_outcome == "not judged on a CPU rasteriser";
+        }
         out += fmt::format("\nA timing claim compares the two rows' time ratio, paired round by round, and holds or "
                            "fails only when its 95 % interval lies wholly on one side (for \"about\": wholly inside "
-                           "or outside the tolerance); otherwise the verdict is \"within noise\". Timings of fewer "
-                           "than {} rounds (--quick measures 3) judge no claim: \"too few samples\". Error claims "
-                           "compare deterministic renders.\n\n",
+                           "or outside the tolerance); otherwise the verdict is \"within noise\". The interval is the "
+                           "run's own, widened on the log-ratio by the spread between runs (±1.96 √(se_within² + "
+                           "σ_run²)), σ_run = {}: a margin smaller than what moves between two runs decides nothing. "
+                           "Timings of fewer than {} rounds (--quick measures 3) judge no claim: \"too few samples\". "
+                           "Error claims compare deterministic renders against a reference that is not: each margin is also taken against the reference perturbed by its own noise, replicate by replicate, and one inside 1.96 times their spread reads \"within noise\". A claim that states the paper's number "
+                           "(\"magnitude\") is also judged as × k of the paper's ratio, within the tolerance of "
+                           "configs/README.md's table; one that checks a direction says why. A speed claim whose two "
+                           "rows differ in error beyond the metric's compare tolerance says so (\"unequal quality\"). "
+                           "A claim about what happens from frame to frame that canopy does not measure along a path "
+                           "reads \"not tested by canopy\", with the reason.\n\n",
+                           noise.known() ? fmt::format("{:.2g} % ({})", 100.0 * noise.sigma, noise.source)
+                                         : std::string("0: not known (no `canopy bench stability` results in this checkout)"),
                            kMinTimingSamples);
+        if (magnitude_not_judged)
+            out += "The magnitudes of timing claims are given, not judged: this run used a CPU rasteriser, which is "
+                   "not the paper's class of hardware (vertex work on one thread, fragments on all cores); a GPU "
+                   "run (results/gpu/) judges them.\n\n";
     }
     if (!paper.notes.empty()) out += paper.notes + "\n";
     return out;
 }
 
-void write_paper_report(const std::filesystem::path& path, const PaperComparison& paper, const RunRecord& run) {
-    write_text_atomically(path, paper_report(paper, run));
+void write_paper_report(const std::filesystem::path& path, const PaperComparison& paper, const RunRecord& run,
+                        const RunToRunNoise& noise) {
+    write_text_atomically(path, paper_report(paper, run, noise));
 }
 
 namespace {
@@ -369,7 +519,7 @@ nlohmann::json number_or_null(double v) { return std::isfinite(v) ? nlohmann::js
 
 }  // namespace
 
-nlohmann::json paper_data(const PaperComparison& paper, const RunRecord& run) {
+nlohmann::json paper_data(const PaperComparison& paper, const RunRecord& run, const RunToRunNoise& noise) {
     using nlohmann::json;
     json data{{"id", paper.id},         {"title", paper.title},     {"source", paper.source},
               {"unit", paper.unit},     {"column_key", paper.column_key}, {"columns", paper.columns},
@@ -396,7 +546,7 @@ nlohmann::json paper_data(const PaperComparison& paper, const RunRecord& run) {
             const CaseResult* mine_base = base ? find_case(paper, run, *base, col) : nullptr;
             json canopy_ratio = nullptr;
             if (mine && mine_base) {
-                const Estimate e = row_ratio(row, *mine, *base, *mine_base).estimate;
+                const Estimate e = with_run_to_run_noise(row_ratio(row, *mine, *base, *mine_base).estimate, noise.sigma);
                 if (std::isfinite(e.value))
                     canopy_ratio = json{{"median", e.value}, {"low", number_or_null(e.ci.low)}, {"high", number_or_null(e.ci.high)}};
             }
@@ -423,20 +573,33 @@ nlohmann::json paper_data(const PaperComparison& paper, const RunRecord& run) {
     }
     data["rows"] = rows;
     json claims = json::array();
-    const std::vector<ClaimVerdict> verdicts = judge_claims(paper, run);
-    for (size_t i = 0; i < verdicts.size(); ++i)
-        claims.push_back(json{{"text", verdicts[i].text},
-                              {"outcome", verdicts[i].outcome},
-                              {"because", verdicts[i].because},
-                              {"metric", paper.claims[i].metric},
-                              {"left", paper.claims[i].left},
-                              {"right", paper.claims[i].right}});
+    const std::vector<ClaimVerdict> verdicts = judge_claims(paper, run, noise);
+    for (size_t i = 0; i < verdicts.size(); ++i) {
+        json claim{{"text", verdicts[i].text},
+                   {"outcome", verdicts[i].outcome},
+                   {"because", verdicts[i].because},
+                   {"metric", paper.claims[i].metric},
+                   {"left", paper.claims[i].left},
+                   {"right", paper.claims[i].right},
+                   {"states", paper.claims[i].states == ClaimStates::magnitude ? "magnitude" : "direction"},
+                   {"unequal_quality", verdicts[i].unequal_quality}};
+        if (paper.claims[i].states == ClaimStates::direction) claim["why"] = paper.claims[i].why;
+        if (verdicts[i].magnitude_stated)
+            claim["magnitude"] = json{{"outcome", verdicts[i].magnitude_outcome}, {"because", verdicts[i].magnitude},
+                                      {"tolerance", paper.claims[i].ratio_tolerance}};
+        if (!paper.claims[i].untested.empty()) claim["untested"] = paper.claims[i].untested;
+        claims.push_back(claim);
+    }
     data["claims"] = claims;
+    // Every noise source a timing interval holds: the run's own (block bootstrap) and between runs.
+    data["run_to_run_noise"] = json{{"sigma_log_ratio", noise.sigma},
+                                    {"source", noise.known() ? noise.source : std::string("not known")}};
     return data;
 }
 
-void write_paper_data(const std::filesystem::path& path, const PaperComparison& paper, const RunRecord& run) {
-    write_text_atomically(path, paper_data(paper, run).dump(1) + "\n");
+void write_paper_data(const std::filesystem::path& path, const PaperComparison& paper, const RunRecord& run,
+                      const RunToRunNoise& noise) {
+    write_text_atomically(path, paper_data(paper, run, noise).dump(1) + "\n");
 }
 
 }  // namespace canopy

@@ -10,6 +10,7 @@
 #include "run/statistics.hpp"
 #include "run/timing_check.hpp"
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -88,6 +89,10 @@ struct CaseResult {
     long long nonfinite_pixels = 0;
     // Error against the ray-traced reference of the same scene and resolution (when enabled).
     std::optional<ImageMetrics> image_error;
+    // Each metric (results.json name) against the reference perturbed by its own noise, replicate
+    // by replicate (metrics/reference_noise.hpp); the same replicates for every case of one
+    // reference. Empty where no reference or no variance was at hand, or in older records.
+    std::map<std::string, std::vector<double>> reference_replicates;
     std::string error_map_png, flip_map_png;  // relative to the run folder
     bool ok = true;
     std::string error;                 // why the case failed, when !ok

@@ -19,6 +19,8 @@
 #include <thread>
 #include <unistd.h>
 
+#include <optional>
+
 namespace canopy {
 
 namespace {
@@ -114,6 +116,25 @@ std::string git_head() { return command_output(git_command() + "rev-parse HEAD 2
 std::string canopy_build_type() { return CANOPY_BUILD_TYPE; }
 
 std::filesystem::path source_checkout() { return CANOPY_SOURCE_DIR; }
+
+std::optional<std::string> checkout_file_at(const std::string& commit, const std::string& relative_path) {
+    // Both go into a shell command: a commit is hex, a recorded path has no quote.
+    const bool hex = !commit.empty() && commit.find_first_not_of("0123456789abcdef") == std::string::npos;
+    if (!hex || relative_path.empty() || relative_path.find('\'') != std::string::npos || relative_path.front() == '/')
+        return std::nullopt;
+    // Reading takes no lock in the checkout (another git command may be running there).
+    const std::string command = "GIT_OPTIONAL_LOCKS=0 " + git_command() + "cat-file -e '" + commit + ":" + relative_path +
+                                "' 2>/dev/null && echo yes";
+    if (command_output(command) != "yes") return std::nullopt;
+    std::string out;
+    if (FILE* pipe = popen(("GIT_OPTIONAL_LOCKS=0 " + git_command() + "show '" + commit + ":" + relative_path + "'").c_str(), "r")) {
+        char buffer[4096];
+        size_t n;
+        while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) out.append(buffer, n);
+        if (pclose(pipe) != 0) return std::nullopt;
+    }
+    return out;
+}
 
 // A bundle (scripts/gpu-bundle) is configured with the commit it is built from: that, not the git
 // state of the copy it runs in (stale or absent on the machine it travels to), says which code ran.

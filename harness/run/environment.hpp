@@ -6,6 +6,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include <filesystem>
+#include <optional>
 #include <array>
 #include <string>
 #include <vector>
@@ -47,6 +48,9 @@ Environment collect_environment(const GpuContext& gpu, const std::string& config
 // The checkout this binary was built from, and its commit ("unknown" outside a git checkout).
 std::filesystem::path source_checkout();
 std::string source_commit();
+// A file of that checkout as `commit` had it (path relative to the checkout), read without taking
+// git's lock; nothing when the commit or the file is not there.
+std::optional<std::string> checkout_file_at(const std::string& commit, const std::string& relative_path);
 std::string canopy_build_type();  // CMAKE_BUILD_TYPE of this binary
 std::array<double, 3> current_load_average();  // /proc/loadavg: 1, 5 and 15 minutes; zeros if unknown
 void to_json(nlohmann::json& j, const Environment& e);

@@ -1,3 +1,5 @@
+#include "metrics/reference_noise.hpp"
+#include "reference/parallel_for.hpp"
 #include "run/environment.hpp"
 #include "run/experiment_runner.hpp"
 
@@ -57,6 +59,31 @@ double error_map_scale(const Image& reference) {
     return scale > 0.0 ? scale : 1.0;
 }
 
+// Every metric against each of the reference's noisy replicates (metrics/reference_noise.hpp), the
+// replicates computed in parallel; nothing when the reference has no variance image.
+std::map<std::string, std::vector<double>> metrics_against_noisy_references(
+    const Image& image, const ReferenceImages& reference, const PixelVisibilityPair* visibility,
+    const CoveragePair* coverage, ErrorColumns columns, const MetricOptions& options) {
+    std::map<std::string, std::vector<double>> replicates;
+    if (reference.variance.width != reference.radiance.width || reference.variance.height != reference.radiance.height)
+        return replicates;
+    std::vector<ImageMetrics> metrics(kReferenceReplicates);
+    parallel_for(metrics.size(), 0, [&](size_t k, int) {
+        metrics[k] = compute_metrics(image, perturbed_reference(reference.radiance, reference.variance, int(k)),
+                                     visibility, coverage, columns, options);
+    });
+    for (const MetricInfo& metric : registered_metrics()) {
+        std::vector<double> values;
+        bool any = false;
+        for (const ImageMetrics& m : metrics) {
+            values.push_back(metric.meaningful_value(m));
+            any = any || std::isfinite(values.back());
+        }
+        if (any) replicates[std::string(metric.name)] = std::move(values);
+    }
+    return replicates;
+}
+
 std::string reference_stem(const Scene& scene, const Resolution& r) {
     return fmt::format("reference_{}_{}x{}", scene.name, r.width, r.height);
 }
@@ -69,8 +96,9 @@ void write_run_reports(const std::filesystem::path& dir, const RunRecord& run, c
     write_markdown_report(dir / "results.md", run);
     write_gbench_report(dir / "results.gbench.json", run);
     if (experiment.paper) {
-        write_paper_report(dir / "paper.md", *experiment.paper, run);
-        write_paper_data(dir / "paper.json", *experiment.paper, run);
+        const RunToRunNoise noise = checkout_run_to_run_noise(run.environment.device.name);
+        write_paper_report(dir / "paper.md", *experiment.paper, run, noise);
+        write_paper_data(dir / "paper.json", *experiment.paper, run, noise);
     }
     write_pareto_report(dir / "pareto.md", run);
 }
@@ -424,6 +452,9 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
                         result.image_error = compute_metrics(image, truth, &pixel_visibility, &coverage,
                                                              input.cases[k].technique->error_columns(), metric_options,
                                                              &flip_map);
+                        result.reference_replicates =
+                            metrics_against_noisy_references(image, reference->images, &pixel_visibility, &coverage,
+                                                             input.cases[k].technique->error_columns(), metric_options);
                         if (pngs) {
                             const auto record = std::find_if(run.references.begin(), run.references.end(),
                                                              [&](const ReferenceRecord& r) { return same_reference(r, scene.name, resolution); });
