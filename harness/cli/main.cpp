@@ -37,6 +37,7 @@
 #include "run/run_plan.hpp"
 #include "run/reference_tiles.hpp"
 #include "run/reference_prefetch.hpp"
+#include "metrics/image_metrics.hpp"
 #include "metrics/metric_registry.hpp"
 #include "run/run_identity.hpp"
 
@@ -349,6 +350,29 @@ int compare(const CompareCommand& command) {
         fmt::print("\nwritten to {}\n", fs::absolute(command.out).string());
     }
     return comparison.passed() ? kExitOk : kExitFailedCases;
+}
+
+// `canopy image-error TEST REFERENCE`: every whole-image metric of one image against another (EXR
+// or PNG), e.g. a reference of N samples against one of 4N: how converged it is.
+int image_error(const std::string& test_path, const std::string& reference_path, bool json) {
+    const Image test = read_image(test_path), reference = read_image(reference_path);
+    if (test.width != reference.width || test.height != reference.height)
+        throw ConfigError(fs::path(test_path), 0,
+                          fmt::format("is {}x{}, the reference {}x{}", test.width, test.height, reference.width,
+                                      reference.height),
+                          "compare images of one size");
+    const ImageMetrics m = compute_metrics(test, reference, nullptr, nullptr, ErrorColumns{});
+    nlohmann::json values = nlohmann::json::object();
+    std::vector<std::vector<std::string>> rows;
+    for (const MetricInfo& metric : registered_metrics()) {
+        const double v = metric.meaningful_value(m);
+        if (std::isnan(v)) continue;
+        values[std::string(metric.name)] = std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+        rows.push_back({std::string(metric.name), format_metric_value(v), std::string(metric.title)});
+    }
+    if (json) fmt::print("{}\n", values.dump(1));
+    else fmt::print("{}", render_table({"metric", "value", "what"}, rows, {false, true, false}));
+    return kExitOk;
 }
 
 // Writes results.gbench.json of recorded runs from their results.json (e.g. runs made before
@@ -679,6 +703,9 @@ int main(int argc, char** argv) {
                             "shadow rays per pixel sample towards an area light")->capture_default_str()->check(CLI::Range(1, 65536));
             cmd->add_option("--pixel-samples", reference_options.settings.pixel_samples, "sub-pixel samples per pixel")
                 ->capture_default_str()->check(CLI::Range(1, 1024));
+            cmd->add_option("--seed", reference_options.settings.seed,
+                            "the sample patterns' seed: another seed gives an independent reference of the same noise")
+                ->capture_default_str();
         }
         cmd->add_option("--reference-cache", reference_options.cache_dir,
                         "reference cache folder (default $CANOPY_CACHE_DIR/reference or results/cache/reference)");
@@ -897,6 +924,15 @@ int main(int argc, char** argv) {
                                "the config at the run's commit hashes to what the run recorded and differs from today's "
                                "only in [paper]");
 
+    std::string image_test, image_reference;
+    bool image_json = false;
+    CLI::App* image_error_cmd = app.add_subcommand(
+        "image-error", "Every whole-image error metric (canopy metrics) of one image against another, EXR or PNG: "
+                       "e.g. a reference of N samples a pixel against one of 4N.");
+    image_error_cmd->add_option("test", image_test, "the image to score")->required();
+    image_error_cmd->add_option("reference", image_reference, "the image taken as the truth")->required();
+    image_error_cmd->add_flag("--json", image_json, "print the values as JSON (results.json's names)");
+
     CLI::App* list_cmd = app.add_subcommand("list", "List every technique with its parameters (type, range, default), then the population kinds technique families define for scenes.");
     std::string graph_technique;
     CLI::App* graph_cmd = app.add_subcommand(
@@ -908,7 +944,8 @@ int main(int argc, char** argv) {
         "metrics", "List every error metric: its names in results and [paper] claims, unit, better direction, group, "
                    "compare tolerance.");
     // The commands that only read and print (or write a file) run no case: their exit codes are these.
-    for (CLI::App* quick_cmd : {list_cmd, graph_cmd, devices_cmd, metrics_cmd, plan_cmd, export_cmd, export_paper_cmd})
+    for (CLI::App* quick_cmd : {list_cmd, graph_cmd, devices_cmd, metrics_cmd, plan_cmd, export_cmd, export_paper_cmd,
+                               image_error_cmd})
         quick_cmd->footer("Exit codes: 0 success, 1 a file could not be written, 2 bad input (the message names file:line).");
 
     try {
@@ -953,6 +990,7 @@ int main(int argc, char** argv) {
         if (*report_cmd) return report(report_command);
         if (*export_cmd) return export_gbench(export_runs, export_force);
         if (*export_paper_cmd) return export_paper(paper_runs, paper_force, paper_rejudge);
+        if (*image_error_cmd) return image_error(image_test, image_reference, image_json);
         if (*plan_cmd) return plan(plan_config, plan_shards, plan_quick);
         if (*merge_cmd) return merge(merge_dirs, merge_out, merge_force);
         if (*bench_stability_cmd) return bench_stability(stability);

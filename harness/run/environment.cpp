@@ -107,7 +107,9 @@ std::string cpus_allowed() {
     return list;
 }
 
-std::string git_command() { return std::string("git -C '") + CANOPY_SOURCE_DIR + "' "; }
+// GIT_OPTIONAL_LOCKS=0: reading the checkout's state takes no lock (`git status` would otherwise
+// refresh the index under .git/index.lock, colliding with the user's own git commands).
+std::string git_command() { return std::string("GIT_OPTIONAL_LOCKS=0 git -C '") + CANOPY_SOURCE_DIR + "' "; }
 
 std::string git_head() { return command_output(git_command() + "rev-parse HEAD 2>/dev/null"); }
 
@@ -123,11 +125,11 @@ std::optional<std::string> checkout_file_at(const std::string& commit, const std
     if (!hex || relative_path.empty() || relative_path.find('\'') != std::string::npos || relative_path.front() == '/')
         return std::nullopt;
     // Reading takes no lock in the checkout (another git command may be running there).
-    const std::string command = "GIT_OPTIONAL_LOCKS=0 " + git_command() + "cat-file -e '" + commit + ":" + relative_path +
+    const std::string command = git_command() + "cat-file -e '" + commit + ":" + relative_path +
                                 "' 2>/dev/null && echo yes";
     if (command_output(command) != "yes") return std::nullopt;
     std::string out;
-    if (FILE* pipe = popen(("GIT_OPTIONAL_LOCKS=0 " + git_command() + "show '" + commit + ":" + relative_path + "'").c_str(), "r")) {
+    if (FILE* pipe = popen((git_command() + "show '" + commit + ":" + relative_path + "'").c_str(), "r")) {
         char buffer[4096];
         size_t n;
         while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) out.append(buffer, n);

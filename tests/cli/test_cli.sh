@@ -72,7 +72,19 @@ case $case in
     grep -q "from cache" "$work/second" || fail "second reference was not taken from the cache"
     for f in tiny_64x48.exr tiny_64x48.png tiny_64x48.variance.exr tiny_64x48.visibility.exr tiny_64x48.pixel_visibility.exr; do
       [ -s "$work/ref/$f" ] || fail "missing $f"
-    done ;;
+    done
+    # Another seed: an independent reference, not the cached one; image-error scores one against the other.
+    "$canopy" reference "$data/scenes/tiny.toml" "${args[@]/$work\/ref/$work/ref2}" --seed 2 >"$work/third" || fail "seed 2 failed"
+    ! grep "^reference " "$work/third" | grep -q "from cache" || fail "a reference of another seed came from the cache"
+    "$canopy" image-error "$work/ref/tiny_64x48.exr" "$work/ref/tiny_64x48.exr" --json >"$work/same" || fail "image-error failed"
+    grep -Eq '"mae": 0(\.0)?,?$' "$work/same" || fail "an image against itself: mae is not 0"
+    "$canopy" image-error "$work/ref2/tiny_64x48.exr" "$work/ref/tiny_64x48.exr" --json >"$work/apart" || fail "image-error failed"
+    ! grep -Eq '"mae": 0(\.0)?,?$' "$work/apart" || fail "two seeds' references are identical"
+    "$canopy" reference "$data/scenes/tiny.toml" --width 32 --height 24 --light-samples 1 --pixel-samples 1 --no-cache --out "$work/small" >/dev/null || fail "small reference failed"
+    "$canopy" image-error "$work/small/tiny_32x24.exr" "$work/ref/tiny_64x48.exr" 2>"$work/sizes"; rc=$?
+    cat "$work/sizes"
+    [ $rc -eq 2 ] || fail "images of two sizes: exit $rc, expected 2"
+    grep -q "is 32x24, the reference 64x48" "$work/sizes" || fail "the size mismatch is not named" ;;
   bench)
     "$canopy" bench reference "$data/scenes/tiny.toml" --width 64 --height 48 --light-samples 4 --pixel-samples 1 >"$work/stdout" || fail "bench failed"
     cat "$work/stdout"
