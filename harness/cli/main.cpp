@@ -419,7 +419,7 @@ int export_paper(const std::vector<std::string>& runs, bool force, bool rejudge)
                 throw ConfigError(config, 0, "cannot judge the run again: " + differs,
                                   "rerun the experiment (scripts/reproduce --only ID)");
         }
-        const RunToRunNoise noise = checkout_run_to_run_noise(run.environment.device.name);
+        const RunToRunNoise noise = run_to_run_noise_for(run, dir);
         write_paper_report(dir / "paper.md", *experiment.paper, run, noise);
         write_paper_data(dir / "paper.json", *experiment.paper, run, noise);
         fmt::print("{}\n{}\n", (dir / "paper.md").string(), (dir / "paper.json").string());
@@ -549,11 +549,42 @@ struct RunCommand {
     bool quick = false, progress = true, with_reference = true, resume = false, force = false, report = false;
     bool references_only = false;
     ImageOutput images = ImageOutput::all;
+    int runs = 1;  // --runs N: N - 1 more runs into <out>/runs/run-<k>/, for the spread between runs
 };
 
 int exit_code_for_interrupt() {
     const int signal = interrupt_signal();
     return signal == SIGTERM ? kExitTerminated : kExitInterrupted;
+}
+
+// --runs N: runs 2..N of the experiment, each its own process (a new heap, new threads: what
+// moves a ratio between runs), timing only, into <out>/runs/run-<k>/; a finished one is kept, one
+// cut short resumed. Throws when one fails.
+void run_repeats(const RunCommand& command, const fs::path& out_dir) {
+    for (int k = 2; k <= command.runs; ++k) {
+        const fs::path folder = repeated_run_folder(out_dir, k);
+        std::error_code ec;
+        if (!command.force && fs::is_regular_file(folder / "results.json", ec)) {
+            try {
+                if (read_json_report(folder / "results.json").status == "complete") continue;
+            } catch (const std::exception&) {
+            }
+        }
+        fs::create_directories(folder.parent_path());
+        std::vector<std::string> argv{current_executable().string(), "run", command.config.string(), "--out",
+                                      folder.string(), "--no-reference", "--images", "none", "--no-progress"};
+        if (command.quick) argv.push_back("--quick");
+        if (!command.device.empty()) argv.insert(argv.end(), {"--device", command.device});
+        if (command.force) argv.push_back("--force");
+        else if (fs::exists(folder / "results.json", ec)) argv.push_back("--resume");
+        fmt::print(stderr, "canopy: run {} of {} (timing only) into {} ...\n", k, command.runs, folder.string());
+        const fs::path log = folder.parent_path() / fmt::format("run-{}.log", k);
+        const int status = run_process(argv, log);
+        if (status != 0)
+            throw std::runtime_error(fmt::format("run {} of {} exited {}; its output is in {}; run the same command "
+                                                 "again to resume",
+                                                 k, command.runs, status, log.string()));
+    }
 }
 
 int run(const RunCommand& command, const ReferenceOptions& reference_options) {
@@ -649,10 +680,18 @@ int run(const RunCommand& command, const ReferenceOptions& reference_options) {
         report_command.force = command.force;
         fmt::print("  report.html (canopy report): {}\n", write_report(report_command).string());
     }
+    if (command.runs > 1 && record.status == "complete") {
+        run_repeats(command, options.out_dir);
+        if (experiment.paper) {
+            const RunToRunNoise noise = run_to_run_noise_for(record, options.out_dir);
+            write_paper_report(options.out_dir / "paper.md", *experiment.paper, record, noise);
+            write_paper_data(options.out_dir / "paper.json", *experiment.paper, record, noise);
+            fmt::print("  paper.md and paper.json: timing intervals hold the spread between runs, {}\n", noise.source);
+        }
+    }
     if (experiment.paper) {
         fmt::print("\n{} ({}): claims\n", experiment.paper->id, experiment.paper->source);
-        for (const ClaimVerdict& v : judge_claims(*experiment.paper, record,
-                                                  checkout_run_to_run_noise(record.environment.device.name)))
+        for (const ClaimVerdict& v : judge_claims(*experiment.paper, record, run_to_run_noise_for(record, options.out_dir)))
             fmt::print("  {:<15} {}{}\n", v.outcome, v.text,
                        v.magnitude_stated ? fmt::format(" [magnitude: {}]", v.magnitude_outcome) : std::string());
     }
@@ -693,6 +732,7 @@ int main(int argc, char** argv) {
     std::string config_path, out_dir, device, scene_path, shard_text;
     bool report_after_run = false, references_only = false;
     bool quick = false, no_progress = false, no_reference = false, resume = false, force = false;
+    int run_count = 1;
     std::string images = "all";
     ReferenceOptions reference_options;
     auto add_reference_options = [&](CLI::App* cmd, bool with_size) {
@@ -716,6 +756,12 @@ int main(int argc, char** argv) {
     run_cmd->add_option("--out", out_dir, "output folder (default results/runs/<date>-<experiment>/)");
     run_cmd->add_flag("--quick", quick, "1 warm-up frame and 3 measured rounds of 1 frame per case, for smoke tests "
                                          "(too few to judge timing claims or compare times)");
+    run_cmd->add_option("--runs", run_count,
+                        "run the experiment N times, each a separate process (runs 2..N timing only, into "
+                        "<out>/runs/run-<k>/): paper.md's timing intervals then hold this experiment's own spread "
+                        "between runs (at least 5), instead of the committed bench stability runs'")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 100));
     run_cmd->add_option("--device", device, "Vulkan device: index or part of its name (default: lavapipe)");
     run_cmd->add_flag("--no-progress", no_progress, "no progress bar or lines on stderr");
     run_cmd->add_flag("--no-reference", no_reference, "skip the ray-traced reference and the error columns");
@@ -983,6 +1029,9 @@ int main(int argc, char** argv) {
             command.shard = shard_text;
             command.references_only = references_only;
             command.images = images == "none" ? ImageOutput::none : images == "png" ? ImageOutput::png : ImageOutput::all;
+            command.runs = run_count;
+            if (run_count > 1 && !shard_text.empty())
+                throw ConfigError(fs::path(), 0, "--runs with --shard", "repeat the whole experiment, not one shard");
             return run(command, reference_options);
         }
         if (*reference_cmd) return reference(scene_path, out_dir, reference_options);

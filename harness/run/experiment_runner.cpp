@@ -96,7 +96,7 @@ void write_run_reports(const std::filesystem::path& dir, const RunRecord& run, c
     write_markdown_report(dir / "results.md", run);
     write_gbench_report(dir / "results.gbench.json", run);
     if (experiment.paper) {
-        const RunToRunNoise noise = checkout_run_to_run_noise(run.environment.device.name);
+        const RunToRunNoise noise = run_to_run_noise_for(run, dir);
         write_paper_report(dir / "paper.md", *experiment.paper, run, noise);
         write_paper_data(dir / "paper.json", *experiment.paper, run, noise);
     }

@@ -1,7 +1,9 @@
 #include "run/run_to_run_noise.hpp"
 
 #include "run/environment.hpp"
+#include "report/json_record_reader.hpp"
 #include "run/recorded_path.hpp"
+#include "run/stability_bench.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -87,6 +89,38 @@ std::vector<fs::path> stability_folders(const fs::path& checkout) {
 
 RunToRunNoise checkout_run_to_run_noise(const std::string& device) {
     return run_to_run_noise(stability_folders(source_checkout()), device);
+}
+
+fs::path repeated_run_folder(const fs::path& run_dir, int k) { return run_dir / "runs" / fmt::format("run-{}", k); }
+
+RunToRunNoise run_to_run_noise_for(const RunRecord& run, const fs::path& run_dir) {
+    std::vector<RunRecord> runs{run};
+    std::error_code ec;
+    for (int k = 2; fs::is_regular_file(repeated_run_folder(run_dir, k) / "results.json", ec); ++k) {
+        try {
+            RunRecord other = read_json_report(repeated_run_folder(run_dir, k) / "results.json");
+            if (other.status != "complete" || other.experiment != run.experiment ||
+                other.environment.config_hash != run.environment.config_hash ||
+                other.environment.device.name != run.environment.device.name ||
+                other.environment.git_commit != run.environment.git_commit)
+                continue;
+            runs.push_back(std::move(other));
+        } catch (const std::exception&) {
+            continue;  // a half-written or foreign record: not one of the runs
+        }
+    }
+    if (runs.size() < size_t(kMinRunsForOwnNoise)) return checkout_run_to_run_noise(run.environment.device.name);
+    const StabilityResult stability = analyse_stability(runs);
+    double sigma = 0;
+    size_t cases = 0;
+    for (const CaseStability& c : stability.cases) {
+        if (c.group_baseline || c.ratios.size() < 2) continue;
+        sigma = std::max(sigma, log_ratio_sigma(c.ratios));
+        ++cases;
+    }
+    if (cases == 0) return checkout_run_to_run_noise(run.environment.device.name);
+    return {sigma, fmt::format("this experiment's {} runs ({}/runs/; the largest of {} cases)", runs.size(),
+                               recorded_path(run_dir), cases)};
 }
 
 }  // namespace canopy

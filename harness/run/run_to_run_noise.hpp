@@ -34,4 +34,15 @@ std::vector<std::filesystem::path> stability_folders(const std::filesystem::path
 // run_to_run_noise over the stability folders of the checkout canopy runs from.
 RunToRunNoise checkout_run_to_run_noise(const std::string& device);
 
+// `canopy run --runs N` keeps runs 2..N of the experiment in <run folder>/runs/run-<k>/.
+inline constexpr int kMinRunsForOwnNoise = 5;
+std::filesystem::path repeated_run_folder(const std::filesystem::path& run_dir, int k);
+
+struct RunRecord;
+// The spread between this experiment's own runs: `run` and the complete runs of the same experiment
+// and config under run_dir/runs/, when there are at least kMinRunsForOwnNoise of them in all (the
+// largest sigma over its cases); else the checkout's (checkout_run_to_run_noise). The source says
+// which.
+RunToRunNoise run_to_run_noise_for(const RunRecord& run, const std::filesystem::path& run_dir);
+
 }  // namespace canopy

@@ -37,7 +37,8 @@ std::string label_of(const CaseResult& c) {
                        c.params_shown.empty() || c.params_shown == "-" ? "" : " " + c.params_shown);
 }
 
-// Runs `argv` with stdout and stderr into `log`; returns its exit status (128 + signal if killed).
+}  // namespace
+
 int run_process(const std::vector<std::string>& argv, const std::filesystem::path& log) {
     const pid_t pid = fork();
     if (pid < 0) throw std::runtime_error("cannot start a run: fork failed");
@@ -59,8 +60,6 @@ int run_process(const std::vector<std::string>& argv, const std::filesystem::pat
         if (errno != EINTR) throw std::runtime_error("cannot wait for a run");
     return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
 }
-
-}  // namespace
 
 StabilityResult analyse_stability(const std::vector<RunRecord>& runs) {
     StabilityResult result;

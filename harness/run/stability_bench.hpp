@@ -60,6 +60,10 @@ struct StabilityResult {
 // are not of one experiment and config.
 StabilityResult analyse_stability(const std::vector<RunRecord>& runs);
 
+// Runs `argv` (argv[0] an executable's path) with stdout and stderr into `log`; returns its exit
+// status (128 + signal if killed).
+int run_process(const std::vector<std::string>& argv, const std::filesystem::path& log);
+
 struct StabilityOptions {
     std::filesystem::path experiment;
     int runs = 5;

@@ -63,6 +63,25 @@ case $case in
     [ "$(ls "$work/out/images" | grep -c '\.flip\.png$')" -eq 3 ] || fail "expected 3 FLIP maps"
     "$canopy" run "$data/experiments/tiny.toml" --out "$work/plain" --quick --no-reference >"$work/stdout" 2>&1 || fail "run --no-reference failed"
     ! grep -q "penumbra RMSE" "$work/stdout" || fail "--no-reference still shows error columns" ;;
+  runs)
+    # --runs 5: four more runs, timing only, each its own process; paper.md's intervals then hold
+    # this experiment's own spread between runs. Again: the finished runs are kept.
+    "$canopy" run "$data/experiments/tiny_paper.toml" --out "$work/out" --quick --no-cache --images none --runs 5 \
+      >"$work/stdout" 2>"$work/stderr" || fail "run --runs 5 failed: $(cat "$work/stderr")"
+    cat "$work/stdout"
+    for k in 2 3 4 5; do
+      [ -s "$work/out/runs/run-$k/results.json" ] || fail "missing run $k"
+      grep -q '"reference_enabled": false' "$work/out/runs/run-$k/results.json" || fail "run $k is not timing only"
+    done
+    grep -q "σ_run = .*this experiment's 5 runs" "$work/out/paper.md" || fail "paper.md does not take the spread from its own 5 runs"
+    python3 -c "import json,sys; n=json.load(open('$work/out/paper.json'))['run_to_run_noise']; sys.exit(0 if n['sigma_log_ratio'] > 0 and '5 runs' in n['source'] else 1)" \
+      || fail "paper.json names no spread of its own runs"
+    before=$(stat -c %Y "$work/out/runs/run-3/results.json")
+    "$canopy" run "$data/experiments/tiny_paper.toml" --out "$work/out" --quick --no-cache --images none --runs 5 --resume \
+      >/dev/null 2>"$work/stderr2" || fail "resuming failed: $(cat "$work/stderr2")"
+    [ "$(stat -c %Y "$work/out/runs/run-3/results.json")" = "$before" ] || fail "a finished run was measured again"
+    "$canopy" run "$data/experiments/tiny_paper.toml" --out "$work/shard" --runs 2 --shard 1/2 2>"$work/stderr3"; rc=$?
+    [ $rc -eq 2 ] || fail "--runs with --shard: exit $rc, expected 2" ;;
   reference)
     args=(--width 64 --height 48 --light-samples 8 --pixel-samples 1 --reference-cache "$work/cache" --out "$work/ref")
     "$canopy" reference "$data/scenes/tiny.toml" "${args[@]}" >"$work/first" || fail "reference failed"
