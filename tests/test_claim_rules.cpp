@@ -358,3 +358,31 @@ TEST_CASE("an error gap inside the reference's noise reads 'within noise'; the n
     run.cases[1].reference_replicates["flip_mean"] = pcf;
     CHECK(judge_claims(*e.paper, run, RunToRunNoise{}).front().outcome == "does not hold");
 }
+
+TEST_CASE("a FLIP claim on a reference not converged for its margin reads 'within noise'") {
+    const std::string claim = "text = \"PCF is closer to the truth than hard shadows\"\nleft = \"PCF\"\n"
+                              "right = \"hard\"\nmetric = \"flip\"\nrelation = \"less\"\nstates = \"direction\"\n"
+                              "why = \"no number\"\n";
+    RunRecord run = run_of(10.0, 20.0);
+    run.cases[0].image_error->flip_mean = 0.10;
+    run.cases[1].image_error->flip_mean = 0.07;  // margin 0.03
+    const auto with_convergence = [&](const std::string& flip) {
+        std::string text = experiment_with(claim);
+        text.replace(text.find("baseline = \"hard\"\n"), 18,
+                     "baseline = \"hard\"\nreference_convergence_flip = " + flip +
+                         "\nreference_convergence_source = \"a test's sweep\"\n");
+        return load_experiment(folder().write("convergence-" + flip + ".toml", text), TechniqueRegistry::instance());
+    };
+    // FLIP(ref N, ref 4N) = 0.002: converged for a margin of 0.03 (at least 10 times it).
+    CHECK(judge_claims(*with_convergence("0.002").paper, run, RunToRunNoise{}).front().outcome == "holds");
+    // 0.005: not converged for 0.03 (under 10 x 0.005): nothing decided, and said why.
+    const ClaimVerdict v = judge_claims(*with_convergence("0.005").paper, run, RunToRunNoise{}).front();
+    CHECK(v.outcome == "within noise");
+    CHECK(v.because.find("has not converged for this margin: FLIP(ref N, ref 4N) = 0.005") != std::string::npos);
+    CHECK(v.because.find("a test's sweep") != std::string::npos);
+    // Without a source the number is refused.
+    std::string unsourced = experiment_with(claim);
+    unsourced.replace(unsourced.find("baseline = \"hard\"\n"), 18, "baseline = \"hard\"\nreference_convergence_flip = 0.1\n");
+    CHECK_THROWS_WITH_AS(load_experiment(folder().write("unsourced.toml", unsourced), TechniqueRegistry::instance()),
+                         doctest::Contains("say where the reference's convergence was measured"), ConfigError);
+}

@@ -81,6 +81,11 @@ struct PaperComparison {
     std::vector<PaperRow> rows;
     std::vector<PaperClaim> claims;
     std::string notes;        // printed under the table
+    // FLIP between the experiment's reference and one of 4x its pixel samples on this view, as
+    // scripts/reference-convergence measured it, and where (NaN: not measured). A FLIP claim is
+    // judged only when its margin is at least 10 times this (the reference converged for it).
+    double reference_convergence_flip = std::numeric_limits<double>::quiet_NaN();
+    std::string reference_convergence_source;
 };
 
 }  // namespace canopy

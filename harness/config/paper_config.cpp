@@ -206,6 +206,16 @@ PaperComparison read_paper(TomlReader& section, const TechniqueRegistry& registr
         throw section.error("columns", "[paper] needs its column labels", "columns = [\"512\", \"1024\", \"2048\"]");
     paper.baseline = section.get_string("baseline", "");
     paper.notes = section.get_string("notes", "");
+    if (section.has("reference_convergence_flip")) {
+        paper.reference_convergence_flip = section.get_float("reference_convergence_flip", 0.0);
+        if (paper.reference_convergence_flip < 0)
+            throw section.error("reference_convergence_flip", "'reference_convergence_flip' must not be negative",
+                                "reference_convergence_flip = 0.052 (scripts/reference-convergence's FLIP(ref N, ref 4N))");
+        paper.reference_convergence_source = section.get_string("reference_convergence_source", "");
+        if (paper.reference_convergence_source.empty())
+            throw section.error("reference_convergence_source", "say where the reference's convergence was measured",
+                                "reference_convergence_source = \"results/reference-convergence, 4 samples a pixel\"");
+    }
     for (TomlReader& r : section.get_tables("row", "[[paper.row]]")) paper.rows.push_back(read_row(r, registry, paper.columns.size()));
     if (paper.rows.empty()) throw section.error("row", "[paper] has no [[paper.row]] entries", "add one per row of the paper's table");
 

@@ -237,6 +237,7 @@ std::vector<ClaimVerdict> judge_claims(const PaperComparison& paper, const RunRe
         std::string numbers, magnitudes, gaps;
         Tally direction, magnitude;
         bool noise_unknown = false;
+        std::string unconverged;
         size_t fewest_samples = std::numeric_limits<size_t>::max();
         const bool timing = claim.metric == kTimeClaim;
         const auto column_index = [&](const std::string& label) {
@@ -301,7 +302,16 @@ std::vector<ClaimVerdict> judge_claims(const PaperComparison& paper, const RunRe
                 const double m = margin(a, b);
                 const double noise = reference_noise_of_margin(claim.metric, *l, *r, margin);
                 noise_unknown = noise_unknown || std::isnan(noise);
-                if (std::isnan(noise) || noise == 0.0) {
+                // A FLIP claim on a reference that has not converged for it: FLIP(ref N, ref 4N)
+                // above a tenth of the margin decides nothing.
+                const bool flip_claim = claim.metric.rfind("flip", 0) == 0;
+                if (flip_claim && std::isfinite(paper.reference_convergence_flip) &&
+                    std::abs(m) < 10.0 * paper.reference_convergence_flip) {
+                    direction.add(false, false);
+                    unconverged = fmt::format("; the reference has not converged for this margin: FLIP(ref N, ref 4N) "
+                                              "= {:.3g} is more than a tenth of it ({})",
+                                              paper.reference_convergence_flip, paper.reference_convergence_source);
+                } else if (std::isnan(noise) || noise == 0.0) {
                     // Exact: "about" holds on its boundary, less and greater fail there.
                     if (claim.relation == "about") direction.add(m >= 0, m < 0);
                     else direction.add(m > 0, m <= 0);
@@ -343,6 +353,7 @@ std::vector<ClaimVerdict> judge_claims(const PaperComparison& paper, const RunRe
                 v.magnitude += fmt::format(" (holds inside 1 ± {:g})", t);
         }
         if (!gaps.empty()) v.unequal_quality = "unequal quality: " + gaps;
+        v.because += unconverged;
         if (noise_unknown && direction.measured > 0)
             v.because += "; the reference's noise was not measured by this run (made before canopy measured it): "
                          "the verdict does not account for it";
