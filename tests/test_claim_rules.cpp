@@ -4,7 +4,7 @@
 #include "config/claim_rules.hpp"
 #include "config/experiment_config.hpp"
 #include "config/paper_table_change.hpp"
-#include "metrics/reference_noise.hpp"
+#include "reference/reference_noise.hpp"
 #include "report/paper_report.hpp"
 #include "run/run_to_run_noise.hpp"
 #include "support/config_error_of.hpp"

@@ -3,7 +3,7 @@
 #include "config/claim_rules.hpp"
 #include "core/registry.hpp"
 #include "metrics/metric_registry.hpp"
-#include "metrics/reference_noise.hpp"
+#include "reference/reference_noise.hpp"
 #include "report/atomic_file.hpp"
 #include "report/text_table.hpp"
 #include "run/case_ratio.hpp"
@@ -291,7 +291,7 @@ std::vector<ClaimVerdict> judge_claims(const PaperComparison& paper, const RunRe
                 if (std::isnan(a) || std::isnan(b)) continue;
                 // Renders are deterministic; the reference is not. The margin by which the relation
                 // holds (> 0) or fails (< 0), and the same against each of the reference's noisy
-                // replicates (metrics/reference_noise.hpp): a margin inside 1.96 times their
+                // replicates (reference/reference_noise.hpp): a margin inside 1.96 times their
                 // spread decides nothing.
                 const auto margin = [&](double left_value, double right_value) {
                     const double bound = claim.factor * right_value + claim.offset;

@@ -90,7 +90,7 @@ struct CaseResult {
     // Error against the ray-traced reference of the same scene and resolution (when enabled).
     std::optional<ImageMetrics> image_error;
     // Each metric (results.json name) against the reference perturbed by its own noise, replicate
-    // by replicate (metrics/reference_noise.hpp); the same replicates for every case of one
+    // by replicate (reference/reference_noise.hpp); the same replicates for every case of one
     // reference. Empty where no reference or no variance was at hand, or in older records.
     std::map<std::string, std::vector<double>> reference_replicates;
     std::string error_map_png, flip_map_png;  // relative to the run folder

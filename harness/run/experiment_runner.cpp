@@ -1,4 +1,4 @@
-#include "metrics/reference_noise.hpp"
+#include "reference/reference_noise.hpp"
 #include "reference/parallel_for.hpp"
 #include "run/environment.hpp"
 #include "run/experiment_runner.hpp"
@@ -59,7 +59,7 @@ double error_map_scale(const Image& reference) {
     return scale > 0.0 ? scale : 1.0;
 }
 
-// Every metric against each of the reference's noisy replicates (metrics/reference_noise.hpp), the
+// Every metric against each of the reference's noisy replicates (reference/reference_noise.hpp), the
 // replicates computed in parallel; nothing when the reference has no variance image.
 std::map<std::string, std::vector<double>> metrics_against_noisy_references(
     const Image& image, const ReferenceImages& reference, const PixelVisibilityPair* visibility,

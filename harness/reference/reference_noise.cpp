@@ -1,4 +1,6 @@
-#include "metrics/reference_noise.hpp"
+#include "reference/reference_noise.hpp"
+
+#include "reference/sample_patterns.hpp"
 
 #include <cmath>
 #include <cstdint>
@@ -9,19 +11,11 @@ namespace canopy {
 
 namespace {
 
-uint64_t splitmix64(uint64_t x) {
-    x += 0x9E3779B97F4A7C15ull;
-    x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
-    x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
-    return x ^ (x >> 31);
-}
-
-// Two independent uniforms in (0, 1] from one counter, then Box-Muller: written out so the noise
-// is the same with every standard library.
-double standard_normal(uint64_t counter) {
-    const uint64_t a = splitmix64(counter), b = splitmix64(a ^ 0xD1B54A32D192ED03ull);
-    const double u1 = (double(a >> 11) + 1.0) * 0x1.0p-53, u2 = double(b >> 11) * 0x1.0p-53;
-    return std::sqrt(-2.0 * std::log(u1)) * std::cos(6.283185307179586 * u2);
+// A standard normal number from one key, by Box-Muller over unit_pair's two uniforms (written out,
+// so the noise is the same with every standard library).
+double standard_normal(uint64_t key) {
+    const glm::vec2 u = unit_pair(key);
+    return std::sqrt(-2.0 * std::log(1.0 - double(u.x))) * std::cos(6.283185307179586 * double(u.y));
 }
 
 }  // namespace
@@ -30,12 +24,11 @@ Image perturbed_reference(const Image& radiance, const Image& variance, int repl
     if (radiance.width != variance.width || radiance.height != variance.height)
         throw std::invalid_argument("the reference's variance image differs in size from its radiance");
     Image out = radiance;
-    const uint64_t base = splitmix64(uint64_t(replicate) + 1) << 2;
     for (size_t i = 0; i < out.pixels.size(); ++i) {
         if (i % 4 == 3) continue;  // alpha
         const float v = variance.pixels[i];
         if (!(v > 0.0f) || !std::isfinite(v)) continue;
-        out.pixels[i] += float(std::sqrt(double(v)) * standard_normal(base + i * 0x9E3779B97F4A7C15ull));
+        out.pixels[i] += float(std::sqrt(double(v)) * standard_normal(random_key(uint64_t(replicate), uint64_t(i))));
     }
     return out;
 }
