@@ -5,6 +5,7 @@
 #include "config/experiment_config.hpp"
 #include "config/paper_table_change.hpp"
 #include "reference/reference_noise.hpp"
+#include "report/json_report.hpp"
 #include "report/paper_report.hpp"
 #include "run/run_to_run_noise.hpp"
 #include "support/config_error_of.hpp"
@@ -385,4 +386,17 @@ TEST_CASE("a FLIP claim on a reference not converged for its margin reads 'withi
     unsourced.replace(unsourced.find("baseline = \"hard\"\n"), 18, "baseline = \"hard\"\nreference_convergence_flip = 0.1\n");
     CHECK_THROWS_WITH_AS(load_experiment(folder().write("unsourced.toml", unsourced), TechniqueRegistry::instance()),
                          doctest::Contains("say where the reference's convergence was measured"), ConfigError);
+}
+
+TEST_CASE("results.json records each reference's noise per metric: the largest replicate spread of its cases") {
+    RunRecord run = run_of(10.0, 20.0);
+    ReferenceRecord reference;
+    reference.scene = "tiny";
+    reference.resolution = {96, 64};
+    run.references.push_back(reference);
+    run.cases[0].reference_replicates["flip_mean"] = {0.10, 0.12, 0.08};  // spread 0.02
+    run.cases[1].reference_replicates["flip_mean"] = {0.10, 0.11, 0.09};  // spread 0.01
+    const nlohmann::json j = nlohmann::json::parse(json_report(run));
+    CHECK(j["references"][0]["metric_noise"]["flip_mean"].get<double>() == doctest::Approx(0.02));
+    CHECK(j["cases"][1]["reference_replicates"]["flip_mean"].size() == 3);
 }

@@ -1,11 +1,13 @@
 #include "report/json_report.hpp"
 
 #include "metrics/metric_registry.hpp"
+#include "reference/reference_noise.hpp"
 #include "report/atomic_file.hpp"
 
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <map>
 
 namespace canopy {
 
@@ -140,6 +142,24 @@ nlohmann::json counters_json(const std::vector<std::pair<std::string, double>>& 
     return out;
 }
 
+// The noise this reference induces in each metric: the largest spread over its noisy replicates
+// (reference/reference_noise.hpp) among the cases compared with it. Derived from the cases'
+// reference_replicates, so the reader does not read it back.
+nlohmann::json reference_metric_noise(const RunRecord& run, const ReferenceRecord& r) {
+    std::map<std::string, double> largest;
+    for (const CaseResult& c : run.cases) {
+        if (c.scene != r.scene || c.resolution.width != r.resolution.width || c.resolution.height != r.resolution.height)
+            continue;
+        for (const auto& [name, values] : c.reference_replicates) {
+            const double spread = replicate_spread(values);
+            if (std::isfinite(spread)) largest[name] = std::max(largest.count(name) ? largest[name] : 0.0, spread);
+        }
+    }
+    nlohmann::json j = nlohmann::json::object();
+    for (const auto& [name, spread] : largest) j[name] = spread;
+    return j;
+}
+
 // Non-finite replicate values are written null, as the metrics are.
 nlohmann::json replicates_json(const std::map<std::string, std::vector<double>>& replicates) {
     nlohmann::json j = nlohmann::json::object();
@@ -206,7 +226,11 @@ std::string json_report(const RunRecord& run) {
     nlohmann::json groups = nlohmann::json::array();
     for (const auto& g : run.groups) groups.push_back(group_json(g));
     nlohmann::json references = nlohmann::json::array();
-    for (const auto& r : run.references) references.push_back(reference_json(r));
+    for (const auto& r : run.references) {
+        nlohmann::json reference = reference_json(r);
+        reference["metric_noise"] = reference_metric_noise(run, r);
+        references.push_back(std::move(reference));
+    }
     nlohmann::json merged_from = nlohmann::json::array();
     for (const auto& m : run.merged_from)
         merged_from.push_back({{"shard", m.shard}, {"hostname", m.hostname}, {"started_at", m.started_at},
