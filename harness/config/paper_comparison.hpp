@@ -6,10 +6,12 @@
 #include "core/param.hpp"
 #include "scene/scene.hpp"
 
+#include <algorithm>
 #include <limits>
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace canopy {
@@ -87,5 +89,20 @@ struct PaperComparison {
     double reference_convergence_flip = std::numeric_limits<double>::quiet_NaN();
     std::string reference_convergence_source;
 };
+
+// The column pairs (left's, right's) a claim judges: each column with itself (or its one
+// `column`), or the one pair across columns. The parser reads the paper's ratio in these, the
+// report judges them.
+inline std::vector<std::pair<size_t, size_t>> judged_columns(const PaperComparison& paper, const PaperClaim& claim) {
+    const auto index = [&](const std::string& label) {
+        return size_t(std::find(paper.columns.begin(), paper.columns.end(), label) - paper.columns.begin());
+    };
+    std::vector<std::pair<size_t, size_t>> pairs;
+    if (!claim.left_column.empty()) pairs.emplace_back(index(claim.left_column), index(claim.right_column));
+    else
+        for (size_t col = 0; col < paper.columns.size(); ++col)
+            if (claim.column.empty() || paper.columns[col] == claim.column) pairs.emplace_back(col, col);
+    return pairs;
+}
 
 }  // namespace canopy

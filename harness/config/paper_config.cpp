@@ -80,20 +80,6 @@ double table_ratio(const PaperComparison& paper, const PaperRow& left, const Pap
     return paper.unit == "fps" ? b / a : a / b;
 }
 
-// The column pairs (left's, right's) a claim judges: each column with itself, or the one pair
-// across columns.
-std::vector<std::pair<size_t, size_t>> judged_columns(const PaperComparison& paper, const PaperClaim& claim) {
-    const auto index = [&](const std::string& label) {
-        return size_t(std::find(paper.columns.begin(), paper.columns.end(), label) - paper.columns.begin());
-    };
-    std::vector<std::pair<size_t, size_t>> pairs;
-    if (!claim.left_column.empty()) pairs.emplace_back(index(claim.left_column), index(claim.right_column));
-    else
-        for (size_t col = 0; col < paper.columns.size(); ++col)
-            if (claim.column.empty() || paper.columns[col] == claim.column) pairs.emplace_back(col, col);
-    return pairs;
-}
-
 const PaperRow& row_labelled(const PaperComparison& paper, const std::string& label) {
     return *std::find_if(paper.rows.begin(), paper.rows.end(), [&](const PaperRow& r) { return r.label == label; });
 }

@@ -240,18 +240,8 @@ std::vector<ClaimVerdict> judge_claims(const PaperComparison& paper, const RunRe
         std::string unconverged;
         size_t fewest_samples = std::numeric_limits<size_t>::max();
         const bool timing = claim.metric == kTimeClaim;
-        const auto column_index = [&](const std::string& label) {
-            return size_t(std::find(paper.columns.begin(), paper.columns.end(), label) - paper.columns.begin());
-        };
-        // Column pairs (left's, right's): each column with itself, or the one pair across columns.
-        std::vector<std::pair<size_t, size_t>> pairs;
-        if (!claim.left_column.empty())
-            pairs.emplace_back(column_index(claim.left_column), column_index(claim.right_column));
-        else
-            for (size_t col = 0; col < paper.columns.size(); ++col)
-                if (claim.column.empty() || paper.columns[col] == claim.column) pairs.emplace_back(col, col);
         const double t = claim.ratio_tolerance;
-        for (const auto& [col, right_col] : pairs) {
+        for (const auto& [col, right_col] : judged_columns(paper, claim)) {
             const CaseResult* l = find_case(paper, run, *left, col);
             const CaseResult* r = find_case(paper, run, *right, right_col);
             if (!l || !r) continue;
