@@ -20,7 +20,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr std::array kReportFiles = {"results.json", "results.csv", "results.md", "paper.md", "paper.json", "pareto.md", "report.html"};
+// What every run writes beside its images (report.html: `canopy report`, or `run --report`).
+constexpr std::array kReportFiles = {"results.json", "results.csv", "results.md", "results.gbench.json", "paper.md",
+                                     "paper.json",   "pareto.md",   "report.html", "experiment.toml"};
 
 bool is_empty_folder(const fs::path& dir) { return fs::is_directory(dir) && fs::directory_iterator(dir) == fs::directory_iterator(); }
 
@@ -86,20 +88,26 @@ OutputFolderPlan plan_output_folder(const fs::path& dir, const RunIdentity& iden
             throw ConfigError(dir, 0, "nothing to resume: the folder holds no run", "drop --resume to start a new run");
         return plan;
     }
-    if (force && !resume) {
-        plan.replace = true;
-        return plan;
-    }
+    // --force replaces a canopy run, and only what that run recorded as its own: a folder without
+    // a readable results.json is someone else's, whatever its files are called.
     if (!fs::exists(dir / "results.json"))
         throw ConfigError(dir, 0, "the folder is not empty and holds no canopy run (no results.json); refusing to "
-                                  "write into it",
-                          another + ", or add --force to write into it anyway");
+                                  "write into it, with or without --force",
+                          another + ", or empty the folder yourself");
     RunRecord previous;
     try {
         previous = read_json_report(dir / "results.json");
     } catch (const std::runtime_error& e) {
-        throw ConfigError(dir, 0, fmt::format("the folder holds a run canopy cannot continue: {}", e.what()),
-                          another + ", or add --force to replace it");
+        throw ConfigError(dir, 0,
+                          fmt::format("the folder's results.json is not a canopy run canopy can read ({}); refusing to "
+                                      "write into it, with or without --force",
+                                      e.what()),
+                          another + ", or remove the folder yourself");
+    }
+    if (force && !resume) {
+        plan.replace = true;
+        plan.previous = std::move(previous);
+        return plan;
     }
     const std::vector<std::string> differences = identity_differences(previous.identity, identity);
     if (!differences.empty()) {
@@ -125,15 +133,31 @@ void remove_temporary_files(const fs::path& dir) {
             if (is_temporary_file(file)) fs::remove(file);
 }
 
-size_t remove_run_outputs(const fs::path& dir) {
+std::vector<std::string> recorded_files(const RunRecord& run) {
+    std::vector<std::string> files(kReportFiles.begin(), kReportFiles.end());
+    auto add = [&](const std::string& file) {
+        if (!file.empty()) files.push_back(file);
+    };
+    for (const ReferenceRecord& r : run.references)
+        for (const std::string* f : {&r.image_exr, &r.image_png, &r.visibility_exr, &r.pixel_visibility_exr}) add(*f);
+    for (const CaseResult& c : run.cases)
+        for (const std::string* f : {&c.image_exr, &c.image_png, &c.visibility_exr, &c.error_map_png, &c.flip_map_png})
+            add(*f);
+    return files;
+}
+
+size_t remove_run_outputs(const fs::path& dir, const RunRecord& run) {
     size_t removed = 0;
-    for (const char* name : kReportFiles) removed += fs::remove(dir / name) ? 1 : 0;
-    for (const fs::path& file : files_in(dir / "images")) {
-        const std::string extension = file.extension().string();
-        if (extension == ".exr" || extension == ".png" || is_temporary_file(file)) removed += fs::remove(file) ? 1 : 0;
+    for (const std::string& name : recorded_files(run)) {
+        const fs::path file = dir / name;
+        // A name that climbs out of the folder is not the run's to remove.
+        if (fs::path(name).is_absolute() || name.find("..") != std::string::npos) continue;
+        std::error_code error;
+        if (fs::is_regular_file(file, error)) removed += fs::remove(file, error) ? 1 : 0;
     }
-    for (const fs::path& file : files_in(dir))
-        if (is_temporary_file(file)) removed += fs::remove(file) ? 1 : 0;
+    for (const fs::path& folder : {dir, dir / "images"})
+        for (const fs::path& file : files_in(folder))
+            if (is_temporary_file(file)) removed += fs::remove(file) ? 1 : 0;
     return removed;
 }
 

@@ -9,12 +9,14 @@
 
 #include <filesystem>
 #include <optional>
+#include <string>
+#include <vector>
 
 namespace canopy {
 
 struct OutputFolderPlan {
     std::optional<RunRecord> previous;  // a run to continue, or none: start afresh
-    bool replace = false;               // --force over a used folder: remove canopy's earlier outputs first
+    bool replace = false;               // --force over another run: remove `previous`'s recorded files first
 };
 
 // Decides how a run with `identity` may use `dir`, before anything is written. Throws ConfigError
@@ -22,7 +24,9 @@ struct OutputFolderPlan {
 // is committed results without `force`, or `resume` finds nothing to continue.
 //   empty or new folder   -> start afresh (with `resume`: error, nothing to continue)
 //   same identity         -> continue it (with or without `resume`)
-//   anything else         -> error; with `force` (and no `resume`): replace it
+//   another canopy run    -> error; with `force` (and no `resume`): replace it (`previous` is
+//                            the run replaced, whose recorded files remove_run_outputs removes)
+//   no canopy run         -> error, also with `force`: canopy removes only what it recorded
 OutputFolderPlan plan_output_folder(const std::filesystem::path& dir, const RunIdentity& identity, bool force,
                                     bool resume);
 
@@ -43,9 +47,13 @@ private:
 // Whether `dir` is, or is under, a results/paper or results/baselines folder.
 bool is_committed_results_folder(const std::filesystem::path& dir);
 
-// Removes what a canopy run writes into a folder (results.json, .csv, .md, paper.md, the images'
-// EXR and PNG files, temporary files) and nothing else. Returns how many files it removed.
-size_t remove_run_outputs(const std::filesystem::path& dir);
+// The files `run` recorded as its own, relative to its folder: its reports (results.json, .csv, .md,
+// .gbench.json, paper.md, paper.json, pareto.md, report.html), the copy of its config
+// (experiment.toml) and every image its cases and references name.
+std::vector<std::string> recorded_files(const RunRecord& run);
+// Removes the files `run` (the folder's results.json) recorded as its own and canopy's temporary
+// files, nothing else: a user's file is kept whatever it is called. Returns how many it removed.
+size_t remove_run_outputs(const std::filesystem::path& dir, const RunRecord& run);
 // Removes the temporary files a killed run left behind (atomic_file.hpp's names).
 void remove_temporary_files(const std::filesystem::path& dir);
 

@@ -78,6 +78,14 @@ grep -q "cases are in no shard given" "$work/stderr" && grep -q "$(json "$work/s
   || fail "the missing cases are not listed: $(cat "$work/stderr")"
 "$canopy" merge "$work/s1" "$work/s1" --out "$work/twice" 2>"$work/stderr"; [ $? -eq 2 ] && grep -q "given twice" "$work/stderr" \
   || fail "a shard given twice: $(cat "$work/stderr")"
+# An input is never the output: merging into a shard's folder is refused, with --force too, and
+# leaves the shard as it was (a second merge still works).
+(cd "$work/s1" && find . -type f -exec sha256sum {} + | sort) >"$work/s1.before"
+for force in "" --force; do
+  "$canopy" merge "$work/s1" "$work/s2" --out "$work/s1/" $force 2>"$work/stderr"; [ $? -eq 2 ] \
+    && grep -q "one of the shards being merged" "$work/stderr" || fail "merge into a shard ($force): $(cat "$work/stderr")"
+done
+(cd "$work/s1" && find . -type f -exec sha256sum {} + | sort) | diff - "$work/s1.before" || fail "a refused merge changed shard s1"
 run "$work/other.toml" --out "$work/o1" --shard 1/2 || fail "other config's shard failed"
 "$canopy" merge "$work/s1" "$work/o1" --out "$work/mixed" 2>"$work/stderr"; [ $? -eq 2 ] && grep -q "config hash" "$work/stderr" \
   || fail "another config's shard: $(cat "$work/stderr")"
