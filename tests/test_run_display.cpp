@@ -132,6 +132,34 @@ TEST_CASE("progress says where a reference comes from, when it is done, the ETA 
     CHECK(text[6].find("(1 kept from the earlier run)") != std::string::npos);
 }
 
+TEST_CASE("not on a terminal, a long group or reference says where it is at least every heartbeat") {
+    Captured out;
+    {
+        // A heartbeat of 0 s: every round and every reference step is due a line.
+        Progress progress(40, 1, out.file(), false, 0.0);
+        progress.reference_progress(0, "field 640x360", 0.25);
+        progress.start_group(0, "field 640x360", 40, 20, 3);
+        progress.group_round("field 640x360", 1, 16, 4, 20);
+        progress.group_round("field 640x360", 3, 9, 1, 20);  // more chunks than planned (memory split one)
+    }
+    const auto text = lines(out.text());
+    REQUIRE(text.size() == 4);
+    CHECK(text[0].find("[1/40] ray-tracing reference field 640x360 25%, elapsed 0:00") == 0);
+    CHECK(text[1] == "[1/40] measuring field 640x360: 40 cases interleaved, 20 rounds, in 3 chunks or more ...");
+    CHECK(text[2].find("[0/40] measuring field 640x360: chunk 2/3 (16 cases), round 4/20, elapsed 0:00, ETA ") == 0);
+    CHECK(text[3].find("chunk 4/4+ (9 cases), round 1/20") != std::string::npos);
+
+    // With the default heartbeat (30 s) a round that follows a line by less prints nothing.
+    Captured quiet;
+    {
+        Progress progress(40, 1, quiet.file(), false);
+        progress.start_group(0, "field 640x360", 40, 20, 3);
+        progress.group_round("field 640x360", 0, 16, 1, 20);
+        progress.reference_progress(0, "field 640x360", 0.5);
+    }
+    CHECK(lines(quiet.text()).size() == 1);
+}
+
 TEST_CASE("the console table is compact; results.md keeps every column") {
     RunRecord run;
     for (int kernel : {3, 5, 7}) {

@@ -7,7 +7,10 @@
 #include "metrics/colour_bar.hpp"
 #include "metrics/comparable_pair.hpp"
 #include "metrics/error_maps.hpp"
+#include "metrics/metric_registry.hpp"
 #include "metrics/popping.hpp"
+#include "metrics/reference_degeneracy.hpp"
+#include "report/atomic_file.hpp"
 #include "report/csv_report.hpp"
 #include "report/gbench_report.hpp"
 #include "report/image_files.hpp"
@@ -30,6 +33,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <fstream>
 #include <functional>
 #include <map>
 #include <optional>
@@ -82,6 +86,19 @@ std::map<std::string, std::vector<double>> metrics_against_noisy_references(
         if (any) replicates[std::string(metric.name)] = std::move(values);
     }
     return replicates;
+}
+
+// The experiment config, then the files it read, each once.
+std::vector<std::filesystem::path> inputs_of(const Experiment& experiment) {
+    std::vector<std::filesystem::path> files{experiment.file};
+    for (const std::filesystem::path& f : experiment.hashed_files)
+        if (std::find(files.begin(), files.end(), f) == files.end()) files.push_back(f);
+    return files;
+}
+
+std::string file_bytes(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
 std::string reference_stem(const Scene& scene, const Resolution& r) {
@@ -229,6 +246,12 @@ std::vector<PlannedGroup> plan_groups(const std::vector<Case>& cases, const std:
     return groups;
 }
 
+size_t planned_chunks(size_t cases, const ChunkLimits& limits) {
+    // The baseline is in every chunk: each holds up to max_cases - 1 others (memory may split more).
+    const size_t per_chunk = std::max<size_t>(limits.max_cases, 2) - 1;
+    return std::max<size_t>(1, (cases > 1 ? cases - 1 + per_chunk - 1 : per_chunk) / per_chunk);
+}
+
 RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegistry& registry, const GpuContext& gpu,
                          const RunOptions& options) {
     const Experiment& experiment = *prepared.experiment;
@@ -238,6 +261,12 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
     run.experiment = experiment.name;
     run.description = experiment.description;
     run.config_file = recorded_path(experiment.file);
+    std::string config_bytes;
+    for (const std::filesystem::path& file : inputs_of(experiment)) {
+        const std::string bytes = file_bytes(file);
+        if (config_bytes.empty() && file == experiment.file) config_bytes = bytes;
+        run.inputs.push_back({recorded_path(file), fmt::format("{:016x}", fnv1a_64(bytes))});
+    }
     run.environment = collect_environment(gpu, experiment.config_hash);
     run.identity = make_run_identity(experiment, options, run.environment);
     run.quick = options.quick;
@@ -272,17 +301,34 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
     const CaseLabels labels(prepared.cases, registry);
     std::vector<std::optional<CaseResult>> slots(prepared.cases.size());  // planned order
     std::vector<bool> group_kept(groups.size(), false);
+    // Per group, per case: recorded by the chunks of a group the previous run cut short (those
+    // chunks are kept, the group continues after them); empty for a group measured afresh.
+    std::vector<std::vector<bool>> recorded_in_chunks(groups.size());
     for (size_t g = 0; g < groups.size() && options.previous; ++g) {
         const auto previous_group = std::find_if(options.previous->groups.begin(), options.previous->groups.end(),
                                                  [&](const GroupRecord& r) { return r.name == run.groups[g].name; });
-        const bool whole = previous_group != options.previous->groups.end() &&
-                           previous_group->cases == run.groups[g].cases && !previous_group->chunks.empty() &&
-                           std::all_of(groups[g].cases.begin(), groups[g].cases.end(),
+        if (previous_group == options.previous->groups.end() || previous_group->cases != run.groups[g].cases ||
+            previous_group->chunks.empty())
+            continue;
+        // The cases its finished chunks measured (the baseline in each): kept when every one of
+        // them is; a lost file redoes the whole group, as a changed baseline would have to.
+        std::vector<bool> in_chunks(groups[g].cases.size(), false);
+        for (const MeasurementChunk& chunk : previous_group->chunks)
+            for (const std::string& id : chunk.cases)
+                for (size_t k = 0; k < groups[g].cases.size(); ++k)
+                    if (prepared.cases[groups[g].cases[k]].id == id) in_chunks[k] = true;
+        bool all_kept = in_chunks[0];
+        for (size_t k = 0; k < in_chunks.size(); ++k)
+            if (in_chunks[k] && !kept.cases.count(prepared.cases[groups[g].cases[k]].id)) all_kept = false;
+        if (!all_kept) continue;
+        const bool whole = std::all_of(groups[g].cases.begin(), groups[g].cases.end(),
                                        [&](size_t i) { return kept.cases.count(prepared.cases[i].id) > 0; });
-        if (!whole) continue;
-        group_kept[g] = true;
+        group_kept[g] = whole;
+        if (!whole) recorded_in_chunks[g] = in_chunks;
         run.groups[g].chunks = previous_group->chunks;
-        for (size_t i : groups[g].cases) {
+        for (size_t k = 0; k < groups[g].cases.size(); ++k) {
+            if (!in_chunks[k] && !whole) continue;
+            const size_t i = groups[g].cases[k];
             const Case& c = prepared.cases[i];
             CaseResult result = kept.cases.at(c.id);  // measurements as recorded, labels from this run's cases
             result.params = c.params.values();
@@ -305,10 +351,13 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
     Progress progress(prepared.cases.size(), run.reference_enabled ? references_needed : 0);
     ReferenceProvider references(options.reference_cache_dir, experiment.reference);
     size_t groups_measured = 0;  // groups this process measured
+    size_t chunks_recorded = 0;  // chunks this process measured and recorded
     try {
         std::filesystem::create_directories(out / "images");
         if (options.previous) remove_temporary_files(out);
         write_run_reports(out, run, experiment);
+        // The config as it was run, beside its results (a later edit of the file changes nothing here).
+        write_text_atomically(out / "experiment.toml", config_bytes);
 
         for (size_t g = 0; g < groups.size() && !interrupt_requested(); ++g) {
             const PlannedGroup& planned = groups[g];
@@ -317,13 +366,15 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
             const size_t first = planned.cases.front();
             auto label_of = [&](size_t i) {
                 const Case& c = prepared.cases[i];
-                return fmt::format("{} {} {}", planned.name, c.technique, labels.parameters(c));
+                const std::string shown = labels.parameters(c);  // "-": nothing to show
+                return shown == "-" ? fmt::format("{} {}", planned.name, c.technique)
+                                    : fmt::format("{} {} {}", planned.name, c.technique, shown);
             };
-            if (group_kept[g]) {
-                if (options.show_progress)
-                    for (size_t i : planned.cases) progress.kept_case(i, label_of(i));
-                continue;
-            }
+            if (options.show_progress)
+                for (size_t k = 0; k < planned.cases.size(); ++k)
+                    if (group_kept[g] || (!recorded_in_chunks[g].empty() && recorded_in_chunks[g][k]))
+                        progress.kept_case(planned.cases[k], label_of(planned.cases[k]));
+            if (group_kept[g]) continue;
             // The reference first, so a case's record is complete when it is written.
             const ReferenceEntry* reference = nullptr;
             if (run.reference_enabled) {
@@ -359,6 +410,14 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
                     record.light_samples = references.settings().light_samples;
                     record.pixel_samples = references.settings().pixel_samples;
                     record.error_map_scale = error_map_scale(reference->images.radiance);
+                    const Light* light = scene.shadow_light();
+                    record.degenerate = degenerate_reference(reference->images.radiance, reference->images.visibility,
+                                                             {light != nullptr, light && light->is_area()});
+                    if (!record.degenerate.empty())
+                        fmt::print(stderr, "canopy: warning: the reference of {} is degenerate ({}): every technique "
+                                           "scores near perfect against it; its cases are flagged and no claim rests "
+                                           "on them\n",
+                                   planned.name, degenerate_reference_text(record.degenerate).substr(22));
                     record.pixel_visibility_key = reference->pixel_visibility_key;
                     record.pixel_visibility_from_cache = reference->pixel_visibility_from_cache;
                     record.pixel_visibility_seconds = reference->pixel_visibility.seconds;
@@ -416,7 +475,13 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
                 if (options.ballast && options.ballast->technique == c.technique) gc.ballast_iterations = options.ballast->iterations;
                 input.cases.push_back(gc);
             }
-            if (options.show_progress) progress.start_group(first, planned.name, planned.cases.size(), settings.rounds);
+            input.chunks_done = run.groups[g].chunks;
+            input.recorded = recorded_in_chunks[g];
+            const size_t to_measure =
+                size_t(std::count(input.recorded.begin(), input.recorded.end(), false)) + (input.recorded.empty() ? planned.cases.size() : 0);
+            if (options.show_progress)
+                progress.start_group(first, planned.name, to_measure, settings.rounds,
+                                     planned_chunks(to_measure, options.chunk_limits));
 
             GroupCallbacks callbacks;
             callbacks.round_started = [&](size_t chunk, size_t cases, int round, int rounds) {
@@ -480,18 +545,39 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
                     result.image_error->popping_max = popping.max;
                     result.popping_per_pair = popping.per_pair;
                 };
+            // Each finished chunk is recorded (its cases with the baseline they were paired with),
+            // so an interrupted group keeps its finished chunks and --resume goes on after them.
+            // results.json is rewritten after a chunk when the last write took under a tenth of
+            // the time since (a large run's record takes a while to write); an interrupt writes it
+            // anyway, before the process stops.
+            auto chunk_start = start;
+            auto last_write = std::chrono::steady_clock::now();
+            double last_write_seconds = 0;
+            callbacks.chunk_finished = [&](const GroupRecord& so_far,
+                                           const std::vector<std::pair<size_t, const CaseResult*>>& finished) {
+                run.groups[g].chunks = so_far.chunks;
+                for (const auto& [k, result] : finished) slots[planned.cases[k]] = *result;
+                record_cases();
+                const auto now = std::chrono::steady_clock::now();
+                if (std::chrono::duration<double>(now - last_write).count() >= 10.0 * last_write_seconds) {
+                    write_json_report(out / "results.json", run);
+                    last_write = std::chrono::steady_clock::now();
+                    last_write_seconds = std::chrono::duration<double>(last_write - now).count();
+                }
+                ++chunks_recorded;
+                test_hooks::chunk_recorded(chunks_recorded);
+                const double seconds = std::chrono::duration<double>(now - chunk_start).count();
+                chunk_start = now;
+                if (options.show_progress)
+                    for (const auto& [k, result] : finished)
+                        progress.finish_case(planned.cases[k], label_of(planned.cases[k]),
+                                             seconds / double(finished.size()), result->ok);
+            };
             std::optional<MeasuredGroup> measured = measure_group(gpu, input, settings, options.chunk_limits, callbacks);
-            if (!measured || interrupt_requested()) break;  // this group did not finish: keep only the finished ones
+            if (!measured || interrupt_requested()) break;  // this group did not finish: its finished chunks are kept
             ++groups_measured;
-            run.groups[g].chunks = std::move(measured->record.chunks);
-            for (size_t k = 0; k < planned.cases.size(); ++k) slots[planned.cases[k]] = std::move(measured->cases[k]);
-            record_cases();
             write_run_reports(out, run, experiment);
             test_hooks::group_recorded(groups_measured);
-            const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            if (options.show_progress)
-                for (size_t i : planned.cases)
-                    progress.finish_case(i, label_of(i), seconds / double(planned.cases.size()), slots[i]->ok);
         }
     } catch (const std::exception& e) {
         // The run cannot go on (a full disk, an unwritable folder, a reference that cannot be

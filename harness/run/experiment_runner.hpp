@@ -1,6 +1,7 @@
 // Runs an experiment group by group (the cases of one scene at one resolution, measured together
-// round by round: run/group_measurement.hpp), saves each case's image and error, and rewrites the
-// reports after every group, so an interrupted run keeps every finished group.
+// round by round: run/group_measurement.hpp), saves each case's image and error, records every
+// finished chunk of a group in results.json and rewrites every report after each group, so an
+// interrupted run keeps every finished chunk and --resume goes on after it.
 #pragma once
 
 #include "core/registry.hpp"
@@ -64,8 +65,12 @@ void refuse_cases_scenes_cannot_run(const Experiment& experiment, const std::vec
 // pareto.md, and paper.md and paper.json for an experiment with a [paper] table.
 void write_run_reports(const std::filesystem::path& dir, const RunRecord& run, const Experiment& experiment);
 
+// How many chunks measuring `cases` cases of a group (the baseline among them) takes at least:
+// the progress lines' "chunk k/n".
+size_t planned_chunks(size_t cases, const ChunkLimits& limits);
+
 // Writes results.json, results.csv, results.md, results.gbench.json and images/ under
-// options.out_dir, rewriting the reports after every group. A failure to write (a full disk, ...) ends the run with status
+// options.out_dir, recording each finished chunk and rewriting the reports after every group. A failure to write (a full disk, ...) ends the run with status
 // "failed" and the reason in RunRecord::error, recorded in results.json where the disk allows.
 RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegistry& registry, const GpuContext& gpu,
                          const RunOptions& options);

@@ -378,6 +378,7 @@ std::optional<MeasuredGroup> measure_group(const GpuContext& gpu, const GroupInp
         live[i].result.id = c.id;
         live[i].result.group_baseline = i == 0;
         live[i].result.scene = group.scene->name;
+        live[i].result.scene_variant = group.scene->variant;
         live[i].result.technique = c.technique;
         live[i].result.resolution = c.resolution;
         live[i].result.params = c.params.values();
@@ -386,13 +387,29 @@ std::optional<MeasuredGroup> measure_group(const GpuContext& gpu, const GroupInp
     }
     measured.record.scene = group.scene->name;
     if (!group.cases.empty()) measured.record.resolution = group.cases.front().c->resolution;
+    measured.record.chunks = group.chunks_done;
+    auto recorded_before = [&](size_t i) { return i < group.recorded.size() && group.recorded[i]; };
+
+    // Finished cases not yet passed to chunk_finished, group indices.
+    std::vector<size_t> unreported;
+    auto report_finished = [&] {
+        if (!callbacks.chunk_finished || unreported.empty()) return;
+        std::vector<std::pair<size_t, const CaseResult*>> finished;
+        for (size_t i : unreported) finished.emplace_back(i, &live[i].result);
+        callbacks.chunk_finished(measured.record, finished);
+        unreported.clear();
+    };
+    auto finish_case = [&](LiveCase& c, size_t chunk_index, const MeasurementChunk& chunk) {
+        finish(c, chunk_index, chunk, callbacks);
+        unreported.push_back(c.index);
+    };
 
     // The baseline first; it stays built through every chunk.
     build(live[0], gpu, group, settings);
     const bool baseline_ok = !live[0].failed;
-    if (!baseline_ok && callbacks.case_measured) finish(live[0], 0, MeasurementChunk{}, callbacks);
+    bool baseline_finished = !baseline_ok || recorded_before(0);
+    if (!baseline_ok && callbacks.case_measured) finish_case(live[0], measured.record.chunks.size(), MeasurementChunk{});
     size_t next = 1;
-    bool baseline_finished = !baseline_ok;
     do {
         std::vector<LiveCase*> members;
         uint64_t bytes = 0;
@@ -403,23 +420,25 @@ std::optional<MeasuredGroup> measure_group(const GpuContext& gpu, const GroupInp
         while (next < live.size() && members.size() < std::max<size_t>(limits.max_cases, 2)) {
             if (interrupt_requested()) return std::nullopt;
             LiveCase& candidate = live[next++];
+            if (recorded_before(candidate.index)) continue;
             build(candidate, gpu, group, settings);
             if (candidate.failed) {
-                finish(candidate, measured.record.chunks.size(), MeasurementChunk{}, callbacks);
+                finish_case(candidate, measured.record.chunks.size(), MeasurementChunk{});
                 continue;
             }
             members.push_back(&candidate);
             bytes += candidate.bytes();
             if (bytes > limits.max_bytes) break;
         }
-        if (members.empty()) break;  // every remaining case failed to build
+        // Every remaining case failed to build, or was recorded before: nothing left to measure.
+        if (members.empty() || (members.size() == 1 && baseline_ok && baseline_finished)) break;
         const size_t chunk_index = measured.record.chunks.size();
         MeasurementChunk chunk;
         if (!measure_chunk(members, settings, chunk_index, chunk, callbacks, baseline_ok)) return std::nullopt;
         for (LiveCase* m : members) {
             const bool is_baseline = baseline_ok && m == &live[0];
             if (is_baseline && baseline_finished) continue;
-            finish(*m, chunk_index, chunk, callbacks);
+            finish_case(*m, chunk_index, chunk);
             if (is_baseline) {
                 baseline_finished = true;
             } else {
@@ -428,7 +447,9 @@ std::optional<MeasuredGroup> measure_group(const GpuContext& gpu, const GroupInp
             }
         }
         measured.record.chunks.push_back(std::move(chunk));
+        report_finished();
     } while (next < live.size());
+    report_finished();  // cases that failed to build after the last chunk
 
     for (LiveCase& l : live) measured.cases.push_back(std::move(l.result));
     return measured;

@@ -54,6 +54,12 @@ struct GroupInput {
     const Scene* scene = nullptr;
     const std::vector<TriangleMesh>* meshes = nullptr;
     std::vector<GroupCase> cases;  // the baseline first
+    // A group cut short earlier and now continued (--resume): the chunks it recorded, and per case
+    // whether they measured it (the baseline is in every chunk). Those cases are neither built nor
+    // measured again; the baseline is, to pair the new chunks with, but not finished again. Both
+    // empty: the whole group is measured.
+    std::vector<MeasurementChunk> chunks_done;
+    std::vector<bool> recorded;
 };
 
 struct GroupCallbacks {
@@ -68,13 +74,19 @@ struct GroupCallbacks {
     // Case `index` is about to render `state` (warm-up, measured and the final untimed frame):
     // which frame of the run it is and where the camera is, for tests and tools that trace it.
     std::function<void(size_t index, const FrameState& state)> frame_rendered;
+    // A chunk is done: `finished` (group indices) are the cases it measured and those that failed
+    // to build before it, each already through case_measured, their results final; `record` holds
+    // the chunks so far, this one last. What the caller records here survives an interrupt.
+    std::function<void(const GroupRecord& record, const std::vector<std::pair<size_t, const CaseResult*>>& finished)>
+        chunk_finished;
     // Progress: round `round` (1-based) of `rounds` of a chunk of `cases` cases starts.
     std::function<void(size_t chunk, size_t cases, int round, int rounds)> round_started;
 };
 
-// Returns the group's record and its cases' results (group order), or nullopt when an interrupt
-// was requested before the group finished (then nothing of it is valid). A case that cannot be
-// built or rendered (GpuError) fails alone; the group goes on without it.
+// Returns the group's record and its cases' results (group order; a case `recorded` before is
+// left as a bare result with its id), or nullopt when an interrupt was requested before the group
+// finished: then the chunks already passed to chunk_finished are the part of it that is valid. A
+// case that cannot be built or rendered (GpuError) fails alone; the group goes on without it.
 struct MeasuredGroup {
     GroupRecord record;
     std::vector<CaseResult> cases;

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <unistd.h>
 
 namespace canopy {
@@ -20,12 +21,24 @@ std::optional<double> estimate_remaining_seconds(double case_seconds, size_t cas
     return left;
 }
 
-Progress::Progress(size_t total_cases, size_t references, std::FILE* out, std::optional<bool> terminal)
+Progress::Progress(size_t total_cases, size_t references, std::FILE* out, std::optional<bool> terminal,
+                   double heartbeat_seconds)
     : total_(total_cases),
       references_left_(references),
       out_(out),
       terminal_(terminal.value_or(isatty(fileno(out)) != 0)),
-      start_(std::chrono::steady_clock::now()) {}
+      heartbeat_seconds_(heartbeat_seconds),
+      start_(std::chrono::steady_clock::now()),
+      last_line_(start_) {}
+
+double Progress::elapsed() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+}
+
+bool Progress::heartbeat_due() const {
+    return !terminal_ &&
+           std::chrono::duration<double>(std::chrono::steady_clock::now() - last_line_).count() >= heartbeat_seconds_;
+}
 
 std::optional<double> Progress::remaining_seconds() const {
     return estimate_remaining_seconds(case_seconds_, measured_, total_ - done_, reference_seconds_, references_done_,
@@ -39,10 +52,9 @@ std::string Progress::eta_text() const {
 
 void Progress::draw_bar(size_t done, const std::string& label) {
     constexpr int kWidth = 28;
-    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     const int filled = total_ ? int(kWidth * done / total_) : kWidth;
     std::string text = fmt::format("\r[{}{}] {}/{}  elapsed {}  ETA {}  {}", std::string(size_t(filled), '#'),
-                                   std::string(size_t(kWidth - filled), '.'), done, total_, clock_text(elapsed),
+                                   std::string(size_t(kWidth - filled), '.'), done, total_, clock_text(elapsed()),
                                    eta_text(), label);
     if (text.size() > 120) text.resize(120);
     fmt::print(out_, "{}\033[K", text);
@@ -53,6 +65,7 @@ void Progress::line(const std::string& text) {
     if (terminal_) fmt::print(out_, "\r\033[K{}\n", text);
     else fmt::print(out_, "{}\n", text);
     std::fflush(out_);
+    last_line_ = std::chrono::steady_clock::now();
 }
 
 void Progress::kept_case(size_t index, const std::string& label) {
@@ -68,8 +81,10 @@ void Progress::reference_started(size_t index, const std::string& name, bool fro
     else line(fmt::format("[{}/{}] {}", index + 1, total_, text));
 }
 
-void Progress::reference_progress(size_t, const std::string& name, double fraction) {
-    if (terminal_) draw_bar(done_, fmt::format("ray-tracing reference {} {:.0f}%", name, 100.0 * fraction));
+void Progress::reference_progress(size_t index, const std::string& name, double fraction) {
+    const std::string text = fmt::format("ray-tracing reference {} {:.0f}%", name, 100.0 * fraction);
+    if (terminal_) draw_bar(done_, text);
+    else if (heartbeat_due()) line(fmt::format("[{}/{}] {}, elapsed {}", index + 1, total_, text, clock_text(elapsed())));
 }
 
 void Progress::reference_finished(size_t index, const std::string& name, double seconds, bool from_cache) {
@@ -85,18 +100,28 @@ void Progress::start_case(size_t index, const std::string& label) {
     else line(fmt::format("[{}/{}] {} ...", index + 1, total_, label));
 }
 
-void Progress::start_group(size_t first_index, const std::string& group, size_t cases, int rounds) {
-    const std::string text = fmt::format("measuring {}: {} case{} interleaved, {} round{}", group, cases,
-                                         cases == 1 ? "" : "s", rounds, rounds == 1 ? "" : "s");
+void Progress::start_group(size_t first_index, const std::string& group, size_t cases, int rounds, size_t chunks) {
+    group_chunks_ = std::max<size_t>(chunks, 1);
+    std::string text = fmt::format("measuring {}: {} case{} interleaved, {} round{}", group, cases,
+                                   cases == 1 ? "" : "s", rounds, rounds == 1 ? "" : "s");
+    if (group_chunks_ > 1) text += fmt::format(", in {} chunks or more", group_chunks_);
     if (terminal_) draw_bar(done_, text);
     else line(fmt::format("[{}/{}] {} ...", first_index + 1, total_, text));
 }
 
 void Progress::group_round(const std::string& group, size_t chunk, size_t cases, int round, int rounds) {
-    if (!terminal_) return;  // a line per round would bury the rest
+    if (!terminal_) {
+        // A line per round would bury the rest: one every heartbeat_seconds says the run is alive.
+        if (heartbeat_due())
+            line(fmt::format("[{}/{}] measuring {}: chunk {}/{}{} ({} cases), round {}/{}, elapsed {}, ETA {}", done_,
+                             total_, group, chunk + 1, std::max(group_chunks_, chunk + 1),
+                             chunk + 1 > group_chunks_ ? "+" : "", cases, round, rounds, clock_text(elapsed()),
+                             eta_text()));
+        return;
+    }
     draw_bar(done_, chunk == 0 ? fmt::format("measuring {}: round {}/{}", group, round, rounds)
-                               : fmt::format("measuring {} (chunk {}, {} cases): round {}/{}", group, chunk + 1, cases,
-                                             round, rounds));
+                               : fmt::format("measuring {} (chunk {}/{}, {} cases): round {}/{}", group, chunk + 1,
+                                             std::max(group_chunks_, chunk + 1), cases, round, rounds));
 }
 
 void Progress::finish_case(size_t index, const std::string& label, double seconds, bool ok) {
@@ -113,8 +138,7 @@ void Progress::finish_case(size_t index, const std::string& label, double second
 }
 
 void Progress::done() {
-    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    std::string text = fmt::format("finished {} of {} cases in {}", done_, total_, clock_text(elapsed));
+    std::string text = fmt::format("finished {} of {} cases in {}", done_, total_, clock_text(elapsed()));
     if (kept_ > 0) text += fmt::format(" ({} kept from the earlier run)", kept_);
     line(text);
 }

@@ -5,7 +5,9 @@
 //                                    itself CANOPY_TEST_KILL_SIGNAL: KILL (default), TERM or INT;
 //   CANOPY_TEST_KILL_MID_GROUP=1     instead, send it once the first case of the (N+1)-th group
 //                                    has its images written, before results.json records that
-//                                    group (a half-written group).
+//                                    group (a half-written group);
+//   CANOPY_TEST_KILL_AFTER_CHUNKS=N  after the N-th chunk this process measures is recorded in
+//                                    results.json (a group cut short between its chunks).
 #pragma once
 
 #include <cstddef>
@@ -15,5 +17,7 @@ namespace canopy::test_hooks {
 // `groups_recorded` counts the groups this process has measured and recorded so far.
 void case_images_written(size_t groups_recorded);
 void group_recorded(size_t groups_recorded);
+// `chunks_recorded` counts the chunks this process has measured and recorded so far.
+void chunk_recorded(size_t chunks_recorded);
 
 }  // namespace canopy::test_hooks
