@@ -307,10 +307,15 @@ void refuse_committed(const fs::path& dir, bool force, const std::string& hint) 
         throw ConfigError(dir, 0, "this folder holds committed results; canopy does not write there unless told to", hint);
 }
 
-// The experiment config a run names (relative to the checkout, as results record paths).
-fs::path recorded_config(const RunRecord& run) {
+// The experiment config a run names (relative to its checkout, as results record paths): the
+// checkout holding the run folder `dir`, else the run's checkout (run_checkout()). That checkout
+// becomes the run's, for the paths and commit of what is written next.
+fs::path recorded_config(const RunRecord& run, const fs::path& dir) {
     const fs::path config = run.config_file;
-    return config.is_relative() ? source_checkout() / config : config;
+    if (!config.is_relative()) return config;
+    const fs::path holding = checkout_of(dir);
+    if (!holding.empty()) set_run_checkout_of(holding);
+    return run_checkout() / config;
 }
 
 // A run folder or its results.json.
@@ -396,7 +401,7 @@ int export_paper(const std::vector<std::string>& runs, bool force, bool rejudge)
         const RunRecord run = read_run(where);
         const fs::path dir = run_folder(where);
         refuse_committed(dir, force, "add --force to write its paper.md and paper.json (then review `git diff`)");
-        const fs::path config = recorded_config(run);
+        const fs::path config = recorded_config(run, dir);
         const Experiment experiment = load_experiment(config, TechniqueRegistry::instance());
         if (!experiment.paper)
             throw ConfigError(config, 0, "this experiment has no [paper] table", "export-paper is for paper experiments");
@@ -477,7 +482,15 @@ int merge(const std::vector<std::string>& shard_dirs, const std::string& out_dir
         shards.push_back(read_run(where));
         folders.push_back(run_folder(where));
     }
-    const Experiment experiment = load_experiment(recorded_config(shards.front()), registry);
+    // An input is never the output: merging into a shard's folder would overwrite the shard, and a
+    // second merge would find it gone. Checked before anything is read further or written.
+    std::error_code ec;
+    for (const fs::path& folder : folders)
+        if (fs::exists(out_dir, ec) && fs::equivalent(folder, out_dir, ec))
+            throw ConfigError(fs::path(out_dir), 0, fmt::format("--out is one of the shards being merged ({}), with or without --force",
+                                                                folder.string()),
+                              "merge into a new or empty folder (e.g. results/runs/<name>-merged)");
+    const Experiment experiment = load_experiment(recorded_config(shards.front(), folders.front()), registry);
     const std::vector<Case> cases = expand_cases(experiment, registry);
     const MergedRun merged = merge_shards(shards, folders, experiment, cases, registry);
 
@@ -592,6 +605,8 @@ int run(const RunCommand& command, const ReferenceOptions& reference_options) {
     // Everything is checked (config, scenes, meshes, device support, the output folder) before
     // anything is written.
     refuse_in_timing_only_build(command.with_reference, command.images != ImageOutput::none);
+    // The run is in the config's checkout: its commit is the run's, its paths are recorded from it.
+    set_run_checkout_of(command.config);
     const Experiment experiment = load_experiment(command.config, registry);
     std::optional<ShardSpec> shard;
     if (!command.shard.empty()) try {
@@ -645,15 +660,20 @@ int run(const RunCommand& command, const ReferenceOptions& reference_options) {
         fmt::print(stderr, "canopy: warning: this canopy binary is older than {} (changed after it was linked): rebuild "
                            "(scripts/build) before trusting the numbers; results.json records it\n",
                    environment.binary_older_than);
+    if (environment.commit_mismatch())
+        fmt::print(stderr, "canopy: warning: this binary was built from commit {} but the run is in {} at commit {}: "
+                           "results.json records both; build canopy in this checkout (scripts/build) to measure its "
+                           "code\n",
+                   environment.binary_commit.substr(0, 12), run_checkout().string(), environment.git_commit.substr(0, 12));
     const RunIdentity identity = make_run_identity(experiment, options, environment);
     const OutputFolderPlan folder = plan_output_folder(options.out_dir, identity, command.force, command.resume);
     const OutputFolderLock lock(options.out_dir);  // one canopy process per folder
     if (folder.replace) {
-        const size_t removed = remove_run_outputs(options.out_dir);
+        const size_t removed = remove_run_outputs(options.out_dir, *folder.previous);
         fmt::print(stderr, "canopy: --force: replacing {} ({} files of the earlier run removed)\n",
                    options.out_dir.string(), removed);
     }
-    options.previous = folder.previous ? &*folder.previous : nullptr;
+    options.previous = folder.previous && !folder.replace ? &*folder.previous : nullptr;
     if (options.previous)
         fmt::print(stderr, "canopy: resuming the run in {} (status {}, {} of {} cases recorded)\n",
                    options.out_dir.string(), options.previous->status, options.previous->cases.size(),

@@ -47,8 +47,12 @@ std::string markdown_report(const RunRecord& run) {
                        e.cpu_model, e.nproc, e.cpus_allowed, e.lp_num_threads, e.load_average[0], e.load_average[1],
                        e.load_average[2]);
     out += fmt::format("- heap while measuring: {}\n", e.heap);
-    out += fmt::format("- canopy {} ({} build), commit {}{}, config hash {}\n", e.canopy_version, e.build_type,
-                       e.git_commit, e.git_dirty ? " (with uncommitted changes)" : "", e.config_hash);
+    out += fmt::format("- canopy {} ({} build), commit {}, config hash {}\n", e.canopy_version, e.build_type,
+                       commit_text(e), e.config_hash);
+    if (e.commit_mismatch())
+        out += fmt::format("- **the binary was built from {}, not from the checkout's commit {}**: these numbers come "
+                           "from the binary's code\n",
+                           e.binary_commit, e.git_commit);
     if (!e.binary_older_than.empty())
         out += fmt::format("- **the canopy binary is older than {}**: these numbers may come from other code than the "
                            "commit says\n",

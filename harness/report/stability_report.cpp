@@ -28,8 +28,7 @@ std::string stability_markdown(const StabilityResult& r) {
                        r.frames_per_sample == 1 ? "" : "s");
     out += fmt::format("- device: {} ({}); CPU: {}, nproc {}, allowed CPUs {}, LP_NUM_THREADS {}\n", e.device.name,
                        e.device.driver_info, e.cpu_model, e.nproc, e.cpus_allowed, e.lp_num_threads);
-    out += fmt::format("- canopy {} ({} build), commit {}{}\n", e.canopy_version, e.build_type, e.git_commit,
-                       e.git_dirty ? " (with uncommitted changes)" : "");
+    out += fmt::format("- canopy {} ({} build), commit {}\n", e.canopy_version, e.build_type, commit_text(e));
     std::string loads;
     for (size_t k = 0; k < r.runs.size(); ++k)
         loads += fmt::format("{}run {}: {} -> {} ({:.0f} s)", k ? "; " : "", k + 1, load_text(r.runs[k].load_before),

@@ -108,10 +108,37 @@ std::string cpus_allowed() {
 }
 
 // GIT_OPTIONAL_LOCKS=0: reading the checkout's state takes no lock (`git status` would otherwise
-// refresh the index under .git/index.lock, colliding with the user's own git commands).
-std::string git_command() { return std::string("GIT_OPTIONAL_LOCKS=0 git -C '") + CANOPY_SOURCE_DIR + "' "; }
+// refresh the index under .git/index.lock, colliding with the user's own git commands). A path
+// with a quote is never put in the shell command.
+std::string git_command(const std::filesystem::path& checkout) {
+    const std::string dir = checkout.string();
+    if (dir.find('\'') != std::string::npos) return "false ";
+    return "GIT_OPTIONAL_LOCKS=0 git -C '" + dir + "' ";
+}
 
-std::string git_head() { return command_output(git_command() + "rev-parse HEAD 2>/dev/null"); }
+std::string git_head(const std::filesystem::path& checkout) {
+    return command_output(git_command(checkout) + "rev-parse HEAD 2>/dev/null");
+}
+
+// The files with uncommitted changes, results/ left out: regenerating committed results rewrites
+// tracked files there, which says nothing about the code.
+std::vector<std::string> changed_files(const std::filesystem::path& checkout) {
+    std::vector<std::string> files;
+    std::istringstream lines(command_output(git_command(checkout) +
+                                            "status --porcelain --untracked-files=no -- . ':(exclude)results' 2>/dev/null"));
+    for (std::string line; std::getline(lines, line);)
+        if (line.size() > 3) files.push_back(line.substr(3));
+    return files;
+}
+
+std::filesystem::path& chosen_run_checkout() {
+    static std::filesystem::path checkout;
+    return checkout;
+}
+
+// A bundle (scripts/gpu-bundle) is configured with the commit it is built from: that, not the git
+// state of the copy it runs in (stale or absent on the machine it travels to), says which code ran.
+bool built_from_recorded_commit() { return *CANOPY_BUILD_COMMIT != '\0'; }
 
 }  // namespace
 
@@ -119,17 +146,42 @@ std::string canopy_build_type() { return CANOPY_BUILD_TYPE; }
 
 std::filesystem::path source_checkout() { return CANOPY_SOURCE_DIR; }
 
+std::filesystem::path checkout_of(const std::filesystem::path& path) {
+    namespace fs = std::filesystem;
+    std::error_code error;
+    fs::path dir = fs::weakly_canonical(fs::absolute(path, error), error);
+    if (error) return {};
+    if (!fs::is_directory(dir, error)) dir = dir.parent_path();
+    for (; !dir.empty(); dir = dir.parent_path()) {
+        if (fs::exists(dir / ".git", error)) return dir;
+        if (dir == dir.root_path()) break;
+    }
+    return {};
+}
+
+std::filesystem::path run_checkout() {
+    if (!chosen_run_checkout().empty()) return chosen_run_checkout();
+    std::error_code error;
+    const std::filesystem::path here = checkout_of(std::filesystem::current_path(error));
+    return here.empty() ? source_checkout() : here;
+}
+
+void set_run_checkout_of(const std::filesystem::path& path) {
+    const std::filesystem::path checkout = checkout_of(path);
+    if (!checkout.empty()) chosen_run_checkout() = checkout;
+}
+
 std::optional<std::string> checkout_file_at(const std::string& commit, const std::string& relative_path) {
     // Both go into a shell command: a commit is hex, a recorded path has no quote.
     const bool hex = !commit.empty() && commit.find_first_not_of("0123456789abcdef") == std::string::npos;
     if (!hex || relative_path.empty() || relative_path.find('\'') != std::string::npos || relative_path.front() == '/')
         return std::nullopt;
     // Reading takes no lock in the checkout (another git command may be running there).
-    const std::string command = git_command() + "cat-file -e '" + commit + ":" + relative_path +
-                                "' 2>/dev/null && echo yes";
+    const std::string git = git_command(run_checkout());
+    const std::string command = git + "cat-file -e '" + commit + ":" + relative_path + "' 2>/dev/null && echo yes";
     if (command_output(command) != "yes") return std::nullopt;
     std::string out;
-    if (FILE* pipe = popen((git_command() + "show '" + commit + ":" + relative_path + "'").c_str(), "r")) {
+    if (FILE* pipe = popen((git + "show '" + commit + ":" + relative_path + "'").c_str(), "r")) {
         char buffer[4096];
         size_t n;
         while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) out.append(buffer, n);
@@ -138,14 +190,33 @@ std::optional<std::string> checkout_file_at(const std::string& commit, const std
     return out;
 }
 
-// A bundle (scripts/gpu-bundle) is configured with the commit it is built from: that, not the git
-// state of the copy it runs in (stale or absent on the machine it travels to), says which code ran.
-bool built_from_recorded_commit() { return *CANOPY_BUILD_COMMIT != '\0'; }
-
 std::string source_commit() {
     if (built_from_recorded_commit()) return CANOPY_BUILD_COMMIT;
-    const std::string commit = git_head();
+    const std::string commit = git_head(source_checkout());
     return commit.empty() ? "unknown" : commit;
+}
+
+bool Environment::commit_mismatch() const {
+    return !binary_commit.empty() && binary_commit != "unknown" && git_commit != "unknown" && binary_commit != git_commit;
+}
+
+std::string commit_text(const Environment& e) {
+    std::string text = e.git_commit;
+    if (e.git_dirty) {
+        text += " (with uncommitted changes";
+        for (size_t i = 0; i < e.dirty_files.size(); ++i) {
+            if (i == 8) {
+                text += fmt::format(" and {} more", e.dirty_files.size() - i);
+                break;
+            }
+            text += (i == 0 ? ": " : ", ") + e.dirty_files[i];
+        }
+        text += ")";
+    }
+    if (e.commit_mismatch())
+        text += fmt::format("; the binary was built from {}{}, not this checkout's commit", e.binary_commit,
+                            e.binary_dirty ? " (with uncommitted changes)" : "");
+    return text;
 }
 
 Environment collect_environment(const GpuContext& gpu, const std::string& config_hash) {
@@ -166,15 +237,20 @@ Environment collect_environment(const GpuContext& gpu, const std::string& config
     e.load_average = current_load_average();
     e.build_type = CANOPY_BUILD_TYPE;
     e.canopy_version = CANOPY_VERSION;
-    e.git_commit = source_commit();
-    // Changes to the sources, not to results/: regenerating committed results rewrites tracked files
-    // there (--force removes a folder's old outputs first), which says nothing about the code.
-    if (built_from_recorded_commit())
-        e.git_dirty = CANOPY_BUILD_DIRTY != 0;
-    else if (e.git_commit != "unknown")
-        e.git_dirty = !command_output(git_command() +
-                                      "status --porcelain --untracked-files=no -- . ':(exclude)results' 2>/dev/null")
-                           .empty();
+    e.binary_commit = source_commit();
+    if (built_from_recorded_commit()) {
+        // A bundle runs on a machine whose copy of the checkout is stale or absent: its own commit
+        // is the run's.
+        e.git_commit = e.binary_commit;
+        e.git_dirty = e.binary_dirty = CANOPY_BUILD_DIRTY != 0;
+    } else {
+        const std::filesystem::path checkout = run_checkout();
+        const std::string head = git_head(checkout);
+        e.git_commit = head.empty() ? "unknown" : head;
+        if (!head.empty()) e.dirty_files = changed_files(checkout);
+        e.git_dirty = !e.dirty_files.empty();
+        if (e.binary_commit != "unknown") e.binary_dirty = !changed_files(source_checkout()).empty();
+    }
     // A bundle's copy of the checkout has fresh file times and the bundle names its own commit.
     if (!built_from_recorded_commit()) e.binary_older_than = source_newer_than_this_binary();
     char host[256] = {};
@@ -214,6 +290,10 @@ void to_json(nlohmann::json& j, const Environment& e) {
          {"canopy_version", e.canopy_version},
          {"commit", e.git_commit},
          {"commit_dirty", e.git_dirty},
+         {"commit_dirty_files", e.dirty_files},
+         {"binary_commit", e.binary_commit},
+         {"binary_commit_dirty", e.binary_dirty},
+         {"commit_mismatch", e.commit_mismatch()},
          {"binary_older_than", e.binary_older_than},
          {"hostname", e.hostname},
          {"config_hash", e.config_hash}};
@@ -241,6 +321,9 @@ void from_json(const nlohmann::json& j, Environment& e) {
     read("canopy_version", e.canopy_version);
     read("commit", e.git_commit);
     read("commit_dirty", e.git_dirty);
+    read("commit_dirty_files", e.dirty_files);
+    read("binary_commit", e.binary_commit);
+    read("binary_commit_dirty", e.binary_dirty);
     read("binary_older_than", e.binary_older_than);
     read("hostname", e.hostname);
     read("config_hash", e.config_hash);

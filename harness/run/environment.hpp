@@ -35,8 +35,19 @@ struct Environment {
     std::array<double, 3> load_average{};  // 1, 5 and 15 minutes, when the environment was collected
     std::string build_type;        // CMAKE_BUILD_TYPE of this binary
     std::string canopy_version;
-    std::string git_commit;        // "unknown" outside a git checkout
-    bool git_dirty = false;        // uncommitted changes in the source tree
+    // The checkout the run is in (run_checkout(): the experiment config's), read without taking
+    // git's lock: its commit ("unknown" outside a git checkout), whether it has uncommitted changes
+    // to anything but results/, and which files those are.
+    std::string git_commit;
+    bool git_dirty = false;
+    std::vector<std::string> dirty_files;
+    // The commit this binary was built from (source_commit()), recorded apart: a build copied or
+    // moved from another checkout, or older than the checkout's commit, runs other code than
+    // `git_commit` says. "" in records older than this field.
+    std::string binary_commit;
+    bool binary_dirty = false;
+    // The binary's commit is known and is not the checkout's (commit_mismatch_text says how).
+    bool commit_mismatch() const;
     // A source file changed after this binary was linked (run/binary_freshness.hpp), or "": the
     // numbers then come from other code than `git_commit` says.
     std::string binary_older_than;
@@ -45,11 +56,23 @@ struct Environment {
 };
 
 Environment collect_environment(const GpuContext& gpu, const std::string& config_hash);
+// "6153c3b… (with uncommitted changes: a.cpp, b.toml)", and when the binary was built from another
+// commit, "; the binary was built from <commit>, not this checkout's commit": how every report
+// names the code a run measured.
+std::string commit_text(const Environment& e);
 // The checkout this binary was built from, and its commit ("unknown" outside a git checkout).
 std::filesystem::path source_checkout();
 std::string source_commit();
-// A file of that checkout as `commit` had it (path relative to the checkout), read without taking
-// git's lock; nothing when the commit or the file is not there.
+// The git checkout holding `path` (the nearest folder above it with a .git), or "" when none does.
+std::filesystem::path checkout_of(const std::filesystem::path& path);
+// The checkout a run is in: where set_run_checkout put it (the experiment config's checkout), else
+// the working directory's checkout, else the binary's own (source_checkout()). Results record their
+// paths relative to it (recorded_path.hpp) and collect_environment reads its commit.
+std::filesystem::path run_checkout();
+// Makes `path`'s checkout (checkout_of) the run's, when it is in one; otherwise changes nothing.
+void set_run_checkout_of(const std::filesystem::path& path);
+// A file of the run's checkout as `commit` had it (path relative to the checkout), read without
+// taking git's lock; nothing when the commit or the file is not there.
 std::optional<std::string> checkout_file_at(const std::string& commit, const std::string& relative_path);
 std::string canopy_build_type();  // CMAKE_BUILD_TYPE of this binary
 std::array<double, 3> current_load_average();  // /proc/loadavg: 1, 5 and 15 minutes; zeros if unknown

@@ -67,10 +67,9 @@ int run_family_benchmark(const FamilyBenchmark& benchmark, const std::filesystem
     json["environment"] = environment;
     json["numbers"] = result.numbers;
     const std::string footer =
-        fmt::format("\ncanopy {} on {} ({}), {}, nproc {}, LP_NUM_THREADS {}, commit {}{}; `canopy bench {}` {} on {}.\n",
+        fmt::format("\ncanopy {} on {} ({}), {}, nproc {}, LP_NUM_THREADS {}, commit {}; `canopy bench {}` {} on {}.\n",
                     environment.canopy_version, environment.device.name, environment.device.driver_info,
-                    environment.cpu_model, environment.nproc, environment.lp_num_threads, environment.git_commit,
-                    environment.git_dirty ? " (with uncommitted changes)" : "", benchmark.name(), params.summary(),
+                    environment.cpu_model, environment.nproc, environment.lp_num_threads, commit_text(environment), benchmark.name(), params.summary(),
                     scene_file.string());
     std::filesystem::create_directories(out);
     write_text_atomically(out / (benchmark.name() + ".json"), json.dump(2) + "\n");

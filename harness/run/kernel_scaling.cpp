@@ -147,10 +147,9 @@ std::string kernel_scaling_report(const std::vector<ScalingSeries>& series, cons
                        "(least squares over p in [0.2, 3.5], a ≥ 0 and b linear). Separable filters should give p ≈ 1, "
                        "K×K kernels (PCF, PCSS) p ≈ 2. Scene `{}` at {}x{}; per technique, every width renders {} "
                        "warm-up frames, then {} rounds in which each width renders one frame in turn (interleaved, "
-                       "the median over the rounds is the point); canopy {} on {} ({}), nproc {}, LP_NUM_THREADS {}, commit {}{}.\n\n",
+                       "the median over the rounds is the point); canopy {} on {} ({}), nproc {}, LP_NUM_THREADS {}, commit {}.\n\n",
                        recorded_path(options.scene_file), options.width, options.height, options.warmup, options.measured,
-                       e.canopy_version, e.device.name, e.device.driver_info, e.nproc, e.lp_num_threads, e.git_commit,
-                       e.git_dirty ? " (with uncommitted changes)" : "");
+                       e.canopy_version, e.device.name, e.device.driver_info, e.nproc, e.lp_num_threads, commit_text(e));
     out += "| technique | swept | passes timed | fitted p | expected | R² | a (ms) | widths: median ms |\n";
     out += "|---|---|---|---:|---:|---:|---:|---|\n";
     for (const auto& s : series) {

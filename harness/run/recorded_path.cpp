@@ -11,7 +11,7 @@ std::string recorded_path(const std::filesystem::path& path) {
     std::error_code error;
     const fs::path full = fs::weakly_canonical(fs::absolute(path), error);
     if (error) return path.generic_string();
-    const fs::path root = fs::weakly_canonical(source_checkout(), error);
+    const fs::path root = fs::weakly_canonical(run_checkout(), error);
     if (!error) {
         const auto [root_end, full_at] = std::mismatch(root.begin(), root.end(), full.begin(), full.end());
         if (root_end == root.end()) return full.lexically_relative(root).generic_string();

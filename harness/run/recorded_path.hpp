@@ -8,7 +8,8 @@
 
 namespace canopy {
 
-// Relative to the checkout when `path` is inside it; otherwise absolute. Forward slashes.
+// Relative to the run's checkout (run_checkout()) when `path` is inside it; otherwise absolute.
+// Forward slashes.
 std::string recorded_path(const std::filesystem::path& path);
 
 }  // namespace canopy

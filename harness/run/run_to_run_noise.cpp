@@ -88,7 +88,7 @@ std::vector<fs::path> stability_folders(const fs::path& checkout) {
 }
 
 RunToRunNoise checkout_run_to_run_noise(const std::string& device) {
-    return run_to_run_noise(stability_folders(source_checkout()), device);
+    return run_to_run_noise(stability_folders(run_checkout()), device);
 }
 
 fs::path repeated_run_folder(const fs::path& run_dir, int k) { return run_dir / "runs" / fmt::format("run-{}", k); }
