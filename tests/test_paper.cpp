@@ -149,6 +149,28 @@ TEST_CASE("claims are judged per column from canopy's numbers") {
     CHECK_FALSE(verdicts[0].decided());
 }
 
+TEST_CASE("no verdict rests on a case whose reference is degenerate (every technique matches it)") {
+    const Experiment e = load_experiment(write_experiment("degenerate.toml", kPaper), TechniqueRegistry::instance());
+    RunRecord run;
+    run.cases = {fake_case("shadow.hard", 0, constant(10.0), 0.06), fake_case("shadow.pcf", 3, constant(10.5), 0.04),
+                 fake_case("shadow.pcf", 5, constant(20.0), 0.03)};
+    ReferenceRecord reference;
+    reference.scene = "tiny";
+    reference.resolution = {96, 64};
+    run.references = {reference};
+    REQUIRE(judge_claims(*e.paper, run, kNoNoise)[2].outcome == "holds");
+    // A camera inside a closed sphere: no lit pixel, one colour everywhere.
+    run.references[0].degenerate = {"no lit pixels", "uniform image"};
+    for (const ClaimVerdict& v : judge_claims(*e.paper, run, kNoNoise)) {
+        CAPTURE(v.text);
+        CHECK(v.outcome == "not judged: flagged case");
+        CHECK_FALSE(v.decided());
+        CHECK(v.because.find("every case it compares is flagged") != std::string::npos);
+    }
+    // paper.md says why beside the verdict, and results.md's table flags the cases.
+    CHECK(paper_report(*e.paper, run, kNoNoise).find("not judged: flagged case") != std::string::npos);
+}
+
 TEST_CASE("a timing claim from too few samples says so instead of a verdict") {
     const Experiment e = load_experiment(write_experiment("few.toml", kPaper), TechniqueRegistry::instance());
     RunRecord run;

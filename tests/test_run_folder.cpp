@@ -89,10 +89,18 @@ RunRecord awkward_record(const RunIdentity& id) {
     r.pixel_visibility_shadow_rays = 1ull << 40;
     r.pixel_visibility_samples = 1024;
     r.pixel_visibility_exr = "images/reference_tiny_96x64.pixel_visibility.exr";
+    r.degenerate = {"uniform image", "no lit pixels"};
     run.references.push_back(r);
+    run.inputs = {{"tests/data/experiments/tiny.toml", "0123456789abcdef"}, {"tests/data/scenes/tiny.toml", "fedcba9876543210"}};
+    run.environment.git_commit = "abc";
+    run.environment.git_dirty = true;
+    run.environment.dirty_files = {"harness/a.cpp", "configs/b \"quoted\".toml"};
+    run.environment.binary_commit = "def";
+    run.environment.binary_dirty = true;
     CaseResult c;
     c.id = "tiny_96x64_shadow.pcf_kernel-3";
     c.scene = "tiny";
+    c.scene_variant = "{ file = \"../scenes/tiny.toml\", name = \"tiny\", light_casts_shadows = false }";
     c.technique = "shadow.pcf";
     c.resolution = {96, 64};
     c.params = {{"exact", true}, {"kernel", 3LL}, {"pattern", std::string("grid")}, {"radius", 1.0}};
@@ -214,11 +222,18 @@ TEST_CASE("results.json reads back exactly: every field, NaN, infinity, every di
     // Written again, the cases, references and run fields are the same text: nothing was lost.
     const nlohmann::json a = nlohmann::json::parse(json_report(run)), b = nlohmann::json::parse(json_report(back));
     for (const char* key : {"cases", "groups", "references", "run_identity", "status", "error", "started_at", "resumed_at",
-                            "rounds", "frames_per_sample", "measured_frames", "warmup_frames", "quick", "planned_cases", "config", "description", "camera_path", "distance_bands"})
+                            "rounds", "frames_per_sample", "measured_frames", "warmup_frames", "quick", "planned_cases", "config", "description", "camera_path", "distance_bands",
+                            "inputs", "environment"})
         CHECK_MESSAGE(a[key].dump() == b[key].dump(), key);
     CHECK(back.cases[0].gpu_frame.samples_ms[2] == 1.0 / 7.0);
     CHECK(back.cases[0].ratio.per_round[1] == 2.0 / 3.0);
     CHECK(back.cases[0].node == "node-7");
+    CHECK(back.cases[0].scene_variant == run.cases[0].scene_variant);
+    CHECK(back.references[0].degenerate == run.references[0].degenerate);
+    CHECK(back.environment.dirty_files == run.environment.dirty_files);
+    CHECK(back.environment.commit_mismatch());
+    CHECK(commit_text(back.environment) == "abc (with uncommitted changes: harness/a.cpp, configs/b \"quoted\".toml); "
+                                           "the binary was built from def (with uncommitted changes), not this checkout's commit");
     CHECK(back.shard == "2/3");
     REQUIRE(back.merged_from.size() == 1);
     CHECK(back.merged_from[0].groups == std::vector<std::string>{"tiny 96x64"});
@@ -322,14 +337,20 @@ TEST_CASE("an output folder: new or empty starts, the same run continues, anythi
     // --force replaces it (without --resume).
     const OutputFolderPlan forced = plan_output_folder(dir, identity(false), true, false);
     CHECK(forced.replace);
-    CHECK_FALSE(forced.previous);
+    REQUIRE(forced.previous);  // the run replaced: its recorded files are what --force removes
+    CHECK(forced.previous->cases.size() == 2);
 
-    // Files but no run: refused unless --force.
+    // Files but no run: refused, with --force too (canopy removes only what a run of its recorded).
     fs::remove(dir / "results.json");
     std::ofstream(dir / "notes.txt") << "mine";
-    CHECK_THROWS_WITH_AS(plan_output_folder(dir, identity(), false, false), doctest::Contains("holds no canopy run"),
+    for (bool force : {false, true})
+        CHECK_THROWS_WITH_AS(plan_output_folder(dir, identity(), force, false), doctest::Contains("holds no canopy run"),
+                             ConfigError);
+    // A results.json canopy cannot read is no run of canopy's either.
+    std::ofstream(dir / "results.json") << "{ my own notes";
+    CHECK_THROWS_WITH_AS(plan_output_folder(dir, identity(), true, false), doctest::Contains("with or without --force"),
                          ConfigError);
-    CHECK(plan_output_folder(dir, identity(), true, false).replace);
+    fs::remove(dir / "results.json");
     // A file is no folder.
     CHECK_THROWS_WITH_AS(plan_output_folder(dir / "notes.txt", identity(), false, false),
                          doctest::Contains("names a file"), ConfigError);
@@ -352,21 +373,41 @@ TEST_CASE("committed results are refused without --force, even when empty or new
     CHECK_FALSE(fs::exists(root));  // deciding writes nothing
 }
 
-TEST_CASE("replacing a run removes canopy's files only; a killed run's temporary files are cleaned") {
+TEST_CASE("replacing a run removes the files it recorded only; a killed run's temporary files are cleaned") {
     const test::TempFolder folder;
     const fs::path dir = folder.path() / "replace";
     fs::create_directories(dir / "images");
-    for (const char* name : {"results.json", "results.csv", "results.md", "paper.md", "paper.json", "pareto.md", "report.html", "notes.txt", "images/a.exr",
-                             "images/a.error.png", "images/.a.tmp123.png", ".results.tmp9.json", "images/keep.txt"})
+    // The run recorded one case with two images and one reference image.
+    RunRecord run;
+    CaseResult c;
+    c.id = "a";
+    c.image_exr = "images/a.exr";
+    c.error_map_png = "images/a.error.png";
+    run.cases.push_back(c);
+    ReferenceRecord r;
+    r.image_png = "images/reference.png";
+    run.references.push_back(r);
+    for (const char* name : {"results.json", "results.csv", "results.md", "results.gbench.json", "paper.md",
+                             "paper.json", "pareto.md", "report.html", "notes.txt", "images/a.exr", "images/a.error.png",
+                             "images/reference.png", "images/.a.tmp123.png", ".results.tmp9.json", "images/keep.txt",
+                             "images/holiday.png", "images/b.exr"})
         std::ofstream(dir / name) << "x";
     remove_temporary_files(dir);
     CHECK_FALSE(fs::exists(dir / "images/.a.tmp123.png"));
     CHECK_FALSE(fs::exists(dir / ".results.tmp9.json"));
     CHECK(fs::exists(dir / "results.json"));
-    CHECK(remove_run_outputs(dir) == 9);
-    CHECK(fs::exists(dir / "notes.txt"));
-    CHECK(fs::exists(dir / "images/keep.txt"));
+    CHECK(remove_run_outputs(dir, run) == 11);
+    // Whatever is not recorded stays, whatever its name or extension.
+    for (const char* kept : {"notes.txt", "images/keep.txt", "images/holiday.png", "images/b.exr"})
+        CHECK_MESSAGE(fs::exists(dir / kept), kept);
     CHECK_FALSE(fs::exists(dir / "images/a.exr"));
+    CHECK_FALSE(fs::exists(dir / "images/reference.png"));
+    // A recorded name that climbs out of the folder is not removed.
+    std::ofstream(folder.path() / "outside.txt") << "x";
+    c.image_png = "../outside.txt";
+    run.cases = {c};
+    remove_run_outputs(dir, run);
+    CHECK(fs::exists(folder.path() / "outside.txt"));
 }
 
 TEST_CASE("paths in results are relative to the checkout, not the machine's folders") {

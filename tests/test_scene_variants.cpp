@@ -30,6 +30,11 @@ TEST_CASE("a scene variant's camera replaces the keys it gives and keeps the oth
     CHECK(e.scenes[1].camera.fov_y_degrees == doctest::Approx(5));
     CHECK(e.scenes[1].camera.near_plane == doctest::Approx(0.2));  // kept
     CHECK(e.scenes[1].camera.target == e.scenes[0].camera.target);
+    // Each case records the overrides it ran with (results.json's scene_variant), on one line.
+    CHECK(e.scenes[0].variant.empty());
+    CHECK(e.scenes[1].variant.find("name = 'far'") != std::string::npos);
+    CHECK(e.scenes[1].variant.find("fov = 5") != std::string::npos);
+    CHECK(e.scenes[1].variant.find('\n') == std::string::npos);
 }
 
 TEST_CASE("a scene variant's camera mistakes name their line and the fix") {

@@ -15,6 +15,7 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <sstream>
 #include <optional>
 #include <set>
 
@@ -168,7 +169,13 @@ std::vector<Scene> read_scenes(TomlReader& reader, std::vector<std::filesystem::
                                       ? "check the path, or give it relative to the experiment file's folder"
                                       : "scene paths are relative to the experiment file's folder");
         Scene scene = load_scene(scene_file);  // its errors carry the scene file's own file:line
-        if (variant) apply_scene_variant(*variant, scene);
+        if (variant) {
+            apply_scene_variant(*variant, scene);
+            std::ostringstream text;
+            text << *element.as_table();
+            scene.variant = text.str();
+            std::replace(scene.variant.begin(), scene.variant.end(), '\n', ' ');
+        }
         scenes.push_back(std::move(scene));
         scene_files.push_back(scene_file);
     }

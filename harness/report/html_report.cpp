@@ -1,5 +1,7 @@
 #include "report/html_report.hpp"
 
+#include "metrics/reference_degeneracy.hpp"
+
 #include "core/registry.hpp"
 #include "metrics/colormaps.hpp"
 #include "metrics/metric_registry.hpp"
@@ -125,8 +127,7 @@ std::string environment_section(const RunRecord& run) {
         {"device", fmt::format("{} ({}, {}), Vulkan {}", e.device.name, e.device.type, e.device.driver_info, e.device.api_version)},
         {"CPU", fmt::format("{}, {} threads allowed ({}), LP_NUM_THREADS {}", e.cpu_model, e.nproc, e.cpus_allowed, e.lp_num_threads)},
         {"load average", fmt::format("{:.2f} {:.2f} {:.2f}", e.load_average[0], e.load_average[1], e.load_average[2])},
-        {"canopy", fmt::format("{} ({}), commit {}{}", e.canopy_version, e.build_type, e.git_commit,
-                               e.git_dirty ? " with uncommitted changes" : "")},
+        {"canopy", fmt::format("{} ({}), commit {}", e.canopy_version, e.build_type, commit_text(e))},
         {"measurement", fmt::format("{} warm-up frames, {} rounds of {} frames per case{}", run.warmup_frames, run.rounds,
                                     run.frames_per_sample, run.quick ? " (--quick: a smoke test, not a measurement)" : "")},
     };
@@ -135,6 +136,10 @@ std::string environment_section(const RunRecord& run) {
         html += fmt::format("<p class=\"warning\">The canopy binary was older than {}: these numbers may come from other "
                             "code than the commit says.</p>\n",
                             html_escape(e.binary_older_than));
+    if (e.commit_mismatch())
+        html += fmt::format("<p class=\"warning\">The canopy binary was built from {}, not from the checkout's commit "
+                            "{}: these numbers come from the binary's code.</p>\n",
+                            html_escape(e.binary_commit), html_escape(e.git_commit));
     html += "<table class=\"environment\">\n";
     for (const auto& [key, value] : rows) html += "<tr>" + cell(key) + cell(value) + "</tr>\n";
     return html + "</table>\n";
@@ -167,7 +172,9 @@ std::string results_section(const RunRecord& run, const CaseLabels& labels) {
         }
         const double mib = double(c.memory.technique_bytes) / (1024.0 * 1024.0);
         html += cell(fmt::format("{:.2f}", mib), true, mib);
-        html += cell(c.ok ? "ok" : "failed: " + c.error) + "</tr>\n";
+        // A case measured against a degenerate reference says so where its status is read.
+        const std::string flag = degenerate_reference_text(degenerate_reasons(run, c));
+        html += cell(c.ok ? (flag.empty() ? "ok" : "ok; " + flag) : "failed: " + c.error) + "</tr>\n";
     }
     return html + "</tbody></table>\n";
 }

@@ -97,6 +97,7 @@ CaseResult read_case(const json& j) {
     CaseResult c;
     c.id = j.at("id").get<std::string>();
     c.scene = j.at("scene").get<std::string>();
+    c.scene_variant = j.value("scene_variant", std::string());  // absent in files older than the key
     c.technique = j.at("technique").get<std::string>();
     c.resolution = {j.at("width").get<int>(), j.at("height").get<int>()};
     for (const auto& [name, value] : j.at("params").items()) c.params.emplace_back(name, read_param(value));
@@ -184,6 +185,7 @@ ReferenceRecord read_reference(const json& j) {
     r.light_samples = j.at("light_samples").get<int>();
     r.pixel_samples = j.at("pixel_samples").get<int>();
     r.error_map_scale = j.at("error_map_scale").get<double>();
+    if (j.contains("degenerate")) r.degenerate = j.at("degenerate").get<std::vector<std::string>>();
     const json& pixel_visibility = j.at("pixel_visibility");
     r.pixel_visibility_key = pixel_visibility.at("key").get<std::string>();
     r.pixel_visibility_from_cache = pixel_visibility.at("from_cache").get<bool>();
@@ -247,6 +249,9 @@ RunRecord read_json_report(const std::filesystem::path& file) {
         }
         if (j.contains("distance_bands") && !j.at("distance_bands").is_null())  // absent in files older than the key
             run.distance_bands = DistanceBands{j.at("distance_bands").at(0).get<double>(), j.at("distance_bands").at(1).get<double>()};
+        if (j.contains("inputs"))  // absent in files older than the key
+            for (const json& f : j.at("inputs"))
+                run.inputs.push_back({f.at("file").get<std::string>(), f.at("fnv1a_64").get<std::string>()});
         run.planned_cases = j.at("planned_cases").get<size_t>();
         run.reference_enabled = j.at("reference_enabled").get<bool>();
         run.environment = j.at("environment").get<Environment>();

@@ -58,6 +58,7 @@ nlohmann::json reference_json(const ReferenceRecord& r) {
             {"light_samples", r.light_samples},
             {"pixel_samples", r.pixel_samples},
             {"error_map_scale", r.error_map_scale},
+            {"degenerate", r.degenerate},
             {"pixel_visibility",
              {{"key", r.pixel_visibility_key},
               {"from_cache", r.pixel_visibility_from_cache},
@@ -177,6 +178,7 @@ nlohmann::json case_json(const CaseResult& c) {
     const nlohmann::json passes = series_list_json(c.passes);
     return {{"id", c.id},
             {"scene", c.scene},
+            {"scene_variant", c.scene_variant},
             {"technique", c.technique},
             {"width", c.resolution.width},
             {"height", c.resolution.height},
@@ -237,10 +239,13 @@ std::string json_report(const RunRecord& run) {
                                {"finished_at", m.finished_at}, {"cases", m.cases}, {"groups", m.groups}});
     nlohmann::json identity = nlohmann::json::object();
     for (const auto& [name, value] : run.identity.fields) identity[name] = value;
+    nlohmann::json inputs = nlohmann::json::array();
+    for (const InputFile& f : run.inputs) inputs.push_back({{"file", f.file}, {"fnv1a_64", f.hash}});
     nlohmann::json j = {{"canopy_results_version", kResultsVersion},
                         {"experiment", run.experiment},
                         {"description", run.description},
                         {"config", run.config_file},
+                        {"inputs", inputs},
                         {"status", run.status},
                         {"error", run.error},
                         {"run_identity", identity},

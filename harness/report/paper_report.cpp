@@ -1,5 +1,7 @@
 #include "report/paper_report.hpp"
 
+#include "metrics/reference_degeneracy.hpp"
+
 #include "config/claim_rules.hpp"
 #include "core/registry.hpp"
 #include "metrics/metric_registry.hpp"
@@ -237,7 +239,7 @@ std::vector<ClaimVerdict> judge_claims(const PaperComparison& paper, const RunRe
         std::string numbers, magnitudes, gaps;
         Tally direction, magnitude;
         bool noise_unknown = false;
-        std::string unconverged;
+        std::string unconverged, flagged;
         size_t fewest_samples = std::numeric_limits<size_t>::max();
         const bool timing = claim.metric == kTimeClaim;
         const double t = claim.ratio_tolerance;
@@ -247,6 +249,14 @@ std::vector<ClaimVerdict> judge_claims(const PaperComparison& paper, const RunRe
             if (!l || !r) continue;
             const std::string where = col == right_col ? paper.columns[col]
                                                        : paper.columns[col] + " vs " + paper.columns[right_col];
+            // A case measured against a degenerate reference (every technique matches it) decides
+            // nothing, its time included: the scene is not the one the claim is about.
+            if (const auto& reasons = !degenerate_reasons(run, *l).empty() ? degenerate_reasons(run, *l)
+                                                                            : degenerate_reasons(run, *r);
+                !reasons.empty()) {
+                flagged += fmt::format("{}{}: {}", flagged.empty() ? "" : "; ", where, degenerate_reference_text(reasons));
+                continue;
+            }
             // The paper's left/right in this column pair: the claim's, or its table's.
             const double target = std::isfinite(claim.ratio)
                                       ? claim.ratio
@@ -330,6 +340,10 @@ std::vector<ClaimVerdict> judge_claims(const PaperComparison& paper, const RunRe
                                               claim.right, claim.offset != 0.0 ? fmt::format(" {:+g}", claim.offset) : "");
         v.because = direction.measured ? fmt::format("{} of {} is {} {}: {}", claim.metric, claim.left, relation, bound, numbers)
                                        : "no measured case for one of the rows";
+        if (direction.measured == 0 && !flagged.empty()) {
+            v.outcome = "not judged: flagged case";
+            v.because = "every case it compares is flagged";
+        }
         if (too_few)
             v.because = fmt::format("too few samples ({} < {}) to judge a timing claim; {}", fewest_samples,
                                     kMinTimingSamples, v.because);
@@ -344,6 +358,7 @@ std::vector<ClaimVerdict> judge_claims(const PaperComparison& paper, const RunRe
         }
         if (!gaps.empty()) v.unequal_quality = "unequal quality: " + gaps;
         v.because += unconverged;
+        if (!flagged.empty()) v.because += "; not judged where the case is flagged (" + flagged + ")";
         if (noise_unknown && direction.measured > 0)
             v.because += "; the reference's noise was not measured by this run (made before canopy measured it): "
                          "the verdict does not account for it";
@@ -356,10 +371,10 @@ std::string paper_report(const PaperComparison& paper, const RunRecord& run, con
     std::string out = fmt::format("# {} — {}\n\n", paper.id, paper.title);
     if (!paper.source.empty()) out += fmt::format("Source: {}.\n\n", paper.source);
     const Environment& e = run.environment;
-    out += fmt::format("canopy {} on {} ({}), nproc {}, LP_NUM_THREADS {}, commit {}{}; experiment `{}` (config hash {}); "
+    out += fmt::format("canopy {} on {} ({}), nproc {}, LP_NUM_THREADS {}, commit {}; experiment `{}` (config hash {}); "
                        "{} warm-up frames + {} rounds of {} frame{} per case{}.\n\n",
-                       e.canopy_version, e.device.name, e.device.driver_info, e.nproc, e.lp_num_threads, e.git_commit,
-                       e.git_dirty ? " (with uncommitted changes)" : "", run.config_file, e.config_hash,
+                       e.canopy_version, e.device.name, e.device.driver_info, e.nproc, e.lp_num_threads, commit_text(e),
+                       run.config_file, e.config_hash,
                        run.warmup_frames, run.rounds, run.frames_per_sample, run.frames_per_sample == 1 ? "" : "s",
                        run.quick ? " (--quick)" : "");
 

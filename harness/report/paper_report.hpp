@@ -28,7 +28,8 @@ inline constexpr size_t kMinTimingSamples = 6;
 struct ClaimVerdict {
     std::string text;
     // The direction (the relation): holds | does not hold | within noise | too few samples |
-    // not measured | not tested by canopy
+    // not measured | not tested by canopy | not judged: flagged case (every case it compares was
+    // measured against a degenerate reference, metrics/reference_degeneracy.hpp)
     std::string outcome = "not measured";
     bool decided() const { return outcome == "holds" || outcome == "does not hold"; }
     bool holds() const { return outcome == "holds"; }

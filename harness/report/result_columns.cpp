@@ -1,5 +1,7 @@
 #include "report/result_columns.hpp"
 
+#include "metrics/reference_degeneracy.hpp"
+
 #include "report/pareto.hpp"
 
 #include "metrics/metric_registry.hpp"
@@ -361,6 +363,27 @@ std::vector<ResultColumn> make_columns() {
                                     [](C c) { return Cells{c.ok ? "ok" : "FAILED: " + c.error}; }));
     columns.push_back(csv_only("device", [](R run, C) { return quoted(run.environment.device.name); }));
     columns.push_back(csv_only("commit", [](R run, C) { return quoted(run.environment.git_commit); }));
+    {
+        // A reference every technique matches (metrics/reference_degeneracy.hpp): the case's
+        // errors say nothing about it. Shown in results.md when any case is flagged.
+        ResultColumn flag;
+        flag.name = "reference_flag";
+        flag.csv = [](R run) {
+            return CsvBound{{"reference_flag"}, [&run](C c) {
+                                return Cells{quoted(degenerate_reference_text(degenerate_reasons(run, c)))};
+                            }};
+        };
+        flag.markdown = [](R run) {
+            const bool any = std::any_of(run.references.begin(), run.references.end(),
+                                         [](const ReferenceRecord& r) { return !r.degenerate.empty(); });
+            if (!any) return MarkdownBound{{}, [](C) { return Cells{}; }};
+            return MarkdownBound{{{"flag", false}}, [&run](C c) {
+                                     const std::string text = degenerate_reference_text(degenerate_reasons(run, c));
+                                     return Cells{text.empty() ? "-" : "**" + text + "**"};
+                                 }};
+        };
+        columns.push_back(std::move(flag));
+    }
     return columns;
 }
 

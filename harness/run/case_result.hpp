@@ -35,6 +35,9 @@ struct RatioRecord {
 struct CaseResult {
     std::string id;
     std::string scene;
+    // The experiment's overrides of the scene's file for this case (Scene::variant: its name,
+    // light_casts_shadows, camera, population parameters ...), "" when it renders the file as is.
+    std::string scene_variant;
     std::string technique;
     Resolution resolution;
     std::vector<std::pair<std::string, ParamValue>> params;
@@ -108,6 +111,10 @@ struct ReferenceRecord {
     uint64_t shadow_rays = 0;
     int light_samples = 0, pixel_samples = 0;
     double error_map_scale = 0;  // luminance error drawn at the top of the heat maps
+    // Why it cannot tell techniques apart (metrics/reference_degeneracy.hpp: "no lit pixels",
+    // "uniform image", "no penumbra"); empty when it can. Its cases are flagged in every table and
+    // no claim's verdict rests on them.
+    std::vector<std::string> degenerate;
     std::string image_exr, image_png, visibility_exr;
     // The pixel-centre visibility the technique-isolated error and the shadow masks come from
     // (reference/pixel_visibility.hpp), cached under its own key.
@@ -139,10 +146,19 @@ struct GroupRecord {
     const std::string& baseline() const { return cases.front(); }
 };
 
+// A file the run read, with a hash of its bytes as they were read.
+struct InputFile {
+    std::string file;  // recorded_path: relative to the run's checkout
+    std::string hash;  // FNV-1a 64 of its bytes, hex (the hash config_hash chains)
+};
+
 struct RunRecord {
     std::string experiment;
     std::string description;
     std::string config_file;
+    // The experiment config, then every file it read (scene files, meshes, height and density
+    // maps), as the run read them; a copy of the config's bytes is the run folder's experiment.toml.
+    std::vector<InputFile> inputs;
     Environment environment;
     int warmup_frames = 0;         // per case, before the first round of its chunk
     int rounds = 0;                // measured samples per case
@@ -174,5 +190,10 @@ struct RunRecord {
     std::vector<GroupRecord> groups;  // those with recorded cases, in the experiment's order
     std::vector<CaseResult> cases;
 };
+
+// The reference `c` was compared with (same scene and resolution), or null.
+const ReferenceRecord* reference_of(const RunRecord& run, const CaseResult& c);
+// Why that reference is degenerate (ReferenceRecord::degenerate), empty when it is not or none.
+const std::vector<std::string>& degenerate_reasons(const RunRecord& run, const CaseResult& c);
 
 }  // namespace canopy

@@ -51,6 +51,9 @@ struct Light {
 struct Scene {
     std::string name;
     std::filesystem::path file;          // the TOML it came from
+    // The experiment's overrides of the file (a scene variant), as written there on one line
+    // ("{ file = \"../scenes/grass.toml\", name = \"grass-far\", camera = { ... } }"), "" for none.
+    std::string variant;
     Camera camera;
     std::vector<Light> lights;           // the first shadow-casting light is the one techniques shadow
     glm::vec3 ambient{0.03f, 0.03f, 0.03f};  // constant ambient radiance multiplied by albedo
