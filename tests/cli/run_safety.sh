@@ -54,6 +54,24 @@ sed -e 's/kernel = \[3, 5\]/kernel = [3, 7]/' -e "s|\.\./scenes/|$data/scenes/|"
 sed -e 's/^name = "tiny"/name = "tiny-groups"/' -e 's/resolutions = \[\[96, 64\]\]/resolutions = [[96, 64], [64, 48]]/' \
   -e "s|\.\./scenes/|$data/scenes/|" "$data/experiments/tiny.toml" >"$work/groups.toml"
 
+# One group of 21 cases (the hard shadow, then PCF at 5 kernels x 4 map sizes): two chunks (16 cases
+# each at most, the baseline in both).
+sed -e 's/^name = "tiny"/name = "tiny-chunks"/' -e 's/resolutions = \[\[96, 64\]\]/resolutions = [[48, 32]]/' \
+  -e 's/^resolution = 256$/resolution = [64, 128, 256, 512]/' -e 's/kernel = \[3, 5\]/kernel = [3, 5, 7, 9, 11]/' \
+  -e "s|\.\./scenes/|$data/scenes/|" "$data/experiments/tiny.toml" >"$work/chunks.toml"
+# The hard shadow has one map size: the baseline stays one case.
+python3 - "$work/chunks.toml" <<'PY'
+import sys
+path = sys.argv[1]
+text = open(path).read().replace('name = "shadow.hard"\n[technique.params]\nresolution = [64, 128, 256, 512]',
+                                 'name = "shadow.hard"\n[technique.params]\nresolution = 256', 1)
+open(path, "w").write(text)
+PY
+run_chunks() {
+  local out=$1; shift
+  "$canopy" run "$work/chunks.toml" --out "$out" --quick --no-progress --no-reference "$@" >"$work/stdout" 2>"$work/stderr"
+}
+
 case $case in
   folder_protection)
     run_tiny "$work/a" || fail "first run failed: $(cat "$work/stderr")"
@@ -100,9 +118,124 @@ case $case in
     ls "$work/a/images" | grep -q "kernel-7" || fail "the new run wrote no images"
     [ "$(json "$work/a/results.json" "len(j['cases'])")" == 3 ] || fail "results.json is not the new run's"
     [ -f "$work/a/notes.txt" ] || fail "--force removed a file canopy did not write"
+    # A user's own files named like canopy's, in a folder holding no canopy run: refused even
+    # with --force, and every file stays.
+    mkdir -p "$work/user/images"
+    for f in results.csv paper.md images/holiday.png; do echo "mine $f" >"$work/user/$f"; done
+    before=$(snapshot "$work/user")
+    run_tiny "$work/user" --force; expect_refused $? "holds no canopy run.*with or without --force"
+    [ "$(snapshot "$work/user")" == "$before" ] || fail "--force changed a folder holding no canopy run"
+    # Beside a canopy run, --force removes what that run recorded and keeps the user's image.
+    run_tiny "$work/b" || fail "run into b failed"
+    echo holiday >"$work/b/images/holiday.png"
+    "$canopy" run "$work/other.toml" --out "$work/b" --quick --no-progress --reference-cache "$work/cache" --force \
+      >"$work/stdout" 2>"$work/stderr" || fail "--force run into b failed: $(cat "$work/stderr")"
+    [ "$(cat "$work/b/images/holiday.png")" == holiday ] || fail "--force removed a user's image beside a run"
     mkdir -p "$work/checkout/results/paper/G-X"
     run_tiny "$work/checkout/results/paper/G-X" --force || fail "--force into results/paper failed"
     [ -s "$work/checkout/results/paper/G-X/results.json" ] || fail "nothing written with --force" ;;
+
+  interrupted_chunks)
+    # A group stopped between its chunks keeps the finished chunk's cases (with the baseline they
+    # were paired with) and leaves no image without its record; --resume measures the rest only.
+    for signal in INT KILL; do
+      CANOPY_TEST_KILL_AFTER_CHUNKS=1 CANOPY_TEST_KILL_SIGNAL=$signal run_chunks "$work/$signal"; rc=$?
+      cat "$work/stderr"
+      [ $rc -ne 0 ] || fail "$signal: the run was not stopped"
+      python3 - "$work/$signal" <<'PY' || fail "$signal: the finished chunk was not recorded alone"
+import json, os, sys
+folder = sys.argv[1]
+j = json.load(open(folder + "/results.json"))
+assert j["planned_cases"] == 21, j["planned_cases"]
+assert len(j["cases"]) == 16, ("recorded cases", len(j["cases"]))
+assert len(j["groups"][0]["chunks"]) == 1, j["groups"][0]["chunks"]
+assert j["groups"][0]["chunks"][0]["cases"] == [c["id"] for c in j["cases"]], "the chunk's cases"
+recorded = {os.path.basename(v) for c in j["cases"] for v in c["images"].values() if v}
+on_disk = {f for f in os.listdir(folder + "/images") if not f.startswith(".")}
+assert on_disk <= recorded, ("images without a record", sorted(on_disk - recorded)[:5])
+PY
+      kept=$(json "$work/$signal/results.json" "[c['timing']['gpu_frame']['samples_ms'] for c in j['cases']]")
+      run_chunks "$work/$signal" --resume || fail "$signal: resume failed: $(cat "$work/stderr")"
+      cat "$work/stderr"
+      [ "$(json "$work/$signal/results.json" "j['status'], len(j['cases']), len(j['groups'][0]['chunks'])")" == "complete 21 2" ] \
+        || fail "$signal: the resumed run is not complete with 21 cases in 2 chunks"
+      [ "$(json "$work/$signal/results.json" "[c['timing']['gpu_frame']['samples_ms'] for c in j['cases'][:16]]")" == "$kept" ] \
+        || fail "$signal: the finished chunk was measured again"
+      # The second chunk paired its cases with the baseline measured again beside them.
+      [ "$(json "$work/$signal/results.json" "j['groups'][0]['chunks'][1]['cases'][0] == j['groups'][0]['baseline'], len(j['groups'][0]['chunks'][1]['cases'])")" == "True 6" ] \
+        || fail "$signal: the second chunk lacks the baseline or its 5 cases"
+      no_temporary_files "$work/$signal"
+    done ;;
+
+  degenerate_scene)
+    # A camera inside a closed sphere: the reference is one colour and no pixel is lit, so every
+    # technique would score "perfect". The case is flagged on stderr, in results.json, results.csv
+    # and results.md's table.
+    cat >"$work/inside.toml" <<'TOML'
+[scene]
+name = "inside"
+[camera]
+position = [0, 0, 0]
+target = [0, 0, -1]
+[[light]]
+type = "directional"
+direction = [0, -1, 0]
+[[object]]
+shape = "sphere"
+radius = 5
+TOML
+    sed -e 's/^name = "tiny"/name = "tiny-inside"/' -e "s|\.\./scenes/tiny.toml|$work/inside.toml|" \
+      "$data/experiments/tiny.toml" >"$work/inside-experiment.toml"
+    "$canopy" run "$work/inside-experiment.toml" --out "$work/a" --quick --no-progress --reference-cache "$work/cache" \
+      >"$work/stdout" 2>"$work/stderr" || fail "run failed: $(cat "$work/stderr")"
+    cat "$work/stderr"
+    grep -q "reference of inside 96x64 is degenerate (uniform image, no lit pixels)" "$work/stderr" \
+      || fail "no warning on stderr"
+    [ "$(json "$work/a/results.json" "j['references'][0]['degenerate']")" == "['uniform image', 'no lit pixels']" ] \
+      || fail "results.json does not record why the reference is degenerate"
+    grep -q '"degenerate reference: uniform image, no lit pixels"' "$work/a/results.csv" || fail "results.csv lacks the flag"
+    [ "$(grep -c '\*\*degenerate reference: uniform image, no lit pixels\*\*' "$work/a/results.md")" -eq 3 ] \
+      || fail "results.md's table does not flag each of the 3 cases"
+    # The ordinary tiny scene is not flagged.
+    run_tiny "$work/b" || fail "tiny run failed"
+    [ "$(json "$work/b/results.json" "j['references'][0]['degenerate']")" == "[]" ] || fail "the tiny scene is flagged"
+    ! grep -q "degenerate" "$work/b/results.md" || fail "results.md flags the tiny scene" ;;
+
+  moved_build)
+    # A run from another checkout: the config's checkout gives the commit, the changed files and
+    # the recorded paths; the binary's own commit is recorded apart and the mismatch flagged.
+    repo="$work/elsewhere"
+    mkdir -p "$repo/configs"
+    cp -r "$data/experiments" "$data/scenes" "$repo/configs/"
+    git -C "$repo" init -q && git -C "$repo" add -A
+    git -C "$repo" -c user.email=t@t -c user.name=t commit -qm "another checkout"
+    head=$(git -C "$repo" rev-parse HEAD)
+    binary=$("$canopy" --version | sed -n 's/.*commit \([0-9a-f]*\).*/\1/p')
+    echo "# a local edit" >>"$repo/configs/scenes/tiny.toml"
+    (cd "$work" && "$canopy" run "$repo/configs/experiments/tiny.toml" --out "$work/a" --quick --no-progress \
+      --reference-cache "$work/cache" >"$work/stdout" 2>"$work/stderr") || fail "run failed: $(cat "$work/stderr")"
+    cat "$work/stderr"
+    python3 - "$work/a/results.json" "$head" "$binary" <<'PY' || fail "results.json misattributes the run"
+import json, sys
+j = json.load(open(sys.argv[1])); e = j["environment"]
+head, binary = sys.argv[2], sys.argv[3]
+assert e["commit"] == head, ("commit", e["commit"], head)
+assert e["commit_dirty"] and e["commit_dirty_files"] == ["configs/scenes/tiny.toml"], e["commit_dirty_files"]
+assert binary and e["binary_commit"] == binary, ("binary_commit", e["binary_commit"], binary)
+assert e["commit_mismatch"] is True
+assert j["config"] == "configs/experiments/tiny.toml", j["config"]
+assert [f["file"] for f in j["inputs"]] == ["configs/experiments/tiny.toml", "configs/scenes/tiny.toml"], j["inputs"]
+PY
+    grep -q "this binary was built from commit ${binary:0:12} but the run is in $repo" "$work/stderr" \
+      || fail "no warning that the binary's commit is not the checkout's"
+    grep -q "the binary was built from $binary, not from the checkout's commit $head" "$work/a/results.md" \
+      || fail "results.md does not flag the mismatch"
+    cmp -s "$work/a/experiment.toml" "$repo/configs/experiments/tiny.toml" || fail "experiment.toml is not the config run"
+    [ ! -e "$repo/.git/index.lock" ] || fail "git's lock left in the checkout"
+    # In its own checkout, nothing is flagged.
+    run_tiny "$work/b" || fail "run in the build's checkout failed"
+    [ "$(json "$work/b/results.json" "j['environment']['commit_mismatch']")" == False ] \
+      || fail "a run in the binary's own checkout is flagged" ;;
 
   resume_after_kill)
     run_groups "$work/whole" || fail "uninterrupted run failed"
@@ -180,10 +313,11 @@ case $case in
 
   disk_full)
     run_groups "$work/whole" || fail "uninterrupted run failed"
-    # Writes: 4 reports (no pareto.md yet: no case), then per group 4 reference images, 5 images
-    # per case (3 cases), 5 reports (pareto.md too): 28 up to the first group's record; the 33rd
-    # (the second group's first EXR, after its 4 reference images) fails.
-    CANOPY_TEST_FAIL_WRITE_AFTER=32 run_groups "$work/full"; rc=$?
+    # Writes: 4 reports (no pareto.md yet: no case) and the config's copy, then per group 4
+    # reference images, 5 images per case (3 cases), results.json for its one chunk, 5 reports
+    # (pareto.md too): 30 up to the first group's record; the 35th (the second group's first EXR,
+    # after its 4 reference images) fails.
+    CANOPY_TEST_FAIL_WRITE_AFTER=34 run_groups "$work/full"; rc=$?
     cat "$work/stderr"
     [ $rc -eq 1 ] || fail "exit code $rc, expected 1"
     grep -Eq "cannot write .*tiny_64x48_shadow\.hard_resolution-256\.exr: No space left on device" "$work/stderr" \
@@ -199,8 +333,9 @@ case $case in
     [ $rc -eq 1 ] && grep -q "results.json: No space left on device" "$work/stderr" || fail "first write: rc $rc, $(cat "$work/stderr")" ;;
 
   disk_stays_full)
-    # Every write from case 1's fifth image on fails: not even the failure can be recorded.
-    CANOPY_TEST_FAIL_WRITE_AFTER=12+ run_tiny "$work/full"; rc=$?
+    # Every write from case 1's fifth image on fails (4 reports, the config's copy, 4 reference
+    # images, 4 of case 1's images before it): not even the failure can be recorded.
+    CANOPY_TEST_FAIL_WRITE_AFTER=13+ run_tiny "$work/full"; rc=$?
     cat "$work/stderr"
     [ $rc -eq 1 ] || fail "exit code $rc, expected 1"
     grep -q "No space left on device" "$work/stderr" || fail "no reason on stderr"

@@ -22,7 +22,7 @@ out.mkdir(parents=True, exist_ok=True)
 (out / "paper.json").write_text('{"id": "stub", "title": "", "columns": [], "baseline": "", "column_key": "scene", "rows": [], "claims": []}')
 PY
 chmod +x "$work/canopy"
-summary=$(python3 "$script" --only G-T7.1 L-T7.1 --out "$work/runs" --canopy "$work/canopy")
+summary=$(python3 "$script" --only G-T7.1 L-T7.1 --out "$work/runs" --canopy "$work/canopy" --allow-dirty)
 echo "$summary"
 grep -q '^\[1/2\] G-T7.1 (elapsed 0:00:00, about ' <<<"$summary"
 grep -q '^\[2/2\] L-T7.1 ' <<<"$summary"
@@ -34,7 +34,26 @@ if /usr/bin/python3 -c "import matplotlib" 2>/dev/null; then
   grep -q '^plots: 2 folders' <<<"$summary"   # scripts/plot-paper ran over both runs' paper.json
 fi
 grep -q 'G-T7.1 --images png$' "$work/canopy.log"      # a new folder: no --resume
-python3 "$script" --only G-T7.1 --out "$work/runs" --canopy "$work/canopy" >/dev/null
+python3 "$script" --only G-T7.1 --out "$work/runs" --canopy "$work/canopy" --allow-dirty >/dev/null
 tail -1 "$work/canopy.log" | grep -q -- '--images png --resume$'   # a folder holding a run: resumed
-if python3 "$script" --quick --force --canopy "$work/canopy" 2>/dev/null; then exit 1; fi
+if python3 "$script" --quick --force --canopy "$work/canopy" --allow-dirty 2>/dev/null; then exit 1; fi
+# A checkout with uncommitted changes outside results/ is refused (exit 2, naming the files) unless
+# --allow-dirty; changes under results/ alone are not code. A copy of the script in a git repository
+# of its own, with one paper experiment.
+repo="$work/repo"
+mkdir -p "$repo/scripts" "$repo/configs/experiments/paper" "$repo/results/paper"
+cp "$script" "$repo/scripts/reproduce"; cp "$(dirname "$script")/plot-paper" "$repo/scripts/"
+cp "$(dirname "$script")/../configs/experiments/paper/g-t7.1.toml" "$repo/configs/experiments/paper/"
+echo committed >"$repo/results/paper/notes.md"
+git -C "$repo" init -q && git -C "$repo" add -A && git -C "$repo" -c user.email=t@t -c user.name=t commit -qm init
+python3 "$repo/scripts/reproduce" --out "$work/clean" --canopy "$work/canopy" >/dev/null   # clean: runs
+echo changed >"$repo/results/paper/notes.md"
+python3 "$repo/scripts/reproduce" --out "$work/results-only" --canopy "$work/canopy" >/dev/null  # results/ alone: runs
+echo "# edited" >>"$repo/configs/experiments/paper/g-t7.1.toml"
+rc=0; python3 "$repo/scripts/reproduce" --out "$work/dirty" --canopy "$work/canopy" >/dev/null 2>"$work/err" || rc=$?
+[ $rc -eq 2 ] || { echo "a dirty checkout: exit $rc, expected 2"; exit 1; }
+grep -q "uncommitted changes" "$work/err" && grep -q "configs/experiments/paper/g-t7.1.toml" "$work/err" \
+  || { cat "$work/err"; echo "the refusal does not name the changed file"; exit 1; }
+[ ! -e "$work/dirty" ] || { echo "a refused reproduction wrote $work/dirty"; exit 1; }
+python3 "$repo/scripts/reproduce" --out "$work/dirty" --canopy "$work/canopy" --allow-dirty >/dev/null
 echo "reproduce: ok"
