@@ -169,6 +169,20 @@ TEST_CASE("linked images point into the run folder; missing images leave an empt
     CHECK(count(html, "<img alt=") == 7);
 }
 
+TEST_CASE("a case without shown parameters is named by its technique alone, never \"shadow.hard -\"") {
+    const test::TempFolder folder;
+    RunRecord run = make_run();
+    run.cases[0].params.clear();  // shadow.hard at its defaults: parameters "-"
+    run.cases.push_back(make_case("c", "shadow.pcf", 2.0, 0.1));  // slower and worse: dominated by shadow.hard
+    run.groups[0].cases.push_back("c");
+    write_images(folder.path(), run);
+    const std::string html = html_report(run, folder.path(), HtmlReportOptions{});
+    CHECK(html.find("<h4><strong>shadow.hard</strong> — tiny 96x64</h4>") != std::string::npos);
+    CHECK(html.find("<td>shadow.hard</td></tr>") != std::string::npos);  // c's "dominated by"
+    CHECK(html.find("shadow.hard: time") != std::string::npos);        // the chart's tooltip
+    CHECK(html.find("shadow.hard -") == std::string::npos);
+}
+
 TEST_CASE("write_html_report reads results.json and names what is missing") {
     const test::TempFolder folder;
     CHECK_THROWS_WITH_AS(write_html_report(folder.path(), folder.path() / "report.html", HtmlReportOptions{}),

@@ -154,6 +154,15 @@ TEST_CASE("pareto.md marks the front, names a dominating configuration and sorts
     CHECK(pareto_report(RunRecord{}, {"flip_mean"}).empty());
 }
 
+TEST_CASE("pareto.md names a dominating configuration without parameters by its technique alone") {
+    std::vector<CaseResult> cases{make_case("base", 1.0, 0.0, 0.050), make_case("fast_and_good", 0.5, 0.01, 0.040)};
+    cases[1].technique = "shadow.hard";
+    cases[1].params_shown = "-";  // no parameter shown
+    const std::string text = pareto_report(make_run(cases), {"flip_mean"});
+    CHECK(text.find("| shadow.hard  |\n") != std::string::npos);  // base's "dominated by"
+    CHECK(text.find("shadow.hard -") == std::string::npos);
+}
+
 TEST_CASE("every technique's declared Pareto axes are registered metrics of groups it declares") {
     for (const Technique* technique : TechniqueRegistry::instance().all()) {
         CAPTURE(technique->name());

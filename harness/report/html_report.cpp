@@ -173,7 +173,7 @@ std::string results_section(const RunRecord& run, const CaseLabels& labels) {
 }
 
 std::string pareto_section(const RunRecord& run, const CaseLabels& labels, const std::vector<std::string>& wanted) {
-    const auto label = [&](const CaseResult& c) { return c.technique + " " + labels.parameters(c); };
+    const auto label = [&](const CaseResult& c) { return labels.label(c); };
     std::string html;
     for (const std::string& name : wanted.empty() ? default_pareto_metrics(run) : wanted) {
         const MetricInfo* metric = find_metric(name);
@@ -234,8 +234,10 @@ std::string images_section(const RunRecord& run, const CaseLabels& labels, Image
             return fmt::format("<div><div class=\"panel\" style=\"--aspect: {} / {}\"><span class=\"label\">{}</span>{}</div>{}</div>",
                                c.resolution.width, c.resolution.height, name, img, below);
         };
-        html += fmt::format("<div class=\"case\" id=\"case-{}\"><h4><strong>{}</strong> {} — {}</h4>\n<div class=\"viewer\">",
-                            html_escape(c.id), html_escape(c.technique), html_escape(labels.parameters(c)),
+        const std::string parameters = labels.parameters(c);  // "-": none shown, so none written
+        html += fmt::format("<div class=\"case\" id=\"case-{}\"><h4><strong>{}</strong>{} — {}</h4>\n<div class=\"viewer\">",
+                            html_escape(c.id), html_escape(c.technique),
+                            parameters == "-" ? std::string() : fmt::format(" {}", html_escape(parameters)),
                             html_escape(c.group < run.groups.size() ? run.groups[c.group].name : c.scene));
         html += panel(c.image_png, "technique", "");
         html += panel(reference ? reference->image_png : "", "reference", "");

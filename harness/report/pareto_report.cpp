@@ -3,6 +3,7 @@
 #include "metrics/metric_registry.hpp"
 #include "report/atomic_file.hpp"
 #include "report/text_table.hpp"
+#include "run/case_labels.hpp"
 #include "run/run_comparison.hpp"
 
 #include <fmt/format.h>
@@ -25,7 +26,7 @@ std::string front_table(const ParetoFront& front, const MetricInfo& metric) {
         if (p->dominated)
             for (const ParetoPoint& q : front.points)
                 if (q.result->id == p->dominated_by)
-                    by = fmt::format("{} {}", q.result->technique, q.result->params_shown);
+                    by = case_name(q.result->technique, q.result->params_shown);
         rows.push_back({p->dominated ? "" : "front", c.technique, c.params_shown, ratio_cell(p->time_ratio),
                         metric_cell(metric.percent ? 100.0 * p->error : p->error), by});
     }
