@@ -99,7 +99,7 @@ TEST_CASE("Markdown: headings shift, tables become sortable with numeric sort ke
         2);
     CHECK(html.find("<h3>Title &lt;x&gt;</h3>") != std::string::npos);
     CHECK(html.find("<p>Some <strong>bold</strong> and <code>code</code> text continued.</p>") != std::string::npos);
-    CHECK(html.find("<table class=\"sortable\">") != std::string::npos);
+    CHECK(html.find("<div class=\"table-scroll\"><table class=\"sortable\">") != std::string::npos);
     CHECK(html.find("<th>row</th><th>512</th>") != std::string::npos);
     CHECK(html.find("<td class=\"num\" data-value=\"1.18\"><strong>1.18</strong> [1.17, 1.19]</td>") != std::string::npos);
     CHECK(html.find("<td class=\"num\">-</td>") != std::string::npos);
@@ -134,6 +134,20 @@ TEST_CASE("the page holds every section, each image once, and nothing from elsew
     CHECK(html.find("http://") == std::string::npos);
     CHECK(html.find("https://") == std::string::npos);
     CHECK(html.find("id=\"selftest-result\"") != std::string::npos);
+}
+
+TEST_CASE("every table scrolls sideways in its own box rather than be cut off at the page's edge") {
+    const test::TempFolder folder;
+    const RunRecord run = make_run();
+    write_images(folder.path(), run);
+    std::ofstream(folder.path() / "paper.md") << "| row | 96x64 |\n|---|---:|\n| hard | 1.00 |\n";
+    const std::string html = html_report(run, folder.path(), HtmlReportOptions{});
+    CHECK(html.find(".table-scroll { overflow-x: auto;") != std::string::npos);
+    CHECK(html.find("<div class=\"table-scroll\"><table class=\"sortable\" id=\"results-table\">") != std::string::npos);
+    // Every table: the environment, the results, two Pareto fronts' and the paper's.
+    CHECK(count(html, "<table") == 5);
+    CHECK(count(html, "<div class=\"table-scroll\"><table") == 5);
+    CHECK(count(html, "</table></div>") == 5);
 }
 
 TEST_CASE("the Pareto fronts may be drawn on any registered metric; an unknown one is refused before writing") {

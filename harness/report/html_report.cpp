@@ -135,9 +135,9 @@ std::string environment_section(const RunRecord& run) {
         html += fmt::format("<p class=\"warning\">The canopy binary was older than {}: these numbers may come from other "
                             "code than the commit says.</p>\n",
                             html_escape(e.binary_older_than));
-    html += "<table class=\"environment\">\n";
+    html += "<div class=\"table-scroll\"><table class=\"environment\">\n";
     for (const auto& [key, value] : rows) html += "<tr>" + cell(key) + cell(value) + "</tr>\n";
-    return html + "</table>\n";
+    return html + "</table></div>\n";
 }
 
 std::string results_section(const RunRecord& run, const CaseLabels& labels) {
@@ -145,7 +145,7 @@ std::string results_section(const RunRecord& run, const CaseLabels& labels) {
     std::string html =
         "<h2 id=\"results\">Results</h2>\n<p class=\"hint\">Click a column's header to sort. Time: GPU time of the frame "
         "(median ± MAD over the rounds); ratio: to the group's baseline, paired round by round, with its 95 % "
-        "interval.</p>\n<table class=\"sortable\" id=\"results-table\">\n<thead><tr><th>group</th><th>technique</th><th>parameters</th>"
+        "interval.</p>\n<div class=\"table-scroll\"><table class=\"sortable\" id=\"results-table\">\n<thead><tr><th>group</th><th>technique</th><th>parameters</th>"
         "<th>GPU ms</th><th>time ratio</th>";
     for (const MetricInfo* m : metrics) html += "<th>" + html_escape(m->column) + "</th>";
     html += "<th>memory MiB</th><th>status</th></tr></thead>\n<tbody>\n";
@@ -169,7 +169,7 @@ std::string results_section(const RunRecord& run, const CaseLabels& labels) {
         html += cell(fmt::format("{:.2f}", mib), true, mib);
         html += cell(c.ok ? "ok" : "failed: " + c.error) + "</tr>\n";
     }
-    return html + "</tbody></table>\n";
+    return html + "</tbody></table></div>\n";
 }
 
 std::string pareto_section(const RunRecord& run, const CaseLabels& labels, const std::vector<std::string>& wanted) {
@@ -182,7 +182,7 @@ std::string pareto_section(const RunRecord& run, const CaseLabels& labels, const
             if (front.points.size() < 2) continue;
             html += fmt::format("<div class=\"chart\"><h3>{} — {}</h3>\n{}", html_escape(front.group),
                                 html_escape(metric->title), pareto_svg(front, *metric, label));
-            html += "<table class=\"sortable\"><thead><tr><th>on the front</th><th>technique</th><th>parameters</th>"
+            html += "<div class=\"table-scroll\"><table class=\"sortable\"><thead><tr><th>on the front</th><th>technique</th><th>parameters</th>"
                     "<th>time ratio</th><th>" +
                     html_escape(metric->column) + "</th><th>dominated by</th></tr></thead><tbody>\n";
             for (const ParetoPoint& p : front.points) {
@@ -195,7 +195,7 @@ std::string pareto_section(const RunRecord& run, const CaseLabels& labels, const
                                     cell(ratio_cell(p.time_ratio), true, p.time_ratio.value), cell(metric_cell(error), true, error),
                                     cell(by));
             }
-            html += "</tbody></table></div>\n";
+            html += "</tbody></table></div></div>\n";
         }
     }
     if (html.empty()) return "";
