@@ -64,6 +64,7 @@ RunRecord make_run() {
     run.experiment = "report-test";
     run.description = "two <cases> & a reference";
     run.status = "complete";
+    run.rounds = 10;
     GroupRecord group;
     group.name = "tiny 96x64";
     group.scene = "tiny";
@@ -195,6 +196,21 @@ TEST_CASE("a case without shown parameters is named by its technique alone, neve
     CHECK(html.find("<td>shadow.hard</td></tr>") != std::string::npos);  // c's "dominated by"
     CHECK(html.find("shadow.hard: time") != std::string::npos);        // the chart's tooltip
     CHECK(html.find("shadow.hard -") == std::string::npos);
+}
+
+TEST_CASE("a --quick run's Pareto section says why nothing is dominated and draws no front line") {
+    const test::TempFolder folder;
+    RunRecord run = make_run();
+    CHECK(html_report(run, folder.path(), HtmlReportOptions{}).find("id=\"pareto-unjudged\"") == std::string::npos);
+    run.rounds = 3;
+    run.quick = true;
+    for (CaseResult& c : run.cases) c.ratio.per_round.resize(3);
+    const std::string html = html_report(run, folder.path(), HtmlReportOptions{});
+    CHECK(html.find("<p class=\"warning\" id=\"pareto-unjudged\">--quick: 3 rounds, fewer than the 6 a paired time "
+                    "interval needs") != std::string::npos);
+    CHECK(html.find("No front line is drawn.") != std::string::npos);
+    CHECK(count(html, "<svg class=\"pareto\"") == 2);
+    CHECK(html.find("<polyline") == std::string::npos);
 }
 
 TEST_CASE("write_html_report reads results.json and names what is missing") {

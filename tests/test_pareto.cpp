@@ -4,6 +4,7 @@
 #include "core/registry.hpp"
 #include "metrics/metric_registry.hpp"
 #include "report/pareto.hpp"
+#include "report/pareto_chart.hpp"
 #include "report/pareto_report.hpp"
 #include "run/block_bootstrap.hpp"
 
@@ -11,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <regex>
 #include <stdexcept>
 
 using namespace canopy;
@@ -53,6 +55,22 @@ RunRecord make_run(std::vector<CaseResult> cases) {
     cases.front().group_baseline = true;
     run.cases = std::move(cases);
     return run;
+}
+
+// The (x, y) vertices of the chart's front line; empty when it draws none.
+std::vector<std::pair<double, double>> front_line(const std::string& svg) {
+    std::smatch line;
+    if (!std::regex_search(svg, line, std::regex("<polyline class=\"front\" points=\"([^\"]*)\""))) return {};
+    std::vector<std::pair<double, double>> vertices;
+    const std::string points = line[1];
+    const std::regex vertex("(-?[0-9.]+),(-?[0-9.]+)");
+    for (auto it = std::sregex_iterator(points.begin(), points.end(), vertex); it != std::sregex_iterator(); ++it)
+        vertices.emplace_back(std::stod((*it)[1]), std::stod((*it)[2]));
+    return vertices;
+}
+
+std::string chart(const ParetoFront& front) {
+    return pareto_svg(front, *find_metric(front.metric), [](const CaseResult& c) { return c.id; });
 }
 
 const ParetoPoint& point(const ParetoFront& front, const std::string& id) {
@@ -138,6 +156,50 @@ TEST_CASE("cases without the metric or a time are listed apart; an unknown metri
     // visibility_rmse's group is not declared by these cases (ErrorColumns{}): n/a, not on the chart.
     CHECK(pareto_fronts(run, "visibility_rmse")[0].points.empty());
     CHECK_THROWS_AS(pareto_fronts(run, "flip"), std::invalid_argument);  // a claim name, not a results.json name
+}
+
+TEST_CASE("the chart's front line is a staircase that never turns back, through the undominated points") {
+    // Undominated by time: base (0.050), within_noise (slower within noise, worse in error within
+    // FLIP's tolerance: undominated, yet no better than base), slow_best (0.010). A line joining them
+    // in time order would zig-zag.
+    const RunRecord run = make_run({make_case("base", 1.0, 0.0, 0.050), make_case("within_noise", 1.02, 0.2, 0.05010),
+                                    make_case("slow_best", 2.0, 0.01, 0.010), make_case("slow_bad", 2.0, 0.01, 0.080)});
+    const ParetoFront front = pareto_fronts(run, "flip_mean")[0];
+    REQUIRE(front.judged);
+    REQUIRE_FALSE(point(front, "within_noise").dominated);
+    REQUIRE(point(front, "slow_bad").dominated);
+    const std::vector<std::pair<double, double>> line = front_line(chart(front));
+    REQUIRE(line.size() == 3);  // base, the corner below it at slow_best's time, slow_best
+    for (size_t i = 1; i < line.size(); ++i) {
+        CHECK(line[i].first >= line[i - 1].first);    // rightwards: slower
+        CHECK(line[i].second >= line[i - 1].second);  // downwards on the page: lower error
+    }
+}
+
+TEST_CASE("a --quick run judges nothing dominated, says why, and draws no front line") {
+    std::vector<CaseResult> cases{make_case("base", 1.0, 0.0, 0.050), make_case("fast_and_good", 0.5, 0.01, 0.040),
+                                  make_case("slow_and_worse", 2.0, 0.01, 0.060)};
+    for (CaseResult& c : cases) c.ratio.per_round.resize(3);
+    RunRecord run = make_run(cases);
+    run.rounds = 3;
+    run.quick = true;
+    const ParetoFront front = pareto_fronts(run, "flip_mean")[0];
+    CHECK_FALSE(front.judged);
+    for (const ParetoPoint& p : front.points) CHECK_FALSE(p.dominated);
+    const std::string note = too_few_rounds_note(run);
+    CHECK(note.find("--quick: 3 rounds, fewer than the 6 a paired time interval needs") == 0);
+    CHECK(note.find("none is judged dominated") != std::string::npos);
+    CHECK(pareto_report(run, {"flip_mean"}).find(note) != std::string::npos);
+    const std::string svg = chart(front);
+    CHECK(svg.find("<polyline") == std::string::npos);
+    CHECK(svg.find("<circle") != std::string::npos);
+    // With its rounds: judged, and a line.
+    run.rounds = kRounds;
+    CHECK(too_few_rounds_note(run).empty());
+    CHECK(front_line(chart(pareto_fronts(make_run({make_case("base", 1.0, 0.0, 0.050), make_case("fast_and_good", 0.5, 0.01, 0.040),
+                                                   make_case("slow_best", 2.0, 0.01, 0.010)}),
+                                         "flip_mean")[0]))
+              .size() == 3);
 }
 
 TEST_CASE("pareto.md marks the front, names a dominating configuration and sorts by time") {

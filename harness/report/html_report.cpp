@@ -199,12 +199,15 @@ std::string pareto_section(const RunRecord& run, const CaseLabels& labels, const
         }
     }
     if (html.empty()) return "";
+    const std::string note = too_few_rounds_note(run);
     return "<h2 id=\"pareto\">Pareto fronts</h2>\n<p class=\"hint\">Per scene and resolution, on the error axes the "
            "techniques' families declare. A configuration is dominated when another is neither significantly worse in "
            "error nor significantly slower, and is significantly better in one of them: faster (the 95 % interval of their "
            "paired time ratio lies below 1) or lower in error by more than the metric's compare tolerance. Filled: on "
-           "the front; hollow: dominated; bars: 95 % interval of the time ratio.</p>\n<div class=\"charts\">\n" +
-           html + "</div>\n";
+           "the front; hollow: dominated; bars: 95 % interval of the time ratio; line: the front, from each configuration to the "
+           "next slower one with a better error.</p>\n" +
+           (note.empty() ? "" : "<p class=\"warning\" id=\"pareto-unjudged\">" + html_escape(note) + " No front line is drawn.</p>\n") +
+           "<div class=\"charts\">\n" + html + "</div>\n";
 }
 
 std::string colour_bar(const std::array<ColormapEntry, 256>& colormap, double max_value, const std::string& what) {

@@ -84,15 +84,24 @@ std::string pareto_svg(const ParetoFront& front, const MetricInfo& metric,
                        "({} is better)</text>\n",
                        (kTop + kHeight - kBottom) / 2, html_escape(metric.column), to_string(metric.better));
 
-    std::vector<const ParetoPoint*> on_front;
+    // The front line: a staircase, by time, through the undominated points whose error beats every
+    // faster one's (an undominated point within noise of a better one is left off it), so it never
+    // turns back. None when dominance was not judged (too few rounds: no front to draw).
+    std::vector<const ParetoPoint*> undominated, steps;
     for (const ParetoPoint& p : front.points)
-        if (!p.dominated) on_front.push_back(&p);
-    std::sort(on_front.begin(), on_front.end(),
-              [](const ParetoPoint* a, const ParetoPoint* b) { return a->time_ratio.value < b->time_ratio.value; });
-    if (on_front.size() > 1) {
-        std::string points;
-        for (const ParetoPoint* p : on_front) points += fmt::format("{:.1f},{:.1f} ", px(p->time_ratio.value), py(scale * p->error));
-        svg += fmt::format("<polyline points=\"{}\" fill=\"none\" stroke=\"#1f77b4\" stroke-width=\"1.5\"/>\n", points);
+        if (!p.dominated) undominated.push_back(&p);
+    std::stable_sort(undominated.begin(), undominated.end(),
+                     [](const ParetoPoint* a, const ParetoPoint* b) { return a->time_ratio.value < b->time_ratio.value; });
+    for (const ParetoPoint* p : undominated)
+        if (steps.empty() || (metric.better == Better::lower ? p->error < steps.back()->error : p->error > steps.back()->error))
+            steps.push_back(p);
+    if (front.judged && steps.size() > 1) {
+        std::string points = fmt::format("{:.1f},{:.1f}", px(steps[0]->time_ratio.value), py(scale * steps[0]->error));
+        for (size_t i = 1; i < steps.size(); ++i)
+            points += fmt::format(" {0:.1f},{1:.1f} {0:.1f},{2:.1f}", px(steps[i]->time_ratio.value),
+                                  py(scale * steps[i - 1]->error), py(scale * steps[i]->error));
+        svg += fmt::format("<polyline class=\"front\" points=\"{}\" fill=\"none\" stroke=\"#1f77b4\" stroke-width=\"1.5\"/>\n",
+                           points);
     }
     for (const ParetoPoint& p : front.points) {
         const double cx = px(p.time_ratio.value), cy = py(scale * p.error);

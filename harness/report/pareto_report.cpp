@@ -60,12 +60,7 @@ std::string pareto_report(const RunRecord& run, const std::vector<std::string>& 
                "significantly worse in error (by more than the metric's compare tolerance) nor significantly slower "
                "(the interval of their paired time ratio lies above 1), and is significantly better in one: faster (the interval lies below 1) or lower in error by more than the "
                "metric's compare tolerance (`canopy metrics`). \"front\" marks the others. Rows by time.{}\n",
-               run.experiment,
-               run.rounds < int(kMinComparedRounds)
-                   ? fmt::format(" This run measured {} rounds, fewer than the {} a time interval needs: no "
-                                 "configuration is judged dominated.",
-                                 run.rounds, kMinComparedRounds)
-                   : "") +
+               run.experiment, run.rounds < int(kMinComparedRounds) ? "\n\n" + too_few_rounds_note(run) : "") +
            body;
 }
 
