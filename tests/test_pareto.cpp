@@ -202,6 +202,37 @@ TEST_CASE("a --quick run judges nothing dominated, says why, and draws no front 
               .size() == 3);
 }
 
+// The horizontal position of case `id`'s point in a chart.
+double point_x(const std::string& svg, const std::string& id) {
+    std::smatch circle;
+    REQUIRE(std::regex_search(svg, circle, std::regex("data-case=\"" + id + "\" cx=\"([0-9.]+)\"")));
+    return std::stod(circle[1]);
+}
+
+TEST_CASE("an axis whose positive values span a factor of 20 or more is logarithmic") {
+    CHECK(log_axis(0.02, 1.0));
+    CHECK(log_axis(0.05, 1.0));  // exactly kLogAxisSpan
+    CHECK_FALSE(log_axis(0.06, 1.0));
+    CHECK_FALSE(log_axis(1.0, 2.8));
+    CHECK_FALSE(log_axis(0.0, 1.0));  // an exact zero has no logarithm
+    CHECK_FALSE(log_axis(-0.5, 1.0));
+
+    // Grass's impostors at 0.02 to 0.5 x the geometry's time: equal factors, equal distances.
+    const RunRecord grass = make_run({make_case("base", 1.0, 0.0, 0.05), make_case("impostor", 0.02, 0.01, 0.14),
+                                      make_case("volume", 0.1, 0.01, 0.10), make_case("lod", 0.5, 0.01, 0.06)});
+    const std::string svg = chart(pareto_fronts(grass, "flip_mean")[0]);
+    CHECK(svg.find("95 % interval; log scale)") != std::string::npos);
+    CHECK(svg.find("lower is better)") != std::string::npos);  // FLIP spans 0.05 to 0.14: linear
+    const double to_volume = point_x(svg, "volume") - point_x(svg, "impostor"), to_lod = point_x(svg, "lod") - point_x(svg, "volume");
+    CHECK(to_volume == doctest::Approx(to_lod).epsilon(0.01));
+    for (const char* tick : {">0.02</text>", ">0.05</text>", ">0.10</text>", ">0.20</text>", ">0.50</text>", ">1.00</text>"})
+        CHECK_MESSAGE(svg.find(tick) != std::string::npos, tick);
+
+    // Times within a factor of 3: linear.
+    const RunRecord shadows = make_run({make_case("base", 1.0, 0.0, 0.05), make_case("pcf", 2.8, 0.01, 0.03)});
+    CHECK(chart(pareto_fronts(shadows, "flip_mean")[0]).find("log scale") == std::string::npos);
+}
+
 TEST_CASE("pareto.md marks the front, names a dominating configuration and sorts by time") {
     const RunRecord run = make_run({make_case("base", 1.0, 0.0, 0.050), make_case("fast_and_good", 0.5, 0.01, 0.040),
                                     make_case("slow_and_best", 2.0, 0.01, 0.010)});

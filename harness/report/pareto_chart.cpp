@@ -18,11 +18,29 @@ constexpr double kLeft = 70, kRight = 20, kTop = 16, kBottom = 46;
 
 struct Range {
     double low, high;
-    double map(double v, double from, double to) const { return from + (v - low) / (high - low) * (to - from); }
+    bool log = false;  // log_axis: positions by log10
+    double at(double v) const { return log ? std::log10(v) : v; }
+    double map(double v, double from, double to) const {
+        return from + (at(v) - at(low)) / (at(high) - at(low)) * (to - from);
+    }
 };
 
-// About five round tick values covering [low, high].
+// Round tick values covering [low, high]: about five evenly spaced; on a log axis 1, 2 and 5 times
+// each power of ten, or only the powers where those would be more than eight.
 std::vector<double> ticks(const Range& r) {
+    if (r.log) {
+        std::vector<double> values;
+        for (const bool powers_only : {false, true}) {
+            values.clear();
+            for (int e = int(std::floor(std::log10(r.low))); e <= int(std::ceil(std::log10(r.high))); ++e)
+                for (double m : {1.0, 2.0, 5.0}) {
+                    const double v = m * std::pow(10.0, e);
+                    if ((m == 1.0 || !powers_only) && v >= r.low * (1 - 1e-9) && v <= r.high * (1 + 1e-9)) values.push_back(v);
+                }
+            if (values.size() <= 8) break;
+        }
+        return values;
+    }
     const double span = r.high - r.low;
     const double raw = span / 5.0;
     const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
@@ -38,6 +56,10 @@ std::vector<double> ticks(const Range& r) {
 }
 
 Range padded(double low, double high) {
+    if (log_axis(low, high)) {
+        const double pad = std::pow(high / low, 0.06);
+        return {low / pad, high * pad, true};
+    }
     if (!(high > low)) {
         const double pad = low == 0 ? 1.0 : std::abs(low) * 0.1;
         return {low - pad, high + pad};
@@ -47,6 +69,8 @@ Range padded(double low, double high) {
 }
 
 }  // namespace
+
+bool log_axis(double low, double high) { return low > 0 && std::isfinite(high) && high / low >= kLogAxisSpan; }
 
 std::string pareto_svg(const ParetoFront& front, const MetricInfo& metric,
                        const std::function<std::string(const CaseResult&)>& label) {
@@ -78,11 +102,12 @@ std::string pareto_svg(const ParetoFront& front, const MetricInfo& metric,
                            "font-size=\"11\" text-anchor=\"end\">{5}</text>\n",
                            kLeft, kWidth - kRight, py(t), kLeft - 4, py(t) + 4, metric_cell(t));
     svg += fmt::format("<text x=\"{}\" y=\"{}\" font-size=\"12\" text-anchor=\"middle\">GPU time / group baseline "
-                       "(median, 95 % interval)</text>\n",
-                       (kLeft + kWidth - kRight) / 2, kHeight - 10);
+                       "(median, 95 % interval{})</text>\n",
+                       (kLeft + kWidth - kRight) / 2, kHeight - 10, x.log ? "; log scale" : "");
     svg += fmt::format("<text transform=\"translate(14 {}) rotate(-90)\" font-size=\"12\" text-anchor=\"middle\">{} "
-                       "({} is better)</text>\n",
-                       (kTop + kHeight - kBottom) / 2, html_escape(metric.column), to_string(metric.better));
+                       "({} is better{})</text>\n",
+                       (kTop + kHeight - kBottom) / 2, html_escape(metric.column), to_string(metric.better),
+                       y.log ? "; log scale" : "");
 
     // The front line: a staircase, by time, through the undominated points whose error beats every
     // faster one's (an undominated point within noise of a better one is left off it), so it never
