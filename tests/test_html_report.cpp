@@ -129,6 +129,10 @@ TEST_CASE("the page holds every section, each image once, and nothing from elsew
     // The Pareto charts: the shadow family's axes, one chart each, with both cases.
     CHECK(count(html, "<svg class=\"pareto\"") == 2);
     CHECK(count(html, "data-case=\"b\"") == 2);
+    // Its points numbered in the SVG (no script needed), by the rows of the table below.
+    CHECK(count(html, "<text class=\"point-label\"") == 4);
+    CHECK(count(html, "<th>#</th><th>on the front</th>") == 2);
+    CHECK(count(html, "<td class=\"num\" data-value=\"2\">2</td><td>yes</td><td>shadow.pcf</td>") == 2);
     // Self-contained.
     CHECK(html.find("<script src") == std::string::npos);
     CHECK(html.find("<link") == std::string::npos);

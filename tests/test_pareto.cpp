@@ -233,6 +233,28 @@ TEST_CASE("an axis whose positive values span a factor of 20 or more is logarith
     CHECK(chart(pareto_fronts(shadows, "flip_mean")[0]).find("log scale") == std::string::npos);
 }
 
+TEST_CASE("every point of a chart is numbered in the SVG itself, its numbers apart from each other") {
+    // Three points almost on top of each other, as grass's impostors are, and one apart.
+    const RunRecord run = make_run({make_case("base", 1.0, 0.0, 0.050), make_case("a", 0.500, 0.01, 0.0800),
+                                    make_case("b", 0.502, 0.01, 0.0801), make_case("c", 0.504, 0.01, 0.0802)});
+    const std::string svg = chart(pareto_fronts(run, "flip_mean")[0]);
+    const std::regex number("<text class=\"point-label\" x=\"([0-9.]+)\" y=\"([0-9.]+)\" font-size=\"10\">([0-9]+)</text>");
+    std::vector<std::pair<double, double>> places;
+    std::string numbers;
+    for (auto it = std::sregex_iterator(svg.begin(), svg.end(), number); it != std::sregex_iterator(); ++it) {
+        places.emplace_back(std::stod((*it)[1]), std::stod((*it)[2]));
+        numbers += (*it)[3].str();
+    }
+    CHECK(numbers == "1234");  // the order of front.points: the table's rows
+    for (size_t i = 0; i < places.size(); ++i)
+        for (size_t j = 0; j < i; ++j) {
+            CAPTURE(i);
+            CAPTURE(j);
+            CHECK((std::abs(places[i].first - places[j].first) >= 6 || std::abs(places[i].second - places[j].second) >= 9));
+        }
+    CHECK(svg.find("<title>2. a: time 0.50") != std::string::npos);  // the tooltip names it, numbered too
+}
+
 TEST_CASE("pareto.md marks the front, names a dominating configuration and sorts by time") {
     const RunRecord run = make_run({make_case("base", 1.0, 0.0, 0.050), make_case("fast_and_good", 0.5, 0.01, 0.040),
                                     make_case("slow_and_best", 2.0, 0.01, 0.010)});

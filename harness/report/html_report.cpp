@@ -182,16 +182,17 @@ std::string pareto_section(const RunRecord& run, const CaseLabels& labels, const
             if (front.points.size() < 2) continue;
             html += fmt::format("<div class=\"chart\"><h3>{} — {}</h3>\n{}", html_escape(front.group),
                                 html_escape(metric->title), pareto_svg(front, *metric, label));
-            html += "<div class=\"table-scroll\"><table class=\"sortable\"><thead><tr><th>on the front</th><th>technique</th><th>parameters</th>"
+            html += "<div class=\"table-scroll\"><table class=\"sortable\"><thead><tr><th>#</th><th>on the front</th><th>technique</th><th>parameters</th>"
                     "<th>time ratio</th><th>" +
                     html_escape(metric->column) + "</th><th>dominated by</th></tr></thead><tbody>\n";
-            for (const ParetoPoint& p : front.points) {
+            for (size_t i = 0; i < front.points.size(); ++i) {
+                const ParetoPoint& p = front.points[i];
                 std::string by;
                 for (const ParetoPoint& q : front.points)
                     if (p.dominated && q.result->id == p.dominated_by) by = label(*q.result);
                 const double error = metric->percent ? 100 * p.error : p.error;
-                html += fmt::format("<tr class=\"{}\">{}{}{}{}{}{}</tr>\n", p.dominated ? "dominated" : "front",
-                                    cell(p.dominated ? "" : "yes"), cell(p.result->technique), cell(labels.parameters(*p.result)),
+                html += fmt::format("<tr class=\"{}\">{}{}{}{}{}{}{}</tr>\n", p.dominated ? "dominated" : "front",
+                                    cell(std::to_string(i + 1), true, double(i + 1)), cell(p.dominated ? "" : "yes"), cell(p.result->technique), cell(labels.parameters(*p.result)),
                                     cell(ratio_cell(p.time_ratio), true, p.time_ratio.value), cell(metric_cell(error), true, error),
                                     cell(by));
             }
@@ -203,8 +204,9 @@ std::string pareto_section(const RunRecord& run, const CaseLabels& labels, const
     return "<h2 id=\"pareto\">Pareto fronts</h2>\n<p class=\"hint\">Per scene and resolution, on the error axes the "
            "techniques' families declare. A configuration is dominated when another is neither significantly worse in "
            "error nor significantly slower, and is significantly better in one of them: faster (the 95 % interval of their "
-           "paired time ratio lies below 1) or lower in error by more than the metric's compare tolerance. Filled: on "
-           "the front; hollow: dominated; bars: 95 % interval of the time ratio; line: the front, from each configuration to the "
+           "paired time ratio lies below 1) or lower in error by more than the metric's compare tolerance. Each point "
+           "is numbered by its row (#) in the table below its chart; hover over it for its name. Filled: on the front; "
+           "hollow: dominated; bars: 95 % interval of the time ratio; line: the front, from each configuration to the "
            "next slower one with a better error.</p>\n" +
            (note.empty() ? "" : "<p class=\"warning\" id=\"pareto-unjudged\">" + html_escape(note) + " No front line is drawn.</p>\n") +
            "<div class=\"charts\">\n" + html + "</div>\n";

@@ -68,6 +68,42 @@ Range padded(double low, double high) {
     return {low - pad, high + pad};
 }
 
+struct Box {
+    double left, top, right, bottom;
+    bool overlaps(const Box& o) const { return left < o.right && o.left < right && top < o.bottom && o.top < bottom; }
+};
+
+// The label of point `index` (its number, index + 1: its row in the table beside the chart) at the
+// first place around the point (right, below right, left, ...) that stays inside the plot and
+// covers neither another point nor a number already placed; the first place where none does.
+// `taken` holds every point's box, at their indices, then the numbers placed.
+std::string number_label(size_t index, double cx, double cy, std::vector<Box>& taken) {
+    const std::string text = std::to_string(index + 1);
+    const double width = 6.0 * double(text.size()), height = 9.0;
+    struct Place {
+        double dx, dy;  // of the text's baseline start from the point
+    };
+    const Place places[] = {{6, -4}, {6, 11}, {-6 - width, -4}, {-6 - width, 11}, {-width / 2, -7}, {-width / 2, 16}};
+    const Box plot{kLeft, kTop, kWidth - kRight, kHeight - kBottom};
+    Box chosen{};
+    bool found = false;
+    for (const Place& place : places) {
+        const Box box{cx + place.dx, cy + place.dy - height, cx + place.dx + width, cy + place.dy};
+        const bool inside = box.left >= plot.left && box.right <= plot.right && box.top >= plot.top && box.bottom <= plot.bottom;
+        bool clear = true;
+        for (size_t j = 0; j < taken.size(); ++j) clear = clear && (j == index || !taken[j].overlaps(box));
+        if (inside && clear) {
+            chosen = box;
+            found = true;
+            break;
+        }
+    }
+    if (!found) chosen = Box{cx + places[0].dx, cy + places[0].dy - height, cx + places[0].dx + width, cy + places[0].dy};
+    taken.push_back(chosen);
+    return fmt::format("<text class=\"point-label\" x=\"{:.1f}\" y=\"{:.1f}\" font-size=\"10\">{}</text>\n", chosen.left,
+                       chosen.bottom, text);
+}
+
 }  // namespace
 
 bool log_axis(double low, double high) { return low > 0 && std::isfinite(high) && high / low >= kLogAxisSpan; }
@@ -128,18 +164,25 @@ std::string pareto_svg(const ParetoFront& front, const MetricInfo& metric,
         svg += fmt::format("<polyline class=\"front\" points=\"{}\" fill=\"none\" stroke=\"#1f77b4\" stroke-width=\"1.5\"/>\n",
                            points);
     }
+    std::vector<Box> taken;  // what a number must not cover: the points, then the numbers placed
     for (const ParetoPoint& p : front.points) {
+        const double cx = px(p.time_ratio.value), cy = py(scale * p.error);
+        taken.push_back({cx - 4.5, cy - 4.5, cx + 4.5, cy + 4.5});
+    }
+    for (size_t i = 0; i < front.points.size(); ++i) {
+        const ParetoPoint& p = front.points[i];
         const double cx = px(p.time_ratio.value), cy = py(scale * p.error);
         const std::string colour = p.dominated ? "#888" : "#1f77b4";
         if (std::isfinite(p.time_ratio.ci.low) && std::isfinite(p.time_ratio.ci.high))
             svg += fmt::format("<line x1=\"{:.1f}\" x2=\"{:.1f}\" y1=\"{:.1f}\" y2=\"{:.1f}\" stroke=\"{}\"/>\n",
                                px(p.time_ratio.ci.low), px(p.time_ratio.ci.high), cy, cy, colour);
         svg += fmt::format(
-            "<circle class=\"{}\" data-case=\"{}\" cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"4.5\" fill=\"{}\" stroke=\"{}\"><title>{}: "
+            "<circle class=\"{}\" data-case=\"{}\" cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"4.5\" fill=\"{}\" stroke=\"{}\"><title>{}. {}: "
             "time {}, {} {}{}</title></circle>\n",
             p.dominated ? "dominated" : "front", html_escape(p.result->id), cx, cy, p.dominated ? "white" : colour, colour,
-            html_escape(label(*p.result)), ratio_cell(p.time_ratio), html_escape(metric.column), metric_cell(scale * p.error),
+            i + 1, html_escape(label(*p.result)), ratio_cell(p.time_ratio), html_escape(metric.column), metric_cell(scale * p.error),
             p.dominated ? " (dominated)" : "");
+        svg += number_label(i, cx, cy, taken);
     }
     return svg + "</svg>\n";
 }

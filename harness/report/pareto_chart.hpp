@@ -1,6 +1,8 @@
 // A Pareto front as an inline SVG chart for `canopy report`: time ratio (x, with its 95 %
 // interval as a bar) against the error (y); the front's configurations filled and joined, the
-// dominated ones hollow. Every point carries its label as a tooltip and a data-case attribute.
+// dominated ones hollow. Every point is numbered in the SVG itself (its index in front.points plus
+// one: the row of the table beside the chart), placed clear of the other points and numbers, and
+// carries its label as a tooltip and a data-case attribute.
 // An axis whose values span a factor of kLogAxisSpan or more is logarithmic (log_axis).
 #pragma once
 
