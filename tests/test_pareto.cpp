@@ -260,7 +260,8 @@ TEST_CASE("pareto.md marks the front, names a dominating configuration and sorts
                                     make_case("slow_and_best", 2.0, 0.01, 0.010)});
     const std::string text = pareto_report(run, {"flip_mean"});
     CHECK(text.find("# Pareto fronts — pareto-test") != std::string::npos);
-    CHECK(text.find("## scene 64x64 — ") != std::string::npos);
+    CHECK(text.find("## scene 64x64 — FLIP (lower is better)\n") != std::string::npos);  // FLIP has no unit
+    CHECK(pareto_report(run, {"rmse"}).find("## scene 64x64 — RMSE (linear RGB, lower is better)\n") != std::string::npos);
     const size_t fast = text.find("| front | shadow.pcf"), base = text.find("|       | shadow.pcf");
     REQUIRE(fast != std::string::npos);
     REQUIRE(base != std::string::npos);

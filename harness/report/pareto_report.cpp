@@ -47,8 +47,8 @@ std::string pareto_report(const RunRecord& run, const std::vector<std::string>& 
         if (!metric) continue;
         for (const ParetoFront& front : pareto_fronts(run, name)) {
             if (front.points.empty()) continue;
-            body += fmt::format("\n## {} — {} ({}, {} is better)\n\n", front.group, metric->title, metric->unit,
-                                to_string(metric->better));
+            body += fmt::format("\n## {} — {} ({}{} is better)\n\n", front.group, metric->title,
+                                metric->unit.empty() ? "" : fmt::format("{}, ", metric->unit), to_string(metric->better));
             body += front_table(front, *metric);
         }
     }
