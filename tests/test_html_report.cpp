@@ -64,6 +64,7 @@ RunRecord make_run() {
     run.experiment = "report-test";
     run.description = "two <cases> & a reference";
     run.status = "complete";
+    run.rounds = 10;
     GroupRecord group;
     group.name = "tiny 96x64";
     group.scene = "tiny";
@@ -99,7 +100,7 @@ TEST_CASE("Markdown: headings shift, tables become sortable with numeric sort ke
         2);
     CHECK(html.find("<h3>Title &lt;x&gt;</h3>") != std::string::npos);
     CHECK(html.find("<p>Some <strong>bold</strong> and <code>code</code> text continued.</p>") != std::string::npos);
-    CHECK(html.find("<table class=\"sortable\">") != std::string::npos);
+    CHECK(html.find("<div class=\"table-scroll\"><table class=\"sortable\">") != std::string::npos);
     CHECK(html.find("<th>row</th><th>512</th>") != std::string::npos);
     CHECK(html.find("<td class=\"num\" data-value=\"1.18\"><strong>1.18</strong> [1.17, 1.19]</td>") != std::string::npos);
     CHECK(html.find("<td class=\"num\">-</td>") != std::string::npos);
@@ -128,12 +129,30 @@ TEST_CASE("the page holds every section, each image once, and nothing from elsew
     // The Pareto charts: the shadow family's axes, one chart each, with both cases.
     CHECK(count(html, "<svg class=\"pareto\"") == 2);
     CHECK(count(html, "data-case=\"b\"") == 2);
+    // Its points numbered in the SVG (no script needed), by the rows of the table below.
+    CHECK(count(html, "<text class=\"point-label\"") == 4);
+    CHECK(count(html, "<th>#</th><th>on the front</th>") == 2);
+    CHECK(count(html, "<td class=\"num\" data-value=\"2\">2</td><td>yes</td><td>shadow.pcf</td>") == 2);
     // Self-contained.
     CHECK(html.find("<script src") == std::string::npos);
     CHECK(html.find("<link") == std::string::npos);
     CHECK(html.find("http://") == std::string::npos);
     CHECK(html.find("https://") == std::string::npos);
     CHECK(html.find("id=\"selftest-result\"") != std::string::npos);
+}
+
+TEST_CASE("every table scrolls sideways in its own box rather than be cut off at the page's edge") {
+    const test::TempFolder folder;
+    const RunRecord run = make_run();
+    write_images(folder.path(), run);
+    std::ofstream(folder.path() / "paper.md") << "| row | 96x64 |\n|---|---:|\n| hard | 1.00 |\n";
+    const std::string html = html_report(run, folder.path(), HtmlReportOptions{});
+    CHECK(html.find(".table-scroll { overflow-x: auto;") != std::string::npos);
+    CHECK(html.find("<div class=\"table-scroll\"><table class=\"sortable\" id=\"results-table\">") != std::string::npos);
+    // Every table: the environment, the results, two Pareto fronts' and the paper's.
+    CHECK(count(html, "<table") == 5);
+    CHECK(count(html, "<div class=\"table-scroll\"><table") == 5);
+    CHECK(count(html, "</table></div>") == 5);
 }
 
 TEST_CASE("the Pareto fronts may be drawn on any registered metric; an unknown one is refused before writing") {
@@ -167,6 +186,35 @@ TEST_CASE("linked images point into the run folder; missing images leave an empt
     CHECK(html.find("href=\"#paper\"") == std::string::npos);
     CHECK(html.find("href=\"#pareto\"") != std::string::npos);
     CHECK(count(html, "<img alt=") == 7);
+}
+
+TEST_CASE("a case without shown parameters is named by its technique alone, never \"shadow.hard -\"") {
+    const test::TempFolder folder;
+    RunRecord run = make_run();
+    run.cases[0].params.clear();  // shadow.hard at its defaults: parameters "-"
+    run.cases.push_back(make_case("c", "shadow.pcf", 2.0, 0.1));  // slower and worse: dominated by shadow.hard
+    run.groups[0].cases.push_back("c");
+    write_images(folder.path(), run);
+    const std::string html = html_report(run, folder.path(), HtmlReportOptions{});
+    CHECK(html.find("<h4><strong>shadow.hard</strong> — tiny 96x64</h4>") != std::string::npos);
+    CHECK(html.find("<td>shadow.hard</td></tr>") != std::string::npos);  // c's "dominated by"
+    CHECK(html.find("shadow.hard: time") != std::string::npos);        // the chart's tooltip
+    CHECK(html.find("shadow.hard -") == std::string::npos);
+}
+
+TEST_CASE("a --quick run's Pareto section says why nothing is dominated and draws no front line") {
+    const test::TempFolder folder;
+    RunRecord run = make_run();
+    CHECK(html_report(run, folder.path(), HtmlReportOptions{}).find("id=\"pareto-unjudged\"") == std::string::npos);
+    run.rounds = 3;
+    run.quick = true;
+    for (CaseResult& c : run.cases) c.ratio.per_round.resize(3);
+    const std::string html = html_report(run, folder.path(), HtmlReportOptions{});
+    CHECK(html.find("<p class=\"warning\" id=\"pareto-unjudged\">--quick: 3 rounds, fewer than the 6 a paired time "
+                    "interval needs") != std::string::npos);
+    CHECK(html.find("No front line is drawn.") != std::string::npos);
+    CHECK(count(html, "<svg class=\"pareto\"") == 2);
+    CHECK(html.find("<polyline") == std::string::npos);
 }
 
 TEST_CASE("write_html_report reads results.json and names what is missing") {

@@ -140,9 +140,9 @@ std::string environment_section(const RunRecord& run) {
         html += fmt::format("<p class=\"warning\">The canopy binary was built from {}, not from the checkout's commit "
                             "{}: these numbers come from the binary's code.</p>\n",
                             html_escape(e.binary_commit), html_escape(e.git_commit));
-    html += "<table class=\"environment\">\n";
+    html += "<div class=\"table-scroll\"><table class=\"environment\">\n";
     for (const auto& [key, value] : rows) html += "<tr>" + cell(key) + cell(value) + "</tr>\n";
-    return html + "</table>\n";
+    return html + "</table></div>\n";
 }
 
 std::string results_section(const RunRecord& run, const CaseLabels& labels) {
@@ -150,7 +150,7 @@ std::string results_section(const RunRecord& run, const CaseLabels& labels) {
     std::string html =
         "<h2 id=\"results\">Results</h2>\n<p class=\"hint\">Click a column's header to sort. Time: GPU time of the frame "
         "(median ± MAD over the rounds); ratio: to the group's baseline, paired round by round, with its 95 % "
-        "interval.</p>\n<table class=\"sortable\" id=\"results-table\">\n<thead><tr><th>group</th><th>technique</th><th>parameters</th>"
+        "interval.</p>\n<div class=\"table-scroll\"><table class=\"sortable\" id=\"results-table\">\n<thead><tr><th>group</th><th>technique</th><th>parameters</th>"
         "<th>GPU ms</th><th>time ratio</th>";
     for (const MetricInfo* m : metrics) html += "<th>" + html_escape(m->column) + "</th>";
     html += "<th>memory MiB</th><th>status</th></tr></thead>\n<tbody>\n";
@@ -176,11 +176,11 @@ std::string results_section(const RunRecord& run, const CaseLabels& labels) {
         const std::string flag = degenerate_reference_text(degenerate_reasons(run, c));
         html += cell(c.ok ? (flag.empty() ? "ok" : "ok; " + flag) : "failed: " + c.error) + "</tr>\n";
     }
-    return html + "</tbody></table>\n";
+    return html + "</tbody></table></div>\n";
 }
 
 std::string pareto_section(const RunRecord& run, const CaseLabels& labels, const std::vector<std::string>& wanted) {
-    const auto label = [&](const CaseResult& c) { return c.technique + " " + labels.parameters(c); };
+    const auto label = [&](const CaseResult& c) { return labels.label(c); };
     std::string html;
     for (const std::string& name : wanted.empty() ? default_pareto_metrics(run) : wanted) {
         const MetricInfo* metric = find_metric(name);
@@ -189,29 +189,34 @@ std::string pareto_section(const RunRecord& run, const CaseLabels& labels, const
             if (front.points.size() < 2) continue;
             html += fmt::format("<div class=\"chart\"><h3>{} — {}</h3>\n{}", html_escape(front.group),
                                 html_escape(metric->title), pareto_svg(front, *metric, label));
-            html += "<table class=\"sortable\"><thead><tr><th>on the front</th><th>technique</th><th>parameters</th>"
+            html += "<div class=\"table-scroll\"><table class=\"sortable\"><thead><tr><th>#</th><th>on the front</th><th>technique</th><th>parameters</th>"
                     "<th>time ratio</th><th>" +
                     html_escape(metric->column) + "</th><th>dominated by</th></tr></thead><tbody>\n";
-            for (const ParetoPoint& p : front.points) {
+            for (size_t i = 0; i < front.points.size(); ++i) {
+                const ParetoPoint& p = front.points[i];
                 std::string by;
                 for (const ParetoPoint& q : front.points)
                     if (p.dominated && q.result->id == p.dominated_by) by = label(*q.result);
                 const double error = metric->percent ? 100 * p.error : p.error;
-                html += fmt::format("<tr class=\"{}\">{}{}{}{}{}{}</tr>\n", p.dominated ? "dominated" : "front",
-                                    cell(p.dominated ? "" : "yes"), cell(p.result->technique), cell(labels.parameters(*p.result)),
+                html += fmt::format("<tr class=\"{}\">{}{}{}{}{}{}{}</tr>\n", p.dominated ? "dominated" : "front",
+                                    cell(std::to_string(i + 1), true, double(i + 1)), cell(p.dominated ? "" : "yes"), cell(p.result->technique), cell(labels.parameters(*p.result)),
                                     cell(ratio_cell(p.time_ratio), true, p.time_ratio.value), cell(metric_cell(error), true, error),
                                     cell(by));
             }
-            html += "</tbody></table></div>\n";
+            html += "</tbody></table></div></div>\n";
         }
     }
     if (html.empty()) return "";
+    const std::string note = too_few_rounds_note(run);
     return "<h2 id=\"pareto\">Pareto fronts</h2>\n<p class=\"hint\">Per scene and resolution, on the error axes the "
            "techniques' families declare. A configuration is dominated when another is neither significantly worse in "
            "error nor significantly slower, and is significantly better in one of them: faster (the 95 % interval of their "
-           "paired time ratio lies below 1) or lower in error by more than the metric's compare tolerance. Filled: on "
-           "the front; hollow: dominated; bars: 95 % interval of the time ratio.</p>\n<div class=\"charts\">\n" +
-           html + "</div>\n";
+           "paired time ratio lies below 1) or lower in error by more than the metric's compare tolerance. Each point "
+           "is numbered by its row (#) in the table below its chart; hover over it for its name. Filled: on the front; "
+           "hollow: dominated; bars: 95 % interval of the time ratio; line: the front, from each configuration to the "
+           "next slower one with a better error.</p>\n" +
+           (note.empty() ? "" : "<p class=\"warning\" id=\"pareto-unjudged\">" + html_escape(note) + " No front line is drawn.</p>\n") +
+           "<div class=\"charts\">\n" + html + "</div>\n";
 }
 
 std::string colour_bar(const std::array<ColormapEntry, 256>& colormap, double max_value, const std::string& what) {
@@ -241,8 +246,10 @@ std::string images_section(const RunRecord& run, const CaseLabels& labels, Image
             return fmt::format("<div><div class=\"panel\" style=\"--aspect: {} / {}\"><span class=\"label\">{}</span>{}</div>{}</div>",
                                c.resolution.width, c.resolution.height, name, img, below);
         };
-        html += fmt::format("<div class=\"case\" id=\"case-{}\"><h4><strong>{}</strong> {} — {}</h4>\n<div class=\"viewer\">",
-                            html_escape(c.id), html_escape(c.technique), html_escape(labels.parameters(c)),
+        const std::string parameters = labels.parameters(c);  // "-": none shown, so none written
+        html += fmt::format("<div class=\"case\" id=\"case-{}\"><h4><strong>{}</strong>{} — {}</h4>\n<div class=\"viewer\">",
+                            html_escape(c.id), html_escape(c.technique),
+                            parameters == "-" ? std::string() : fmt::format(" {}", html_escape(parameters)),
                             html_escape(c.group < run.groups.size() ? run.groups[c.group].name : c.scene));
         html += panel(c.image_png, "technique", "");
         html += panel(reference ? reference->image_png : "", "reference", "");

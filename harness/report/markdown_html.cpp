@@ -83,7 +83,7 @@ std::string sort_value(std::string_view cell) {
 }
 
 std::string table_html(const std::vector<std::string_view>& lines) {
-    std::string out = "<table class=\"sortable\">\n<thead><tr>";
+    std::string out = "<div class=\"table-scroll\"><table class=\"sortable\">\n<thead><tr>";
     const std::vector<std::string_view> header = table_cells(lines[0]);
     for (std::string_view cell : header) out += "<th>" + inline_html(cell) + "</th>";
     out += "</tr></thead>\n<tbody>\n";
@@ -97,7 +97,7 @@ std::string table_html(const std::vector<std::string_view>& lines) {
                                sort_value(cells[c]), inline_html(cells[c]));
         out += "</tr>\n";
     }
-    return out + "</tbody></table>\n";
+    return out + "</tbody></table></div>\n";
 }
 
 bool is_table_separator(std::string_view line) {

@@ -46,7 +46,7 @@ std::vector<ParetoFront> pareto_fronts(const RunRecord& run, const std::string& 
     const MetricInfo& info = metric_info(metric);
     std::vector<ParetoFront> fronts;
     for (size_t g = 0; g < run.groups.size(); ++g) {
-        ParetoFront front{run.groups[g].name, metric, {}, {}};
+        ParetoFront front{run.groups[g].name, metric, {}, {}, false};
         for (const CaseResult& c : run.cases) {
             if (c.group != g || !c.ok) continue;
             const double error = c.image_error ? info.meaningful_value(*c.image_error) : std::nan("");
@@ -63,6 +63,9 @@ std::vector<ParetoFront> pareto_fronts(const RunRecord& run, const std::string& 
             }
             front.points.push_back(ParetoPoint{&c, ratio, error, false, ""});
         }
+        front.judged = std::count_if(front.points.begin(), front.points.end(), [](const ParetoPoint& p) {
+                           return p.result->ratio.per_round.size() >= kMinComparedRounds;
+                       }) >= 2;
         for (ParetoPoint& a : front.points)
             for (const ParetoPoint& b : front.points)
                 if (dominates(b, a, metric)) {
@@ -73,6 +76,14 @@ std::vector<ParetoFront> pareto_fronts(const RunRecord& run, const std::string& 
         fronts.push_back(std::move(front));
     }
     return fronts;
+}
+
+std::string too_few_rounds_note(const RunRecord& run) {
+    if (run.rounds >= int(kMinComparedRounds)) return "";
+    return fmt::format("{}{} rounds, fewer than the {} a paired time interval needs (as canopy compare). A configuration "
+                       "is dominated only by one shown not significantly slower, which takes that interval, so none "
+                       "is judged dominated: every one is marked as on the front.",
+                       run.quick ? "--quick: " : "This run measured ", run.rounds, kMinComparedRounds);
 }
 
 std::vector<std::string> default_pareto_metrics(const RunRecord& run) {

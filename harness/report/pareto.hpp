@@ -37,6 +37,9 @@ struct ParetoFront {
     std::string metric;         // results.json name of the error axis
     std::vector<ParetoPoint> points;  // every case of the group that has a time and this metric, in run order
     std::vector<std::string> unmeasured;  // ids of ok cases without a time or this metric
+    // Whether dominance was judged: at least two points measured kMinComparedRounds rounds. When
+    // not (--quick), no point is dominated for want of time intervals, and none is a front either.
+    bool judged = false;
 };
 
 // Whether `b` dominates `a` on `metric` (the rules above).
@@ -45,6 +48,10 @@ bool dominates(const ParetoPoint& b, const ParetoPoint& a, const std::string& me
 // The front of every group of `run` on one error metric (a results.json name, `canopy metrics`).
 // Throws std::invalid_argument for an unknown metric.
 std::vector<ParetoFront> pareto_fronts(const RunRecord& run, const std::string& metric);
+
+// Why no configuration of `run` is judged dominated when it measured fewer rounds than
+// kMinComparedRounds (--quick); "" when it measured enough.
+std::string too_few_rounds_note(const RunRecord& run);
 
 // The error axes a run's fronts are drawn on by default: the axes the families of its techniques
 // declare (Technique::pareto_errors), in order of first appearance; unknown techniques add none.

@@ -3,6 +3,7 @@
 #include "metrics/metric_registry.hpp"
 #include "report/atomic_file.hpp"
 #include "report/text_table.hpp"
+#include "run/case_labels.hpp"
 #include "run/run_comparison.hpp"
 
 #include <fmt/format.h>
@@ -25,7 +26,7 @@ std::string front_table(const ParetoFront& front, const MetricInfo& metric) {
         if (p->dominated)
             for (const ParetoPoint& q : front.points)
                 if (q.result->id == p->dominated_by)
-                    by = fmt::format("{} {}", q.result->technique, q.result->params_shown);
+                    by = case_name(q.result->technique, q.result->params_shown);
         rows.push_back({p->dominated ? "" : "front", c.technique, c.params_shown, ratio_cell(p->time_ratio),
                         metric_cell(metric.percent ? 100.0 * p->error : p->error), by});
     }
@@ -46,8 +47,8 @@ std::string pareto_report(const RunRecord& run, const std::vector<std::string>& 
         if (!metric) continue;
         for (const ParetoFront& front : pareto_fronts(run, name)) {
             if (front.points.empty()) continue;
-            body += fmt::format("\n## {} — {} ({}, {} is better)\n\n", front.group, metric->title, metric->unit,
-                                to_string(metric->better));
+            body += fmt::format("\n## {} — {} ({}{} is better)\n\n", front.group, metric->title,
+                                metric->unit.empty() ? "" : fmt::format("{}, ", metric->unit), to_string(metric->better));
             body += front_table(front, *metric);
         }
     }
@@ -59,12 +60,7 @@ std::string pareto_report(const RunRecord& run, const std::vector<std::string>& 
                "significantly worse in error (by more than the metric's compare tolerance) nor significantly slower "
                "(the interval of their paired time ratio lies above 1), and is significantly better in one: faster (the interval lies below 1) or lower in error by more than the "
                "metric's compare tolerance (`canopy metrics`). \"front\" marks the others. Rows by time.{}\n",
-               run.experiment,
-               run.rounds < int(kMinComparedRounds)
-                   ? fmt::format(" This run measured {} rounds, fewer than the {} a time interval needs: no "
-                                 "configuration is judged dominated.",
-                                 run.rounds, kMinComparedRounds)
-                   : "") +
+               run.experiment, run.rounds < int(kMinComparedRounds) ? "\n\n" + too_few_rounds_note(run) : "") +
            body;
 }
 

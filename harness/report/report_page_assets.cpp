@@ -7,14 +7,16 @@ std::string_view report_page_style() {
 body { font-family: system-ui, sans-serif; margin: 1.5em auto; max-width: 1600px; padding: 0 1em; color: #222; }
 h1 { font-size: 1.5em; } h2 { border-bottom: 1px solid #ccc; margin-top: 2em; }
 table { border-collapse: collapse; margin: 0.5em 0 1em; font-size: 0.85em; }
+.table-scroll { overflow-x: auto; max-width: 100%; }
 th, td { border: 1px solid #ddd; padding: 2px 6px; } th { background: #f3f3f3; }
-td.num { text-align: right; font-variant-numeric: tabular-nums; }
+td.num { text-align: right; font-variant-numeric: tabular-nums; white-space: nowrap; }
 table.sortable th { cursor: pointer; user-select: none; }
 table.sortable th.sorted-ascending::after { content: " \25B2"; } table.sortable th.sorted-descending::after { content: " \25BC"; }
 tr.dominated td { color: #888; }
 .environment td:first-child { font-weight: bold; }
 .warning { background: #fff3cd; padding: 0.5em; border: 1px solid #e0c36b; }
-.charts { display: flex; flex-wrap: wrap; gap: 1em; } .chart { border: 1px solid #eee; padding: 0.5em; }
+.charts { display: flex; flex-wrap: wrap; gap: 1em; } .chart { border: 1px solid #eee; padding: 0.5em; min-width: 0; max-width: 100%; box-sizing: border-box; }
+svg.pareto { max-width: 100%; height: auto; }
 svg.pareto circle { cursor: default; }
 .case { margin: 1em 0 2em; } .case h4 { margin: 0.2em 0; font-weight: normal; }
 .viewer { display: grid; grid-template-columns: repeat(4, 1fr); gap: 6px; }
@@ -109,7 +111,7 @@ function setUp() {
 
 // #selftest: what tests/report/ checks in a headless browser, written into the page.
 function selfTest() {
-  const result = { errors: pageErrors.slice(), images: 0, broken: [], zoom_synchronised: null, sortable: null };
+  const result = { errors: pageErrors.slice(), images: 0, broken: [], zoom_synchronised: null, sortable: null, cut_off: [] };
   for (const img of document.images) {
     result.images++;
     if (!img.complete || img.naturalWidth === 0) result.broken.push(img.alt || img.getAttribute("data-image") || img.src.slice(0, 60));
@@ -132,7 +134,17 @@ function selfTest() {
       result.sortable = values.every((v, i) => i === 0 || values[i - 1] <= v);
     }
   }
-  result.pass = result.errors.length === 0 && result.broken.length === 0 && result.zoom_synchronised !== false && result.sortable !== false;
+  // Tables fit the page: every cell lies within the window's width, or inside a box that scrolls
+  // it (.table-scroll) and that itself lies within the width; the page never scrolls sideways.
+  const width = document.documentElement.clientWidth;
+  for (const cell of document.querySelectorAll("td, th")) {
+    const box = cell.closest(".table-scroll");
+    const scrolls = box && ["auto", "scroll"].includes(getComputedStyle(box).overflowX);
+    if ((scrolls ? box : cell).getBoundingClientRect().right > width + 1) result.cut_off.push(cell.textContent.trim().slice(0, 40));
+  }
+  result.page_width = { window: width, content: document.documentElement.scrollWidth };
+  result.tables_fit = result.cut_off.length === 0 && document.documentElement.scrollWidth <= width;
+  result.pass = result.tables_fit && result.errors.length === 0 && result.broken.length === 0 && result.zoom_synchronised !== false && result.sortable !== false;
   const out = document.getElementById("selftest-result");
   out.textContent = JSON.stringify(result);
   document.title = "selftest: " + (result.pass ? "pass" : "fail");

@@ -6,6 +6,7 @@
 
 #include "metrics/metric_registry.hpp"
 #include "report/text_table.hpp"
+#include "run/case_labels.hpp"
 
 #include <fmt/format.h>
 
@@ -244,9 +245,7 @@ const CaseResult* case_by_id(const RunRecord& run, const std::string& id) {
     return nullptr;
 }
 
-std::string case_label(const CaseResult& c) {
-    return c.params_shown.empty() || c.params_shown == "-" ? c.technique : c.technique + " " + c.params_shown;
-}
+std::string case_label(const CaseResult& c) { return case_name(c.technique, c.params_shown); }
 
 ResultColumn dominance_column() {
     ResultColumn column;

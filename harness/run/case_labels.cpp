@@ -6,6 +6,10 @@
 
 namespace canopy {
 
+std::string case_name(const std::string& technique, const std::string& parameters) {
+    return parameters.empty() || parameters == "-" ? technique : technique + " " + parameters;
+}
+
 CaseLabels::CaseLabels(const std::vector<Case>& cases, const TechniqueRegistry& registry) : registry_(registry) {
     for (const Case& c : cases) add(c.technique, c.params.values());
 }
@@ -27,6 +31,7 @@ bool CaseLabels::swept(const std::string& technique, const std::string& paramete
 
 std::string CaseLabels::parameters(const Case& c) const { return parameters(c.technique, c.params.values()); }
 std::string CaseLabels::parameters(const CaseResult& c) const { return parameters(c.technique, c.params); }
+std::string CaseLabels::label(const CaseResult& c) const { return case_name(c.technique, parameters(c)); }
 
 std::string CaseLabels::parameters(const std::string& technique_name, const Values& values) const {
     const Technique* technique = registry_.find(technique_name);

@@ -15,6 +15,10 @@
 
 namespace canopy {
 
+// A case's name in headings and "dominated by" cells: its technique, then its shown parameters
+// unless they are "-" or empty ("shadow.hard", never "shadow.hard -").
+std::string case_name(const std::string& technique, const std::string& parameters);
+
 class CaseLabels {
 public:
     CaseLabels(const std::vector<Case>& cases, const TechniqueRegistry& registry);
@@ -25,6 +29,8 @@ public:
     std::string parameters(const Case& c) const;
     std::string parameters(const CaseResult& c) const;
     bool swept(const std::string& technique, const std::string& parameter) const;
+    // "shadow.pcf kernel=3"; just "shadow.hard" when no parameter is shown (case_name).
+    std::string label(const CaseResult& c) const;
 
 private:
     using Values = std::vector<std::pair<std::string, ParamValue>>;

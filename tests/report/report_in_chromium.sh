@@ -3,7 +3,9 @@
 # written with `canopy run --report`, opened in headless Chromium with #selftest. The page's own
 # check (harness/report/report_page_assets.cpp) writes its verdict into the DOM, read back with
 # --dump-dom: no script error, every image loaded, a wheel on one panel zooms its three
-# neighbours, a click on "time ratio" sorts the results. Then a screenshot must come out.
+# neighbours, a click on "time ratio" sorts the results, and in a narrow window (760 px) no table
+# cell lies beyond the page's width unless its table scrolls in its own box. Then a screenshot
+# must come out.
 # Usage: report_in_chromium.sh CANOPY DATA_DIR
 # Exit 77 (ctest: skipped) only where Chromium is not installed; a Chromium that fails to start fails.
 set -euo pipefail
@@ -29,7 +31,7 @@ grep -q "report.html" "$work/stdout" || fail "canopy run does not name the repor
 # As root, Chromium needs --no-sandbox; a container's /dev/shm is small.
 flags=(--headless --no-sandbox --disable-gpu --disable-dev-shm-usage --no-first-run --hide-scrollbars
        --user-data-dir="$work/profile" --virtual-time-budget=20000)
-timeout 120 "$browser" "${flags[@]}" --dump-dom "file://$page#selftest" >"$work/dom.html" 2>"$work/chromium.log" ||
+timeout 120 "$browser" "${flags[@]}" --window-size=760,1000 --dump-dom "file://$page#selftest" >"$work/dom.html" 2>"$work/chromium.log" ||
   fail "Chromium failed (exit $?): $(tail -5 "$work/chromium.log")"
 python3 - "$work/dom.html" <<'PY' || fail "the page's self-test failed"
 import html, json, re, sys
@@ -46,6 +48,8 @@ if result["broken"]: problems.append(f"images that did not load: {result['broken
 if result["images"] < 12: problems.append(f"only {result['images']} images")
 if result["zoom_synchronised"] is not True: problems.append("zooming one panel did not zoom its neighbours")
 if result["sortable"] is not True: problems.append("the results table did not sort by time ratio")
+if result.get("tables_fit") is not True:
+    problems.append(f"tables cut off at the page's edge: {result.get('cut_off')}, widths {result.get('page_width')}")
 if not result["pass"]: problems.append("the page says fail")
 for needle in ("Pareto fronts", "Paper comparison", "TEST-T1", "Environment", "PCF 5x5 is slower than hard shadows"):
     if needle not in dom: problems.append(f"the page lacks '{needle}'")
