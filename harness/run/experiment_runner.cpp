@@ -366,9 +366,7 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
             const size_t first = planned.cases.front();
             auto label_of = [&](size_t i) {
                 const Case& c = prepared.cases[i];
-                const std::string shown = labels.parameters(c);  // "-": nothing to show
-                return shown == "-" ? fmt::format("{} {}", planned.name, c.technique)
-                                    : fmt::format("{} {} {}", planned.name, c.technique, shown);
+                return planned.name + " " + case_name(c.technique, labels.parameters(c));
             };
             if (options.show_progress)
                 for (size_t k = 0; k < planned.cases.size(); ++k)
