@@ -81,6 +81,16 @@ TEST_CASE("ParamSpec::type_and_range and to_string") {
     CHECK(to_string(ParamValue{std::string("poisson")}) == "poisson");
 }
 
+TEST_CASE("a default or range declared from a float constant reads as written, not as float noise") {
+    // Before: `canopy list` showed 0.15f's double, 0.15000000596046448.
+    const ParamSpec from_float = ParamSpec::real("width", 0.15f, 0.1f, 2.7f, "a float constant");
+    CHECK(default_text(from_float) == "0.15");
+    CHECK(from_float.type_and_range() == "float in [0.1, 2.7]");
+    const ParamSpec from_double = ParamSpec::real("bias", 0.15, 0.0, 0.3333333333333333, "a double constant");
+    CHECK(default_text(from_double) == "0.15");
+    CHECK(from_double.type_and_range() == "float in [0, 0.3333333333333333]");
+}
+
 TEST_CASE("ParamSet::resolve fills defaults and applies given values") {
     const ParamSet defaults = ParamSet::resolve(kFakeSpecs, {}, {}, {}, "test.fake");
     CHECK(defaults.summary() == "kernel=5 pattern=grid bias=0.005 hardware_pcf=true");
