@@ -162,9 +162,9 @@ int reference(const fs::path& scene_file, const std::string& out, const Referenc
     if (!o.tile.empty()) {
         ShardSpec tile;
         try {
-            tile = parse_shard(o.tile);
+            tile = parse_shard(o.tile, "--tile");
         } catch (const std::invalid_argument& e) {
-            throw ConfigError(fs::path(), 0, std::string(e.what()).replace(0, 7, "--tile"), "give --tile i/N, 1 <= i <= N");
+            throw ConfigError(fs::path(), 0, e.what(), "give --tile i/N, 1 <= i <= N: row band i of N");
         }
         if (out.empty())
             throw ConfigError(fs::path(), 0, "--tile needs --out", "give the folder every tile of this reference goes to");

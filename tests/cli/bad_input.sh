@@ -124,6 +124,15 @@ case $case in
     (cd "$work/elsewhere" && ./canopy bench reference --width 8 --height 8 --light-samples 1 --pixel-samples 1 >/dev/null 2>"$work/stderr") \
       || fail "bench reference failed with configs/ in the current directory"
     grep -q "on local at 8x8" "$work/stderr" || fail "the current directory's configs/ was not used" ;;
+  tile_hint)
+    # Issue 36: `--tile 0/8` was answered with an example of --shard.
+    "$canopy" reference "$data/scenes/tiny.toml" --tile 0/8 --out "$work/tiles" --width 8 --height 8 >"$work/stdout" 2>"$work/stderr"
+    rc=$?
+    cat "$work/stderr"
+    [ $rc -eq 2 ] || fail "exit code $rc, expected 2"
+    grep -q -- '--tile 0/8: i must be 1 to N .*e\.g\. --tile 1/8' "$work/stderr" || fail "the message does not give --tile's form"
+    ! grep -q -- '--shard' "$work/stderr" || fail "the message names --shard"
+    [ ! -e "$work/tiles" ] || fail "a tile folder was created" ;;
   *) fail "unknown case $case" ;;
 esac
 echo "ok: $case"
