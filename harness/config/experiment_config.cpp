@@ -161,6 +161,10 @@ std::vector<Scene> read_scenes(TomlReader& reader, std::vector<std::filesystem::
                                   fmt::format("write it as: {}", example));
         const std::filesystem::path scene_file = (folder / name->get()).lexically_normal();
         std::error_code ignored;
+        if (std::filesystem::is_directory(scene_file, ignored))
+            throw reader.error_at(*file_node, fmt::format("scene file '{}' is a directory ({}), not a scene file",
+                                                          name->get(), scene_file.string()),
+                                  "name the scene's .toml file inside it, e.g. \"../scenes/spheres.toml\"");
         if (!std::filesystem::is_regular_file(scene_file, ignored))
             throw reader.error_at(*file_node, fmt::format("scene file '{}' not found (looked for {})", name->get(),
                                                           scene_file.string()),

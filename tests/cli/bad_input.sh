@@ -133,6 +133,11 @@ case $case in
     grep -q -- '--tile 0/8: i must be 1 to N .*e\.g\. --tile 1/8' "$work/stderr" || fail "the message does not give --tile's form"
     ! grep -q -- '--shard' "$work/stderr" || fail "the message names --shard"
     [ ! -e "$work/tiles" ] || fail "a tile folder was created" ;;
+  scene_dir)
+    # Issue 36: a scene path naming a folder said "not found".
+    experiment folder_scene unused
+    sed -i 's|"../scenes/unused.toml"|"../scenes"|' "$work/experiments/folder_scene.toml"
+    expect_refused folder_scene "experiments/folder_scene\.toml:2: error: scene file '\.\./scenes' is a directory" ;;
   *) fail "unknown case $case" ;;
 esac
 echo "ok: $case"
