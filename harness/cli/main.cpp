@@ -44,6 +44,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/chrono.h>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <list>
 
@@ -715,6 +716,30 @@ int run(const RunCommand& command, const ReferenceOptions& reference_options) {
     return kExitOk;
 }
 
+// `canopy frobnicate` (or `canopy bench frobnicate`): CLI11 would say only "A subcommand is
+// required". Throws ConfigError naming the word and listing the commands.
+void refuse_unknown_command(CLI::App& app, int argc, char** argv) {
+    CLI::App* level = &app;
+    std::string prefix;  // the commands before the word: "" or "bench "
+    for (int i = 1; i < argc; ++i) {
+        const std::vector<CLI::App*> commands = level->get_subcommands([](CLI::App*) { return true; });
+        const std::string word = argv[i];
+        if (commands.empty() || word.empty() || word[0] == '-') return;
+        std::vector<std::string> names;
+        for (CLI::App* command : commands) names.push_back(command->get_name());
+        const auto known = std::find(names.begin(), names.end(), word);
+        if (known == names.end()) {
+            const std::string near = closest_match(word, names);
+            throw ConfigError(fs::path(), 0,
+                              fmt::format("unknown command {}{}; the commands are: {}", prefix, word, fmt::join(names, ", ")),
+                              fmt::format("{}`canopy {}--help` describes each",
+                                          near.empty() ? "" : fmt::format("did you mean {}{}? ", prefix, near), prefix));
+        }
+        level = commands[size_t(known - names.begin())];
+        prefix += word + " ";
+    }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -995,7 +1020,11 @@ int main(int argc, char** argv) {
         quick_cmd->footer("Exit codes: 0 success, 1 a file could not be written, 2 bad input (the message names file:line).");
 
     try {
+        refuse_unknown_command(app, argc, argv);
         app.parse(argc, argv);
+    } catch (const ConfigError& e) {
+        fmt::print(stderr, "{}\n", e.formatted());
+        return kExitBadInput;
     } catch (const CLI::ParseError& e) {
         const int code = app.exit(e);
         return code == 0 ? kExitOk : kExitBadInput;

@@ -138,6 +138,20 @@ case $case in
     experiment folder_scene unused
     sed -i 's|"../scenes/unused.toml"|"../scenes"|' "$work/experiments/folder_scene.toml"
     expect_refused folder_scene "experiments/folder_scene\.toml:2: error: scene file '\.\./scenes' is a directory" ;;
+  unknown_command)
+    # Issue 36: `canopy frobnicate` said "A subcommand is required".
+    "$canopy" frobnicate >"$work/stdout" 2>"$work/stderr"
+    rc=$?
+    cat "$work/stderr"
+    [ $rc -eq 2 ] || fail "exit code $rc, expected 2"
+    grep -q 'unknown command frobnicate; the commands are: run, reference, bench, compare' "$work/stderr" \
+      || fail "the message does not name the word and list the commands"
+    "$canopy" bench refrence >"$work/stdout" 2>"$work/stderr"
+    rc=$?
+    cat "$work/stderr"
+    [ $rc -eq 2 ] || fail "bench refrence: exit code $rc, expected 2"
+    grep -q "unknown command bench refrence; the commands are: reference, scaling" "$work/stderr" || fail "bench's commands are not listed"
+    grep -q "did you mean bench reference?" "$work/stderr" || fail "no suggestion" ;;
   *) fail "unknown case $case" ;;
 esac
 echo "ok: $case"
