@@ -144,9 +144,12 @@ struct ReferenceOptions {
     size_t merge_tiles = 0;  // `--merge-tiles N`: put --out's N tiles together into the cache
 };
 
+// The reference cache folder, checked (a file where the folder should be is refused, exit 2).
 fs::path cache_dir(const ReferenceOptions& o) {
     if (o.no_cache) return {};
-    return o.cache_dir.empty() ? default_reference_cache_dir() : fs::path(o.cache_dir);
+    const fs::path dir = o.cache_dir.empty() ? default_reference_cache_dir() : fs::path(o.cache_dir);
+    check_reference_cache_dir(dir);
+    return dir;
 }
 
 // Before anything is read or written: what a timing-only build lacks, as bad input (exit 2).
@@ -156,6 +159,7 @@ void refuse_in_timing_only_build(bool wants_reference, bool writes_images) {
 
 int reference(const fs::path& scene_file, const std::string& out, const ReferenceOptions& o) {
     refuse_in_timing_only_build(true, true);
+    if (o.tile.empty()) cache_dir(o);  // checked before anything is ray-traced
     const Scene scene = load_scene(scene_file);
     const auto meshes = build_scene_meshes(scene);
     if (!o.tile.empty() && o.merge_tiles > 0)
@@ -594,6 +598,7 @@ int run(const RunCommand& command, const ReferenceOptions& reference_options) {
     // anything is written.
     refuse_in_timing_only_build(command.with_reference, command.images != ImageOutput::none);
     const Experiment experiment = load_experiment(command.config, registry);
+    const fs::path reference_cache = command.with_reference ? cache_dir(reference_options) : fs::path();
     std::optional<ShardSpec> shard;
     if (!command.shard.empty()) try {
             shard = parse_shard(command.shard);
@@ -610,7 +615,7 @@ int run(const RunCommand& command, const ReferenceOptions& reference_options) {
     options.show_progress = command.progress;
     options.reference = command.with_reference;
     options.images = command.images;
-    options.reference_cache_dir = cache_dir(reference_options);
+    options.reference_cache_dir = reference_cache;
     options.ballast = ballast_from_environment();  // TEST-ONLY (run/test_ballast.hpp)
     if (shard) {
         // Whole groups, balanced by estimated cost (run/run_plan.hpp): this shard's cases alone.

@@ -152,6 +152,29 @@ case $case in
     [ $rc -eq 2 ] || fail "bench refrence: exit code $rc, expected 2"
     grep -q "unknown command bench refrence; the commands are: reference, scaling" "$work/stderr" || fail "bench's commands are not listed"
     grep -q "did you mean bench reference?" "$work/stderr" || fail "no suggestion" ;;
+  cache_dir_file)
+    # Issue 36: CANOPY_CACHE_DIR naming a file was found only after ray-tracing. A reference that
+    # takes minutes must be refused at once.
+    echo "a file" >"$work/cache_file"
+    start=$(date +%s)
+    CANOPY_CACHE_DIR="$work/cache_file" timeout 60 "$canopy" reference "$data/scenes/tiny.toml" --out "$work/ref" \
+      --width 2048 --height 2048 --pixel-samples 256 >"$work/stdout" 2>"$work/stderr"
+    rc=$?
+    cat "$work/stderr"
+    [ $rc -eq 2 ] || fail "reference: exit code $rc, expected 2"
+    [ $(($(date +%s) - start)) -le 10 ] || fail "refused only after $(($(date +%s) - start)) s"
+    grep -q "$work/cache_file: error: is a file, not a folder.*CANOPY_CACHE_DIR names it" "$work/stderr" || fail "the message does not name the file"
+    [ ! -e "$work/ref" ] || fail "reference wrote something"
+    # The same through --reference-cache, and in a run; a run without the reference does not need the cache.
+    "$canopy" reference "$data/scenes/tiny.toml" --reference-cache "$work/cache_file/reference" --width 8 --height 8 >/dev/null 2>"$work/stderr"
+    rc=$?
+    [ $rc -eq 2 ] && grep -q "is a file, not a folder" "$work/stderr" || fail "--reference-cache through a file: exit $rc"
+    CANOPY_CACHE_DIR="$work/cache_file" "$canopy" run "$data/experiments/tiny.toml" --out "$work/out" --quick >/dev/null 2>"$work/stderr"
+    rc=$?
+    [ $rc -eq 2 ] && grep -q "is a file, not a folder" "$work/stderr" || fail "run: exit $rc, expected 2"
+    [ ! -e "$work/out" ] || fail "the run created its folder"
+    CANOPY_CACHE_DIR="$work/cache_file" "$canopy" run "$data/experiments/tiny.toml" --out "$work/out" --quick --no-reference \
+      --images none --no-progress >/dev/null 2>"$work/stderr" || fail "run --no-reference refused: $(cat "$work/stderr")" ;;
   *) fail "unknown case $case" ;;
 esac
 echo "ok: $case"
