@@ -175,6 +175,15 @@ case $case in
     [ ! -e "$work/out" ] || fail "the run created its folder"
     CANOPY_CACHE_DIR="$work/cache_file" "$canopy" run "$data/experiments/tiny.toml" --out "$work/out" --quick --no-reference \
       --images none --no-progress >/dev/null 2>"$work/stderr" || fail "run --no-reference refused: $(cat "$work/stderr")" ;;
+  density_map_file)
+    # Issue 36: an image that is not one exited 1 with no file:line.
+    printf '[scene]\nname = "lawn"\n\n[[light]]\ntype = "directional"\ndirection = [0, -1, 0]\n\n[[object]]\nshape = "plane"\nsize = [8, 8]\n\n[[population]]\nname = "lawn"\nkind = "grass"\nparams = { cells_x = 2, cells_z = 2, cell_size = 1, blades = 20, density_map = "file", density_map_file = "map.png" }\n' \
+      >"$work/scenes/lawn.toml"
+    experiment lawn lawn
+    echo "not an image" >"$work/scenes/map.png"
+    expect_refused lawn 'scenes/lawn\.toml:12: error: .*density_map_file: cannot read image .*map\.png: it is neither PNG nor OpenEXR'
+    printf '\x89PNG\r\n\x1a\ntruncated' >"$work/scenes/map.png"
+    expect_refused lawn 'scenes/lawn\.toml:12: error: .*density_map_file: cannot read image .*map\.png: ' ;;
   *) fail "unknown case $case" ;;
 esac
 echo "ok: $case"
