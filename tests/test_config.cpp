@@ -483,23 +483,40 @@ TEST_CASE("experiment value checks") {
     CHECK(error_line("[experiment]\nscenes = [\"scene.toml\"]\n" + technique + "parms = 1\n") == 6);
 }
 
-TEST_CASE("identical cases get distinct ids") {
+TEST_CASE("the same technique with the same parameters twice is refused at the second listing") {
+    // Issue 36: identical cases were measured twice under one heading (ids ..._2).
     test::TempFolder folder;
     folder.write("room.toml", "[scene]\nname = \"room\"\n[[light]]\ntype = \"directional\"\n");
+    const auto error_of = [&](const std::string& techniques) {
+        const std::filesystem::path file =
+            folder.write("experiment.toml", "[experiment]\nscenes = [\"room.toml\"]\n" + techniques);
+        return test::config_error_of([&] { load_experiment(file, TechniqueRegistry::instance()); });
+    };
+    const auto twice = error_of("[[technique]]\nname = \"test.fake\"\n[[technique]]\nname = \"test.fake\"\n");
+    REQUIRE(twice);
+    CHECK(twice->line() == 5);
+    CHECK(std::string(twice->what()).find("repeats the parameters of the [[technique]] at line 3") != std::string::npos);
+    // A default given is the same case as the default left out (test.fake's kernel is 5).
+    const auto with_default =
+        error_of("[[technique]]\nname = \"test.fake\"\n[[technique]]\nname = \"test.fake\"\nparams = { kernel = 5 }\n");
+    REQUIRE(with_default);
+    CHECK(with_default->line() == 5);
+    const auto in_one_list = error_of("[[technique]]\nname = \"test.fake\"\nparams = { kernel = [3, 3] }\n");
+    REQUIRE(in_one_list);
+    CHECK(in_one_list->line() == 3);
+    CHECK(std::string(in_one_list->what()).find("gives the same parameters twice") != std::string::npos);
+    // Other values are other cases.
     const std::filesystem::path file = folder.write(
-        "experiment.toml",
-        "[experiment]\nscenes = [\"room.toml\"]\n"
-        "[[technique]]\nname = \"test.fake\"\nparams = { kernel = [3, 3], pattern = \"poisson\" }\n"
-        "[[technique]]\nname = \"test.fake\"\n"
-        "[[technique]]\nname = \"test.fake\"\n");
+        "experiment.toml", "[experiment]\nscenes = [\"room.toml\"]\n"
+                           "[[technique]]\nname = \"test.fake\"\nparams = { kernel = [3, 7], pattern = \"poisson\" }\n"
+                           "[[technique]]\nname = \"test.fake\"\n");
     const std::vector<Case> cases =
         expand_cases(load_experiment(file, TechniqueRegistry::instance()), TechniqueRegistry::instance());
-    REQUIRE(cases.size() == 4);
+    REQUIRE(cases.size() == 3);
     // Keys given on one line keep their order too.
     CHECK(cases[0].id == "room_640x360_test.fake_kernel-3_pattern-poisson");
-    CHECK(cases[1].id == "room_640x360_test.fake_kernel-3_pattern-poisson_2");
+    CHECK(cases[1].id == "room_640x360_test.fake_kernel-7_pattern-poisson");
     CHECK(cases[2].id == "room_640x360_test.fake");
-    CHECK(cases[3].id == "room_640x360_test.fake_2");
 }
 
 TEST_CASE("case ids keep names in any script readable") {

@@ -15,6 +15,7 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <map>
 #include <optional>
 #include <set>
 
@@ -140,6 +141,7 @@ std::vector<Scene> read_scenes(TomlReader& reader, std::vector<std::filesystem::
 
     const std::filesystem::path folder = reader.file().parent_path();
     std::vector<Scene> scenes;
+    std::map<std::string, int> listed;  // scene name -> the line that first lists it
     size_t index = 0;
     for (const toml::node& element : *array) {
         ++index;
@@ -173,6 +175,14 @@ std::vector<Scene> read_scenes(TomlReader& reader, std::vector<std::filesystem::
                                       : "scene paths are relative to the experiment file's folder");
         Scene scene = load_scene(scene_file);  // its errors carry the scene file's own file:line
         if (variant) apply_scene_variant(*variant, scene);
+        // Groups and case ids are named after the scene: two of one name would measure it twice under one heading.
+        if (const auto first = listed.find(scene.name); first != listed.end())
+            throw reader.error_at(element, fmt::format("scene '{}' is listed twice (first at line {}): its cases would be "
+                                                       "measured twice under one heading",
+                                                       scene.name, first->second),
+                                  "remove this listing, or make it a variant with a name of its own: { file = \"...\", "
+                                  "name = \"...\", light_size = 0.5 }");
+        listed.emplace(scene.name, line_of(element));
         scenes.push_back(std::move(scene));
         scene_files.push_back(scene_file);
     }
@@ -288,6 +298,57 @@ void check_case_count(const Experiment& experiment) {
 }
 
 // [reference]: whether and how precisely to ray-trace the ground truth.
+// The entry's swept parameters in config order; entries built in code may lack param_order.
+std::vector<std::string> ordered_keys(const TechniqueEntry& entry) {
+    std::vector<std::string> keys;
+    for (const std::string& key : entry.param_order)
+        if (entry.sweep.count(key) && std::find(keys.begin(), keys.end(), key) == keys.end()) keys.push_back(key);
+    for (const auto& [key, values] : entry.sweep)
+        if (std::find(keys.begin(), keys.end(), key) == keys.end()) keys.push_back(key);
+    std::erase_if(keys, [&](const std::string& key) { return entry.sweep.at(key).empty(); });
+    return keys;
+}
+
+// Moves to the next combination of the sweep (last key fastest); false after the last one.
+bool advance(std::vector<size_t>& choice, const std::vector<std::string>& keys, const TechniqueEntry& entry) {
+    for (size_t k = keys.size(); k-- > 0;) {
+        if (++choice[k] < entry.sweep.at(keys[k]).size()) return true;
+        choice[k] = 0;
+    }
+    return false;
+}
+
+// A technique with the same parameters twice (two [[technique]] entries alike, or sweeps that
+// overlap) would measure identical cases under one heading: refused at the second entry's line.
+void refuse_repeated_cases(const Experiment& experiment, const TechniqueRegistry& registry) {
+    std::map<std::pair<std::string, std::string>, const TechniqueEntry*> first;  // (technique, parameters) -> entry
+    for (const TechniqueEntry& entry : experiment.techniques) {
+        const Technique* technique = registry.find(entry.name);
+        if (!technique) continue;
+        const std::vector<std::string> keys = ordered_keys(entry);
+        const std::vector<ParamSpec> specs = technique->params();
+        std::vector<size_t> choice(keys.size(), 0);
+        do {
+            std::map<std::string, ParamValue> given;
+            for (size_t k = 0; k < keys.size(); ++k) given[keys[k]] = entry.sweep.at(keys[k])[choice[k]];
+            const std::string parameters = ParamSet::resolve(specs, given, {}, entry.where, entry.name).summary();
+            const auto [earlier, added] = first.emplace(std::pair(entry.name, parameters), &entry);
+            if (added) continue;
+            if (earlier->second == &entry)
+                throw ConfigError(entry.where.file, entry.where.line,
+                                  fmt::format("[[technique]] {} gives the same parameters twice ({}): a list holds one "
+                                              "value twice, so its cases would be measured twice",
+                                              entry.name, parameters),
+                                  "list each value once");
+            throw ConfigError(entry.where.file, entry.where.line,
+                              fmt::format("[[technique]] {} repeats the parameters of the [[technique]] at line {} ({}): "
+                                          "its cases would be measured twice under one heading",
+                                          entry.name, earlier->second->where.line, parameters),
+                              "remove this entry, or give it other parameters (a list sweeps a parameter: kernel = [3, 5, 7])");
+        } while (advance(choice, keys, entry));
+    }
+}
+
 void read_reference(TomlReader& section, Experiment& experiment) {
     experiment.reference_enabled = section.get_bool("enabled", experiment.reference_enabled);
     const long long light_samples = section.get_int("light_samples", experiment.reference.light_samples);
@@ -416,6 +477,7 @@ Experiment load_experiment(const std::filesystem::path& file, const TechniqueReg
     for (TomlReader& technique_section : technique_sections)
         experiment.techniques.push_back(read_technique(technique_section, registry));
     check_case_count(experiment);
+    refuse_repeated_cases(experiment, registry);
 
     // The files a scene reads (meshes, height maps, a population's maps) change the results as
     // much as the configs do.
@@ -454,26 +516,6 @@ std::string bounded_id(const std::string& id) {
     size_t keep = kMaxIdBytes - hash.size();
     while (keep > 0 && (static_cast<unsigned char>(id[keep]) & 0xC0) == 0x80) --keep;
     return id.substr(0, keep) + hash;
-}
-
-// The entry's swept parameters in config order; entries built in code may lack param_order.
-std::vector<std::string> ordered_keys(const TechniqueEntry& entry) {
-    std::vector<std::string> keys;
-    for (const std::string& key : entry.param_order)
-        if (entry.sweep.count(key) && std::find(keys.begin(), keys.end(), key) == keys.end()) keys.push_back(key);
-    for (const auto& [key, values] : entry.sweep)
-        if (std::find(keys.begin(), keys.end(), key) == keys.end()) keys.push_back(key);
-    std::erase_if(keys, [&](const std::string& key) { return entry.sweep.at(key).empty(); });
-    return keys;
-}
-
-// Moves to the next combination of the sweep (last key fastest); false after the last one.
-bool advance(std::vector<size_t>& choice, const std::vector<std::string>& keys, const TechniqueEntry& entry) {
-    for (size_t k = keys.size(); k-- > 0;) {
-        if (++choice[k] < entry.sweep.at(keys[k]).size()) return true;
-        choice[k] = 0;
-    }
-    return false;
 }
 
 }  // namespace

@@ -184,6 +184,27 @@ case $case in
     expect_refused lawn 'scenes/lawn\.toml:12: error: .*density_map_file: cannot read image .*map\.png: it is neither PNG nor OpenEXR'
     printf '\x89PNG\r\n\x1a\ntruncated' >"$work/scenes/map.png"
     expect_refused lawn 'scenes/lawn\.toml:12: error: .*density_map_file: cannot read image .*map\.png: ' ;;
+  repeated_entries)
+    # Issue 36: the same scene or technique listed twice gave identical rows under one heading.
+    scene box "$directional" "$box"
+    printf '[experiment]\nscenes = [\n  "../scenes/box.toml",\n  "../scenes/box.toml",\n]\nresolutions = [[32, 24]]\n\n[[technique]]\nname = "shadow.hard"\n' \
+      >"$work/experiments/scene_twice.toml"
+    expect_refused scene_twice 'experiments/scene_twice\.toml:4: error: scene .box. is listed twice \(first at line 3\)'
+    grep -q 'hint: .*variant with a name of its own' "$work/stderr" || fail "no hint for a repeated scene"
+    pcf3='[[technique]]\nname = "shadow.pcf"\n[technique.params]\nkernel = 3'
+    experiment technique_twice box "$pcf3\n\n[[technique]]\nname = \"shadow.hard\"\n\n[[technique]]\nname = \"shadow.pcf\"\nparams = { kernel = 3 }"
+    expect_refused technique_twice 'experiments/technique_twice\.toml:15: error: \[\[technique\]\] shadow\.pcf repeats the parameters of the \[\[technique\]\] at line 7 \(.* kernel=3 '
+    grep -q 'hint: remove this entry, or give it other parameters' "$work/stderr" || fail "no hint for a repeated technique"
+    # Sweeps that overlap, and a list holding a value twice, repeat cases too.
+    experiment overlap box '[[technique]]\nname = "shadow.pcf"\nparams = { kernel = [3, 5] }\n\n[[technique]]\nname = "shadow.pcf"\nparams = { kernel = [5, 7] }'
+    expect_refused overlap 'experiments/overlap\.toml:11: error: .*repeats the parameters of the \[\[technique\]\] at line 7 \(.* kernel=5 '
+    experiment listed_twice box '[[technique]]\nname = "shadow.pcf"\nparams = { kernel = [3, 3] }'
+    expect_refused listed_twice 'experiments/listed_twice\.toml:7: error: .*shadow\.pcf gives the same parameters twice'
+    # Another parameter, or a variant of the scene with its own name, is another case.
+    experiment kernels box "$pcf3\n\n[[technique]]\nname = \"shadow.pcf\"\nparams = { kernel = 5 }"
+    sed -i 's|scenes = .*|scenes = ["../scenes/box.toml", { file = "../scenes/box.toml", name = "box-b" }]|' "$work/experiments/kernels.toml"
+    "$canopy" plan "$work/experiments/kernels.toml" >"$work/stdout" 2>"$work/stderr" || fail "distinct entries refused: $(cat "$work/stderr")"
+    grep -q "4 cases" "$work/stdout" || fail "expected 4 cases: $(head -1 "$work/stdout")" ;;
   *) fail "unknown case $case" ;;
 esac
 echo "ok: $case"
