@@ -335,6 +335,7 @@ struct CompareCommand {
 };
 
 int compare(const CompareCommand& command) {
+    const fs::path out = command.out.empty() ? fs::path() : output_file(command.out, "compare.md");
     const RunRecord baseline = read_run(command.baseline);
     const RunRecord candidate = read_run(command.candidate);
     ComparisonSettings settings;
@@ -350,9 +351,10 @@ int compare(const CompareCommand& command) {
     const std::string report =
         comparison_report({command.baseline, &baseline}, {command.candidate, &candidate}, comparison);
     fmt::print("{}", report);
-    if (!command.out.empty()) {
-        write_text_atomically(command.out, report);
-        fmt::print("\nwritten to {}\n", fs::absolute(command.out).string());
+    if (!out.empty()) {
+        if (!out.parent_path().empty()) fs::create_directories(out.parent_path());  // as `canopy run` creates its folder
+        write_text_atomically(out, report);
+        fmt::print("\nwritten to {}\n", fs::absolute(out).string());
     }
     return comparison.passed() ? kExitOk : kExitFailedCases;
 }
@@ -523,7 +525,7 @@ struct ReportCommand {
 // The run folder's HTML report; its path.
 fs::path write_report(const ReportCommand& command) {
     const fs::path dir = run_folder(command.run);
-    const fs::path out = command.out.empty() ? dir / "report.html" : fs::path(command.out);
+    const fs::path out = command.out.empty() ? dir / "report.html" : output_file(command.out, "report.html");
     if (!fs::exists(dir / "results.json"))
         throw ConfigError(dir, 0, "no results.json here", "give a run folder that `canopy run` wrote (or its results.json)");
     refuse_committed(out.parent_path(), command.force, "write the page elsewhere (--out /tmp/report.html), or add --force");
@@ -537,6 +539,7 @@ fs::path write_report(const ReportCommand& command) {
     if (command.link_images && fs::absolute(out).parent_path() != fs::absolute(dir))
         throw ConfigError(out, 0, "--link-images links the images relative to the run folder, so the page must be in it",
                           "drop --out, or drop --link-images to embed the images");
+    if (!out.parent_path().empty()) fs::create_directories(out.parent_path());  // as `canopy run` creates its folder
     write_html_report(dir, out, options);
     return out;
 }
@@ -878,7 +881,9 @@ int main(int argc, char** argv) {
     compare_cmd->add_flag("--no-time", compare_command.no_time,
                           "compare errors only (e.g. against a baseline run on another machine)");
     compare_cmd->add_flag("--no-errors", compare_command.no_errors, "compare time ratios only");
-    compare_cmd->add_option("--out", compare_command.out, "also write the report to this file");
+    compare_cmd->add_option("--out", compare_command.out,
+                            "also write the report to this file, or into this folder as compare.md (an existing one, or "
+                            "a path ending in /); its folder is created");
     compare_cmd->footer(
         "Cases are matched by id; cases in one run only are listed. Time: per case, the relative change of its time\n"
         "ratio to its group's baseline (both measured in the same rounds), candidate / baseline - 1, with a 95 %\n"
@@ -951,7 +956,9 @@ int main(int argc, char** argv) {
         "report", "Write a run as one HTML page: environment, sortable tables, Pareto fronts, the paper comparison, "
                   "and every case's image, reference, error and FLIP maps side by side (zoomed together).");
     report_cmd->add_option("run", report_command.run, "a run folder or its results.json")->required();
-    report_cmd->add_option("--out", report_command.out, "the page (default RUN/report.html)");
+    report_cmd->add_option("--out", report_command.out,
+                           "the page (default RUN/report.html); a folder (an existing one, or a path ending in /) gets "
+                           "report.html in it, and is created");
     report_cmd->add_option("--pareto", report_command.pareto,
                            "an error axis of the Pareto fronts (a results.json name from `canopy metrics`; repeat for "
                            "more); default: the axes the techniques' families declare");

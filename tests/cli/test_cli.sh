@@ -123,6 +123,32 @@ case $case in
     python3 -c "import json,sys; j=json.load(open('$work/out/results.json')); sys.exit(0 if j['status']=='interrupted' else 1)" \
       || fail "results.json is not a valid interrupted record"
     ! ls -a "$work/out" | grep -q '\.tmp' || fail "temporary files left behind" ;;
+  report_out)
+    # Issue 36: `report --out /` wrote a temporary file at / and then failed with EBUSY.
+    "$canopy" run "$data/experiments/tiny.toml" --out "$work/run" --quick --no-reference --images none --no-progress \
+      >/dev/null 2>&1 || fail "run failed"
+    before=$(ls -a / | sort)
+    "$canopy" report "$work/run" --out / >"$work/stdout" 2>"$work/stderr"; rc=$?
+    cat "$work/stderr"
+    [ $rc -eq 2 ] || fail "report --out /: exit code $rc, expected 2"
+    grep -q "^/: error: is the filesystem's root folder" "$work/stderr" || fail "report --out /: the message does not say why"
+    [ "$(ls -a / | sort)" = "$before" ] || fail "report --out / wrote into /"
+    "$canopy" compare "$work/run" "$work/run" --out / >/dev/null 2>"$work/stderr"; rc=$?
+    [ $rc -eq 2 ] && grep -q "root folder" "$work/stderr" || fail "compare --out /: exit code $rc, expected 2"
+    # A folder gets report.html (compare: compare.md); a new folder is created.
+    mkdir "$work/pages"
+    "$canopy" report "$work/run" --out "$work/pages" >/dev/null 2>"$work/stderr" || fail "report --out FOLDER: $(cat "$work/stderr")"
+    [ -s "$work/pages/report.html" ] || fail "report --out FOLDER wrote no FOLDER/report.html"
+    "$canopy" report "$work/run" --out "$work/new/sub/" >/dev/null 2>"$work/stderr" || fail "report --out NEW/: $(cat "$work/stderr")"
+    [ -s "$work/new/sub/report.html" ] || fail "report --out NEW/ wrote no NEW/report.html"
+    "$canopy" compare "$work/run" "$work/run" --out "$work/pages" >/dev/null 2>"$work/stderr" || fail "compare --out FOLDER: $(cat "$work/stderr")"
+    grep -q "^# canopy compare" "$work/pages/compare.md" || fail "compare --out FOLDER wrote no FOLDER/compare.md"
+    "$canopy" compare "$work/run" "$work/run" --out "$work/made/here/table.md" >/dev/null 2>"$work/stderr" \
+      || fail "compare --out NEW/FILE: $(cat "$work/stderr")"
+    [ -s "$work/made/here/table.md" ] || fail "compare did not create its folder"
+    # Through a file: refused before anything is written.
+    "$canopy" compare "$work/run" "$work/run" --out "$work/pages/report.html/table.md" >/dev/null 2>"$work/stderr"; rc=$?
+    [ $rc -eq 2 ] && grep -q "report.html: error: is a file, not a folder" "$work/stderr" || fail "--out through a file: exit $rc" ;;
   *) fail "unknown case $case" ;;
 esac
 echo "ok: $case"
