@@ -334,6 +334,10 @@ struct CompareCommand {
     bool no_time = false, no_errors = false;
 };
 
+// `canopy compare`'s exit codes: 0 nothing flagged, 1 a regression (kExitFailedCases), 2 bad input,
+// and this when its report could not be written (or it failed otherwise): 1 always means a regression.
+constexpr int kExitCompareFailed = 3;
+
 int compare(const CompareCommand& command) {
     const fs::path out = command.out.empty() ? fs::path() : output_file(command.out, "compare.md");
     const RunRecord baseline = read_run(command.baseline);
@@ -352,8 +356,13 @@ int compare(const CompareCommand& command) {
         comparison_report({command.baseline, &baseline}, {command.candidate, &candidate}, comparison);
     fmt::print("{}", report);
     if (!out.empty()) {
-        if (!out.parent_path().empty()) fs::create_directories(out.parent_path());  // as `canopy run` creates its folder
-        write_text_atomically(out, report);
+        try {
+            if (!out.parent_path().empty()) fs::create_directories(out.parent_path());  // as `canopy run` creates its folder
+            write_text_atomically(out, report);
+        } catch (const std::exception& e) {  // WriteError, or a folder that cannot be made
+            fmt::print(stderr, "canopy compare: the report could not be written: {}\n", e.what());
+            return kExitCompareFailed;
+        }
         fmt::print("\nwritten to {}\n", fs::absolute(out).string());
     }
     return comparison.passed() ? kExitOk : kExitFailedCases;
@@ -760,7 +769,8 @@ int main(int argc, char** argv) {
     });
     app.footer("Exit codes: 0 success, 1 a case failed (e.g. NaN pixels) or a file could not be written, 2 bad input\n"
                "(the message names file:line, or the output folder), 130 interrupted by Ctrl-C, 143 by SIGTERM\n"
-               "(finished groups of cases are kept; the same command resumes). Set CANOPY_VALIDATION=1 for Vulkan validation layers.");
+               "(finished groups of cases are kept; the same command resumes). `canopy compare`: 1 a regression, 3 its\n"
+               "report could not be written (its --help). Set CANOPY_VALIDATION=1 for Vulkan validation layers.");
 
     std::string config_path, out_dir, device, scene_path, shard_text;
     bool report_after_run = false, references_only = false;
@@ -894,7 +904,8 @@ int main(int argc, char** argv) {
         "run to the next, so use a threshold at least twice the spread `canopy bench stability` reports there\n"
         "(README, Timing).\n"
         "Exit codes: 0 nothing flagged, 1 a regression, an error out of tolerance or a case that failed only in\n"
-        "the candidate, 2 bad input.");
+        "the candidate, 2 bad input (a run that cannot be read, runs that cannot be compared, a bad option),\n"
+        "3 an I/O failure: --out could not be written (or compare failed otherwise), whatever was flagged.");
 
     StabilityCommand stability;
     CLI::App* bench_stability_cmd = bench_cmd->add_subcommand(
@@ -1076,7 +1087,14 @@ int main(int argc, char** argv) {
             return run(command, reference_options);
         }
         if (*reference_cmd) return reference(scene_path, out_dir, reference_options);
-        if (*compare_cmd) return compare(compare_command);
+        if (*compare_cmd) try {
+                return compare(compare_command);
+            } catch (const ConfigError&) {
+                throw;
+            } catch (const std::exception& e) {
+                fmt::print(stderr, "canopy: error: {}\n", e.what());
+                return kExitCompareFailed;  // not 1, which means a regression
+            }
         if (*report_cmd) return report(report_command);
         if (*export_cmd) return export_gbench(export_runs, export_force);
         if (*export_paper_cmd) return export_paper(paper_runs, paper_force, paper_rejudge);

@@ -149,6 +149,34 @@ case $case in
     # Through a file: refused before anything is written.
     "$canopy" compare "$work/run" "$work/run" --out "$work/pages/report.html/table.md" >/dev/null 2>"$work/stderr"; rc=$?
     [ $rc -eq 2 ] && grep -q "report.html: error: is a file, not a folder" "$work/stderr" || fail "--out through a file: exit $rc" ;;
+  compare_exit_codes)
+    # Issue 36: compare exited 1 both for a regression and for a report it could not write.
+    "$canopy" run "$data/experiments/tiny.toml" --out "$work/a" --quick --no-reference --images none --no-progress \
+      >/dev/null 2>&1 || fail "run failed"
+    cp -r "$work/a" "$work/b"
+    python3 - "$work/b/results.json" <<'PY'
+import json, sys
+j = json.load(open(sys.argv[1]))
+j["cases"][1]["ok"] = False
+j["cases"][1]["error"] = "made to fail by the test"
+json.dump(j, open(sys.argv[1], "w"))
+PY
+    "$canopy" compare "$work/a" "$work/a" >/dev/null 2>&1; rc=$?
+    [ $rc -eq 0 ] || fail "nothing flagged: exit $rc, expected 0"
+    "$canopy" compare "$work/a" "$work/b" >/dev/null 2>&1; rc=$?
+    [ $rc -eq 1 ] || fail "a case failed in the candidate: exit $rc, expected 1"
+    "$canopy" compare "$work/a" "$work/missing" >/dev/null 2>&1; rc=$?
+    [ $rc -eq 2 ] || fail "a missing run: exit $rc, expected 2"
+    CANOPY_TEST_FAIL_WRITE_AFTER=0 "$canopy" compare "$work/a" "$work/a" --out "$work/table.md" >/dev/null 2>"$work/stderr"; rc=$?
+    cat "$work/stderr"
+    [ $rc -eq 3 ] || fail "a report that cannot be written: exit $rc, expected 3"
+    grep -q "the report could not be written: cannot write .*table.md" "$work/stderr" || fail "the write failure is not named"
+    CANOPY_TEST_FAIL_WRITE_AFTER=0 "$canopy" compare "$work/a" "$work/b" --out "$work/table.md" >/dev/null 2>&1; rc=$?
+    [ $rc -eq 3 ] || fail "a regression and a failed write: exit $rc, expected 3"
+    # Documented where compare is.
+    "$canopy" compare --help >"$work/help"
+    grep -q "1 a regression" "$work/help" && grep -q "2 bad input" "$work/help" && grep -q "3 an I/O failure" "$work/help" \
+      || fail "compare --help does not list the exit codes" ;;
   *) fail "unknown case $case" ;;
 esac
 echo "ok: $case"
