@@ -162,6 +162,7 @@ int reference(const fs::path& scene_file, const std::string& out, const Referenc
     if (o.tile.empty()) cache_dir(o);  // checked before anything is ray-traced
     const Scene scene = load_scene(scene_file);
     const auto meshes = build_scene_meshes(scene);
+    install_interrupt_handler();  // Ctrl-C stops the ray-trace within a row of pixels (exit 130)
     if (!o.tile.empty() && o.merge_tiles > 0)
         throw ConfigError(fs::path(), 0, "--tile and --merge-tiles together", "render the tiles first, then merge them");
     if (!o.tile.empty()) {
@@ -1112,6 +1113,9 @@ int main(int argc, char** argv) {
     } catch (const ConfigError& e) {
         fmt::print(stderr, "{}\n", e.formatted());
         return kExitBadInput;
+    } catch (const Interrupted&) {
+        fmt::print(stderr, "canopy: interrupted; the image being ray-traced was dropped\n");
+        return exit_code_for_interrupt();
     } catch (const GpuError& e) {
         fmt::print(stderr, "canopy: Vulkan error: {}\n", e.what());
         return kExitFailedCases;

@@ -493,6 +493,8 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
                 for (size_t i : planned.cases)
                     progress.finish_case(i, label_of(i), seconds / double(planned.cases.size()), slots[i]->ok);
         }
+    } catch (const Interrupted&) {
+        // Ctrl-C or SIGTERM while a reference was ray-traced: it is dropped, the run is interrupted below.
     } catch (const std::exception& e) {
         // The run cannot go on (a full disk, an unwritable folder, a reference that cannot be
         // rendered): record why, if the disk still takes it.

@@ -177,6 +177,42 @@ PY
     "$canopy" compare --help >"$work/help"
     grep -q "1 a regression" "$work/help" && grep -q "2 bad input" "$work/help" && grep -q "3 an I/O failure" "$work/help" \
       || fail "compare --help does not list the exit codes" ;;
+  interrupt_reference)
+    # Issue 36: Ctrl-C during a reference's ray-trace ended canopy about 13 s later. Now within
+    # a row of pixels: `canopy reference`, then a run's reference. Each trace takes far longer
+    # than the test waits.
+    stopped_within() {  # PID SECONDS: sends SIGINT, the process must exit within SECONDS; sets rc
+      local start end
+      start=$(date +%s%N)
+      kill -INT "$1"
+      wait "$1"; rc=$?
+      end=$(date +%s%N)
+      echo "exit $rc $(((end - start) / 1000000)) ms after SIGINT"
+      [ $(((end - start) / 1000000)) -le $(($2 * 1000)) ] || fail "still running $2 s after SIGINT"
+    }
+    "$canopy" reference "$data/scenes/tiny.toml" --width 1024 --height 1024 --pixel-samples 1024 --no-cache \
+      --out "$work/ref" >/dev/null 2>"$work/stderr" &
+    pid=$!
+    sleep 1.5
+    kill -0 $pid 2>/dev/null || fail "the reference ended before SIGINT: $(cat "$work/stderr")"
+    stopped_within $pid 2
+    cat "$work/stderr"
+    [ "$rc" -eq 130 ] || fail "reference: exit code $rc, expected 130"
+    grep -q "canopy: stopping" "$work/stderr" || fail "SIGINT was not acknowledged"
+    [ ! -e "$work/ref" ] || fail "an interrupted reference wrote images"
+    sed -e "s|\.\./scenes/|$data/scenes/|" -e 's/resolutions = .*/resolutions = [[1024, 1024]]/' "$data/experiments/tiny.toml" >"$work/big.toml"
+    printf '\n[reference]\npixel_samples = 1024\n' >>"$work/big.toml"
+    "$canopy" run "$work/big.toml" --out "$work/out" --no-cache --no-progress >/dev/null 2>"$work/stderr" &
+    pid=$!
+    for _ in $(seq 300); do grep -q "writing to" "$work/stderr" || ! kill -0 $pid 2>/dev/null && break; sleep 0.1; done
+    sleep 1.5
+    kill -0 $pid 2>/dev/null || fail "the run ended before SIGINT: $(cat "$work/stderr")"
+    stopped_within $pid 2
+    cat "$work/stderr"
+    [ "$rc" -eq 130 ] || fail "run: exit code $rc, expected 130"
+    grep -q "canopy: stopping" "$work/stderr" || fail "SIGINT was not acknowledged in the run"
+    [ "$(python3 -c "import json; print(json.load(open('$work/out/results.json'))['status'])")" = interrupted ] \
+      || fail "the run is not recorded as interrupted" ;;
   *) fail "unknown case $case" ;;
 esac
 echo "ok: $case"
