@@ -297,7 +297,6 @@ void check_case_count(const Experiment& experiment) {
                                   largest > kMaxCases ? "more than " : "", std::min(largest, kMaxCases)));
 }
 
-// [reference]: whether and how precisely to ray-trace the ground truth.
 // The entry's swept parameters in config order; entries built in code may lack param_order.
 std::vector<std::string> ordered_keys(const TechniqueEntry& entry) {
     std::vector<std::string> keys;
@@ -349,6 +348,7 @@ void refuse_repeated_cases(const Experiment& experiment, const TechniqueRegistry
     }
 }
 
+// [reference]: whether and how precisely to ray-trace the ground truth.
 void read_reference(TomlReader& section, Experiment& experiment) {
     experiment.reference_enabled = section.get_bool("enabled", experiment.reference_enabled);
     const long long light_samples = section.get_int("light_samples", experiment.reference.light_samples);

@@ -6,7 +6,9 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <limits>
 #include <stdexcept>
 
 namespace canopy {
@@ -69,6 +71,7 @@ std::string format_real(double value) { return fmt::format("{}", value); }
 // A declared number as its declaration wrote it: one declared from a float constant (0.15f) is
 // the double nearest that float, 0.15000000596046448, shown as the float's shortest text, 0.15.
 std::string format_declared(double value) {
+    if (!(std::fabs(value) <= double(std::numeric_limits<float>::max()))) return format_real(value);  // no float holds it
     const float narrow = float(value);
     return double(narrow) == value ? fmt::format("{}", narrow) : format_real(value);
 }
