@@ -81,6 +81,16 @@ TEST_CASE("ParamSpec::type_and_range and to_string") {
     CHECK(to_string(ParamValue{std::string("poisson")}) == "poisson");
 }
 
+TEST_CASE("a default or range declared from a float constant reads as written, not as float noise") {
+    // Before: `canopy list` showed 0.15f's double, 0.15000000596046448.
+    const ParamSpec from_float = ParamSpec::real("width", 0.15f, 0.1f, 2.7f, "a float constant");
+    CHECK(default_text(from_float) == "0.15");
+    CHECK(from_float.type_and_range() == "float in [0.1, 2.7]");
+    const ParamSpec from_double = ParamSpec::real("bias", 0.15, 0.0, 0.3333333333333333, "a double constant");
+    CHECK(default_text(from_double) == "0.15");
+    CHECK(from_double.type_and_range() == "float in [0, 0.3333333333333333]");
+}
+
 TEST_CASE("ParamSet::resolve fills defaults and applies given values") {
     const ParamSet defaults = ParamSet::resolve(kFakeSpecs, {}, {}, {}, "test.fake");
     CHECK(defaults.summary() == "kernel=5 pattern=grid bias=0.005 hardware_pcf=true");
@@ -473,23 +483,40 @@ TEST_CASE("experiment value checks") {
     CHECK(error_line("[experiment]\nscenes = [\"scene.toml\"]\n" + technique + "parms = 1\n") == 6);
 }
 
-TEST_CASE("identical cases get distinct ids") {
+TEST_CASE("the same technique with the same parameters twice is refused at the second listing") {
+    // Issue 36: identical cases were measured twice under one heading (ids ..._2).
     test::TempFolder folder;
     folder.write("room.toml", "[scene]\nname = \"room\"\n[[light]]\ntype = \"directional\"\n");
+    const auto error_of = [&](const std::string& techniques) {
+        const std::filesystem::path file =
+            folder.write("experiment.toml", "[experiment]\nscenes = [\"room.toml\"]\n" + techniques);
+        return test::config_error_of([&] { load_experiment(file, TechniqueRegistry::instance()); });
+    };
+    const auto twice = error_of("[[technique]]\nname = \"test.fake\"\n[[technique]]\nname = \"test.fake\"\n");
+    REQUIRE(twice);
+    CHECK(twice->line() == 5);
+    CHECK(std::string(twice->what()).find("repeats the parameters of the [[technique]] at line 3") != std::string::npos);
+    // A default given is the same case as the default left out (test.fake's kernel is 5).
+    const auto with_default =
+        error_of("[[technique]]\nname = \"test.fake\"\n[[technique]]\nname = \"test.fake\"\nparams = { kernel = 5 }\n");
+    REQUIRE(with_default);
+    CHECK(with_default->line() == 5);
+    const auto in_one_list = error_of("[[technique]]\nname = \"test.fake\"\nparams = { kernel = [3, 3] }\n");
+    REQUIRE(in_one_list);
+    CHECK(in_one_list->line() == 3);
+    CHECK(std::string(in_one_list->what()).find("gives the same parameters twice") != std::string::npos);
+    // Other values are other cases.
     const std::filesystem::path file = folder.write(
-        "experiment.toml",
-        "[experiment]\nscenes = [\"room.toml\"]\n"
-        "[[technique]]\nname = \"test.fake\"\nparams = { kernel = [3, 3], pattern = \"poisson\" }\n"
-        "[[technique]]\nname = \"test.fake\"\n"
-        "[[technique]]\nname = \"test.fake\"\n");
+        "experiment.toml", "[experiment]\nscenes = [\"room.toml\"]\n"
+                           "[[technique]]\nname = \"test.fake\"\nparams = { kernel = [3, 7], pattern = \"poisson\" }\n"
+                           "[[technique]]\nname = \"test.fake\"\n");
     const std::vector<Case> cases =
         expand_cases(load_experiment(file, TechniqueRegistry::instance()), TechniqueRegistry::instance());
-    REQUIRE(cases.size() == 4);
+    REQUIRE(cases.size() == 3);
     // Keys given on one line keep their order too.
     CHECK(cases[0].id == "room_640x360_test.fake_kernel-3_pattern-poisson");
-    CHECK(cases[1].id == "room_640x360_test.fake_kernel-3_pattern-poisson_2");
+    CHECK(cases[1].id == "room_640x360_test.fake_kernel-7_pattern-poisson");
     CHECK(cases[2].id == "room_640x360_test.fake");
-    CHECK(cases[3].id == "room_640x360_test.fake_2");
 }
 
 TEST_CASE("case ids keep names in any script readable") {

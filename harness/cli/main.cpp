@@ -44,6 +44,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/chrono.h>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <list>
 
@@ -143,9 +144,12 @@ struct ReferenceOptions {
     size_t merge_tiles = 0;  // `--merge-tiles N`: put --out's N tiles together into the cache
 };
 
+// The reference cache folder, checked (a file where the folder should be is refused, exit 2).
 fs::path cache_dir(const ReferenceOptions& o) {
     if (o.no_cache) return {};
-    return o.cache_dir.empty() ? default_reference_cache_dir() : fs::path(o.cache_dir);
+    const fs::path dir = o.cache_dir.empty() ? default_reference_cache_dir() : fs::path(o.cache_dir);
+    check_reference_cache_dir(dir);
+    return dir;
 }
 
 // Before anything is read or written: what a timing-only build lacks, as bad input (exit 2).
@@ -155,16 +159,18 @@ void refuse_in_timing_only_build(bool wants_reference, bool writes_images) {
 
 int reference(const fs::path& scene_file, const std::string& out, const ReferenceOptions& o) {
     refuse_in_timing_only_build(true, true);
+    if (o.tile.empty()) cache_dir(o);  // checked before anything is ray-traced
     const Scene scene = load_scene(scene_file);
     const auto meshes = build_scene_meshes(scene);
+    install_interrupt_handler();  // Ctrl-C stops the ray-trace within a row of pixels (exit 130)
     if (!o.tile.empty() && o.merge_tiles > 0)
         throw ConfigError(fs::path(), 0, "--tile and --merge-tiles together", "render the tiles first, then merge them");
     if (!o.tile.empty()) {
         ShardSpec tile;
         try {
-            tile = parse_shard(o.tile);
+            tile = parse_shard(o.tile, "--tile");
         } catch (const std::invalid_argument& e) {
-            throw ConfigError(fs::path(), 0, std::string(e.what()).replace(0, 7, "--tile"), "give --tile i/N, 1 <= i <= N");
+            throw ConfigError(fs::path(), 0, e.what(), "give --tile i/N, 1 <= i <= N: row band i of N");
         }
         if (out.empty())
             throw ConfigError(fs::path(), 0, "--tile needs --out", "give the folder every tile of this reference goes to");
@@ -334,7 +340,12 @@ struct CompareCommand {
     bool no_time = false, no_errors = false;
 };
 
+// `canopy compare`'s exit codes: 0 nothing flagged, 1 a regression (kExitFailedCases), 2 bad input,
+// and this when its report could not be written (or it failed otherwise): 1 always means a regression.
+constexpr int kExitCompareFailed = 3;
+
 int compare(const CompareCommand& command) {
+    const fs::path out = command.out.empty() ? fs::path() : output_file(command.out, "compare.md");
     const RunRecord baseline = read_run(command.baseline);
     const RunRecord candidate = read_run(command.candidate);
     ComparisonSettings settings;
@@ -350,9 +361,15 @@ int compare(const CompareCommand& command) {
     const std::string report =
         comparison_report({command.baseline, &baseline}, {command.candidate, &candidate}, comparison);
     fmt::print("{}", report);
-    if (!command.out.empty()) {
-        write_text_atomically(command.out, report);
-        fmt::print("\nwritten to {}\n", fs::absolute(command.out).string());
+    if (!out.empty()) {
+        try {
+            if (!out.parent_path().empty()) fs::create_directories(out.parent_path());  // as `canopy run` creates its folder
+            write_text_atomically(out, report);
+        } catch (const std::exception& e) {  // WriteError, or a folder that cannot be made
+            fmt::print(stderr, "canopy compare: the report could not be written: {}\n", e.what());
+            return kExitCompareFailed;
+        }
+        fmt::print("\nwritten to {}\n", fs::absolute(out).string());
     }
     return comparison.passed() ? kExitOk : kExitFailedCases;
 }
@@ -531,7 +548,7 @@ struct ReportCommand {
 // The run folder's HTML report; its path.
 fs::path write_report(const ReportCommand& command) {
     const fs::path dir = run_folder(command.run);
-    const fs::path out = command.out.empty() ? dir / "report.html" : fs::path(command.out);
+    const fs::path out = command.out.empty() ? dir / "report.html" : output_file(command.out, "report.html");
     if (!fs::exists(dir / "results.json"))
         throw ConfigError(dir, 0, "no results.json here", "give a run folder that `canopy run` wrote (or its results.json)");
     refuse_committed(out.parent_path(), command.force, "write the page elsewhere (--out /tmp/report.html), or add --force");
@@ -545,6 +562,7 @@ fs::path write_report(const ReportCommand& command) {
     if (command.link_images && fs::absolute(out).parent_path() != fs::absolute(dir))
         throw ConfigError(out, 0, "--link-images links the images relative to the run folder, so the page must be in it",
                           "drop --out, or drop --link-images to embed the images");
+    if (!out.parent_path().empty()) fs::create_directories(out.parent_path());  // as `canopy run` creates its folder
     write_html_report(dir, out, options);
     return out;
 }
@@ -608,6 +626,7 @@ int run(const RunCommand& command, const ReferenceOptions& reference_options) {
     // The run is in the config's checkout: its commit is the run's, its paths are recorded from it.
     set_run_checkout_of(command.config);
     const Experiment experiment = load_experiment(command.config, registry);
+    const fs::path reference_cache = command.with_reference ? cache_dir(reference_options) : fs::path();
     std::optional<ShardSpec> shard;
     if (!command.shard.empty()) try {
             shard = parse_shard(command.shard);
@@ -624,7 +643,7 @@ int run(const RunCommand& command, const ReferenceOptions& reference_options) {
     options.show_progress = command.progress;
     options.reference = command.with_reference;
     options.images = command.images;
-    options.reference_cache_dir = cache_dir(reference_options);
+    options.reference_cache_dir = reference_cache;
     options.ballast = ballast_from_environment();  // TEST-ONLY (run/test_ballast.hpp)
     if (shard) {
         // Whole groups, balanced by estimated cost (run/run_plan.hpp): this shard's cases alone.
@@ -735,6 +754,30 @@ int run(const RunCommand& command, const ReferenceOptions& reference_options) {
     return kExitOk;
 }
 
+// `canopy frobnicate` (or `canopy bench frobnicate`): CLI11 would say only "A subcommand is
+// required". Throws ConfigError naming the word and listing the commands.
+void refuse_unknown_command(CLI::App& app, int argc, char** argv) {
+    CLI::App* level = &app;
+    std::string prefix;  // the commands before the word: "" or "bench "
+    for (int i = 1; i < argc; ++i) {
+        const std::vector<CLI::App*> commands = level->get_subcommands([](CLI::App*) { return true; });
+        const std::string word = argv[i];
+        if (commands.empty() || word.empty() || word[0] == '-') return;
+        std::vector<std::string> names;
+        for (CLI::App* command : commands) names.push_back(command->get_name());
+        const auto known = std::find(names.begin(), names.end(), word);
+        if (known == names.end()) {
+            const std::string near = closest_match(word, names);
+            throw ConfigError(fs::path(), 0,
+                              fmt::format("unknown command {}{}; the commands are: {}", prefix, word, fmt::join(names, ", ")),
+                              fmt::format("{}`canopy {}--help` describes each",
+                                          near.empty() ? "" : fmt::format("did you mean {}{}? ", prefix, near), prefix));
+        }
+        level = commands[size_t(known - names.begin())];
+        prefix += word + " ";
+    }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -747,7 +790,8 @@ int main(int argc, char** argv) {
     });
     app.footer("Exit codes: 0 success, 1 a case failed (e.g. NaN pixels) or a file could not be written, 2 bad input\n"
                "(the message names file:line, or the output folder), 130 interrupted by Ctrl-C, 143 by SIGTERM\n"
-               "(finished groups of cases are kept; the same command resumes). Set CANOPY_VALIDATION=1 for Vulkan validation layers.");
+               "(finished groups of cases are kept; the same command resumes). `canopy compare`: 1 a regression, 3 its\n"
+               "report could not be written (its --help). Set CANOPY_VALIDATION=1 for Vulkan validation layers.");
 
     std::string config_path, out_dir, device, scene_path, shard_text;
     bool report_after_run = false, references_only = false;
@@ -868,7 +912,9 @@ int main(int argc, char** argv) {
     compare_cmd->add_flag("--no-time", compare_command.no_time,
                           "compare errors only (e.g. against a baseline run on another machine)");
     compare_cmd->add_flag("--no-errors", compare_command.no_errors, "compare time ratios only");
-    compare_cmd->add_option("--out", compare_command.out, "also write the report to this file");
+    compare_cmd->add_option("--out", compare_command.out,
+                            "also write the report to this file, or into this folder as compare.md (an existing one, or "
+                            "a path ending in /); its folder is created");
     compare_cmd->footer(
         "Cases are matched by id; cases in one run only are listed. Time: per case, the relative change of its time\n"
         "ratio to its group's baseline (both measured in the same rounds), candidate / baseline - 1, with a 95 %\n"
@@ -879,7 +925,8 @@ int main(int argc, char** argv) {
         "run to the next, so use a threshold at least twice the spread `canopy bench stability` reports there\n"
         "(README, Timing).\n"
         "Exit codes: 0 nothing flagged, 1 a regression, an error out of tolerance or a case that failed only in\n"
-        "the candidate, 2 bad input.");
+        "the candidate, 2 bad input (a run that cannot be read, runs that cannot be compared, a bad option),\n"
+        "3 an I/O failure: --out could not be written (or compare failed otherwise), whatever was flagged.");
 
     StabilityCommand stability;
     CLI::App* bench_stability_cmd = bench_cmd->add_subcommand(
@@ -941,7 +988,9 @@ int main(int argc, char** argv) {
         "report", "Write a run as one HTML page: environment, sortable tables, Pareto fronts, the paper comparison, "
                   "and every case's image, reference, error and FLIP maps side by side (zoomed together).");
     report_cmd->add_option("run", report_command.run, "a run folder or its results.json")->required();
-    report_cmd->add_option("--out", report_command.out, "the page (default RUN/report.html)");
+    report_cmd->add_option("--out", report_command.out,
+                           "the page (default RUN/report.html); a folder (an existing one, or a path ending in /) gets "
+                           "report.html in it, and is created");
     report_cmd->add_option("--pareto", report_command.pareto,
                            "an error axis of the Pareto fronts (a results.json name from `canopy metrics`; repeat for "
                            "more); default: the axes the techniques' families declare");
@@ -1015,7 +1064,11 @@ int main(int argc, char** argv) {
         quick_cmd->footer("Exit codes: 0 success, 1 a file could not be written, 2 bad input (the message names file:line).");
 
     try {
+        refuse_unknown_command(app, argc, argv);
         app.parse(argc, argv);
+    } catch (const ConfigError& e) {
+        fmt::print(stderr, "{}\n", e.formatted());
+        return kExitBadInput;
     } catch (const CLI::ParseError& e) {
         const int code = app.exit(e);
         return code == 0 ? kExitOk : kExitBadInput;
@@ -1055,7 +1108,14 @@ int main(int argc, char** argv) {
             return run(command, reference_options);
         }
         if (*reference_cmd) return reference(scene_path, out_dir, reference_options);
-        if (*compare_cmd) return compare(compare_command);
+        if (*compare_cmd) try {
+                return compare(compare_command);
+            } catch (const ConfigError&) {
+                throw;
+            } catch (const std::exception& e) {
+                fmt::print(stderr, "canopy: error: {}\n", e.what());
+                return kExitCompareFailed;  // not 1, which means a regression
+            }
         if (*report_cmd) return report(report_command);
         if (*export_cmd) return export_gbench(export_runs, export_force);
         if (*export_paper_cmd) return export_paper(paper_runs, paper_force, paper_rejudge);
@@ -1073,6 +1133,9 @@ int main(int argc, char** argv) {
     } catch (const ConfigError& e) {
         fmt::print(stderr, "{}\n", e.formatted());
         return kExitBadInput;
+    } catch (const Interrupted&) {
+        fmt::print(stderr, "canopy: interrupted; the image being ray-traced was dropped\n");
+        return exit_code_for_interrupt();
     } catch (const GpuError& e) {
         fmt::print(stderr, "canopy: Vulkan error: {}\n", e.what());
         return kExitFailedCases;

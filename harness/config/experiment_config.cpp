@@ -15,6 +15,7 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <map>
 #include <sstream>
 #include <optional>
 #include <set>
@@ -141,6 +142,7 @@ std::vector<Scene> read_scenes(TomlReader& reader, std::vector<std::filesystem::
 
     const std::filesystem::path folder = reader.file().parent_path();
     std::vector<Scene> scenes;
+    std::map<std::string, int> listed;  // scene name -> the line that first lists it
     size_t index = 0;
     for (const toml::node& element : *array) {
         ++index;
@@ -162,6 +164,10 @@ std::vector<Scene> read_scenes(TomlReader& reader, std::vector<std::filesystem::
                                   fmt::format("write it as: {}", example));
         const std::filesystem::path scene_file = (folder / name->get()).lexically_normal();
         std::error_code ignored;
+        if (std::filesystem::is_directory(scene_file, ignored))
+            throw reader.error_at(*file_node, fmt::format("scene file '{}' is a directory ({}), not a scene file",
+                                                          name->get(), scene_file.string()),
+                                  "name the scene's .toml file inside it, e.g. \"../scenes/spheres.toml\"");
         if (!std::filesystem::is_regular_file(scene_file, ignored))
             throw reader.error_at(*file_node, fmt::format("scene file '{}' not found (looked for {})", name->get(),
                                                           scene_file.string()),
@@ -176,6 +182,14 @@ std::vector<Scene> read_scenes(TomlReader& reader, std::vector<std::filesystem::
             scene.variant = text.str();
             std::replace(scene.variant.begin(), scene.variant.end(), '\n', ' ');
         }
+        // Groups and case ids are named after the scene: two of one name would measure it twice under one heading.
+        if (const auto first = listed.find(scene.name); first != listed.end())
+            throw reader.error_at(element, fmt::format("scene '{}' is listed twice (first at line {}): its cases would be "
+                                                       "measured twice under one heading",
+                                                       scene.name, first->second),
+                                  "remove this listing, or make it a variant with a name of its own: { file = \"...\", "
+                                  "name = \"...\", light_size = 0.5 }");
+        listed.emplace(scene.name, line_of(element));
         scenes.push_back(std::move(scene));
         scene_files.push_back(scene_file);
     }
@@ -288,6 +302,57 @@ void check_case_count(const Experiment& experiment) {
                       fmt::format("scenes x resolutions x the product of each [[technique]]'s lists; sweep fewer "
                                   "values, or split the experiment (this [[technique]] alone gives {}{})",
                                   largest > kMaxCases ? "more than " : "", std::min(largest, kMaxCases)));
+}
+
+// The entry's swept parameters in config order; entries built in code may lack param_order.
+std::vector<std::string> ordered_keys(const TechniqueEntry& entry) {
+    std::vector<std::string> keys;
+    for (const std::string& key : entry.param_order)
+        if (entry.sweep.count(key) && std::find(keys.begin(), keys.end(), key) == keys.end()) keys.push_back(key);
+    for (const auto& [key, values] : entry.sweep)
+        if (std::find(keys.begin(), keys.end(), key) == keys.end()) keys.push_back(key);
+    std::erase_if(keys, [&](const std::string& key) { return entry.sweep.at(key).empty(); });
+    return keys;
+}
+
+// Moves to the next combination of the sweep (last key fastest); false after the last one.
+bool advance(std::vector<size_t>& choice, const std::vector<std::string>& keys, const TechniqueEntry& entry) {
+    for (size_t k = keys.size(); k-- > 0;) {
+        if (++choice[k] < entry.sweep.at(keys[k]).size()) return true;
+        choice[k] = 0;
+    }
+    return false;
+}
+
+// A technique with the same parameters twice (two [[technique]] entries alike, or sweeps that
+// overlap) would measure identical cases under one heading: refused at the second entry's line.
+void refuse_repeated_cases(const Experiment& experiment, const TechniqueRegistry& registry) {
+    std::map<std::pair<std::string, std::string>, const TechniqueEntry*> first;  // (technique, parameters) -> entry
+    for (const TechniqueEntry& entry : experiment.techniques) {
+        const Technique* technique = registry.find(entry.name);
+        if (!technique) continue;
+        const std::vector<std::string> keys = ordered_keys(entry);
+        const std::vector<ParamSpec> specs = technique->params();
+        std::vector<size_t> choice(keys.size(), 0);
+        do {
+            std::map<std::string, ParamValue> given;
+            for (size_t k = 0; k < keys.size(); ++k) given[keys[k]] = entry.sweep.at(keys[k])[choice[k]];
+            const std::string parameters = ParamSet::resolve(specs, given, {}, entry.where, entry.name).summary();
+            const auto [earlier, added] = first.emplace(std::pair(entry.name, parameters), &entry);
+            if (added) continue;
+            if (earlier->second == &entry)
+                throw ConfigError(entry.where.file, entry.where.line,
+                                  fmt::format("[[technique]] {} gives the same parameters twice ({}): a list holds one "
+                                              "value twice, so its cases would be measured twice",
+                                              entry.name, parameters),
+                                  "list each value once");
+            throw ConfigError(entry.where.file, entry.where.line,
+                              fmt::format("[[technique]] {} repeats the parameters of the [[technique]] at line {} ({}): "
+                                          "its cases would be measured twice under one heading",
+                                          entry.name, earlier->second->where.line, parameters),
+                              "remove this entry, or give it other parameters (a list sweeps a parameter: kernel = [3, 5, 7])");
+        } while (advance(choice, keys, entry));
+    }
 }
 
 // [reference]: whether and how precisely to ray-trace the ground truth.
@@ -419,6 +484,7 @@ Experiment load_experiment(const std::filesystem::path& file, const TechniqueReg
     for (TomlReader& technique_section : technique_sections)
         experiment.techniques.push_back(read_technique(technique_section, registry));
     check_case_count(experiment);
+    refuse_repeated_cases(experiment, registry);
 
     // The files a scene reads (meshes, height maps, a population's maps) change the results as
     // much as the configs do.
@@ -457,26 +523,6 @@ std::string bounded_id(const std::string& id) {
     size_t keep = kMaxIdBytes - hash.size();
     while (keep > 0 && (static_cast<unsigned char>(id[keep]) & 0xC0) == 0x80) --keep;
     return id.substr(0, keep) + hash;
-}
-
-// The entry's swept parameters in config order; entries built in code may lack param_order.
-std::vector<std::string> ordered_keys(const TechniqueEntry& entry) {
-    std::vector<std::string> keys;
-    for (const std::string& key : entry.param_order)
-        if (entry.sweep.count(key) && std::find(keys.begin(), keys.end(), key) == keys.end()) keys.push_back(key);
-    for (const auto& [key, values] : entry.sweep)
-        if (std::find(keys.begin(), keys.end(), key) == keys.end()) keys.push_back(key);
-    std::erase_if(keys, [&](const std::string& key) { return entry.sweep.at(key).empty(); });
-    return keys;
-}
-
-// Moves to the next combination of the sweep (last key fastest); false after the last one.
-bool advance(std::vector<size_t>& choice, const std::vector<std::string>& keys, const TechniqueEntry& entry) {
-    for (size_t k = keys.size(); k-- > 0;) {
-        if (++choice[k] < entry.sweep.at(keys[k]).size()) return true;
-        choice[k] = 0;
-    }
-    return false;
 }
 
 }  // namespace

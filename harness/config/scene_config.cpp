@@ -340,6 +340,10 @@ std::shared_ptr<const HeightField> read_height_field(TomlReader& reader, Object&
         if (path.is_relative()) path = config_folder / path;
         path = std::filesystem::absolute(path).lexically_normal();
         object.height_map_file = path;
+        if (std::filesystem::is_directory(path))
+            throw reader.error("height_map_file", fmt::format("height map '{}' is a directory ({}), not an image", file,
+                                                              path.string()),
+                               "name the image file inside it, e.g. height_map_file = \"terrain/heights.png\"");
         if (!std::filesystem::is_regular_file(path))
             throw reader.error("height_map_file", fmt::format("height map '{}' not found (looked for {})", file, path.string()),
                                fmt::format("relative paths are resolved against the scene config's folder, {}",

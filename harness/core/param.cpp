@@ -6,7 +6,9 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <limits>
 #include <stdexcept>
 
 namespace canopy {
@@ -66,10 +68,18 @@ namespace {
 // Shortest text that reads back as the same double ("0.05", "1", "1e-06").
 std::string format_real(double value) { return fmt::format("{}", value); }
 
+// A declared number as its declaration wrote it: one declared from a float constant (0.15f) is
+// the double nearest that float, 0.15000000596046448, shown as the float's shortest text, 0.15.
+std::string format_declared(double value) {
+    if (!(std::fabs(value) <= double(std::numeric_limits<float>::max()))) return format_real(value);  // no float holds it
+    const float narrow = float(value);
+    return double(narrow) == value ? fmt::format("{}", narrow) : format_real(value);
+}
+
 std::string range_text(const ParamSpec& spec) {
     if (spec.type == ParamType::integer)
         return fmt::format("[{}, {}]", (long long)spec.min, (long long)spec.max);
-    return fmt::format("[{}, {}]", format_real(spec.min), format_real(spec.max));
+    return fmt::format("[{}, {}]", format_declared(spec.min), format_declared(spec.max));
 }
 
 // How a given value reads in a message: "the string 'abc'", "the real number 2.5".
@@ -238,6 +248,7 @@ std::string to_string(const ParamValue& value) {
 
 std::string default_text(const ParamSpec& spec) {
     if (spec.type == ParamType::path && to_string(spec.default_value).empty()) return "none";
+    if (const double* real = std::get_if<double>(&spec.default_value)) return format_declared(*real);
     return to_string(spec.default_value);
 }
 

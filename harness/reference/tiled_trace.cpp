@@ -2,6 +2,7 @@
 
 #include "reference/parallel_for.hpp"
 #include "reference/stall_watch.hpp"
+#include "run/interrupt.hpp"
 
 #include <fmt/format.h>
 
@@ -37,12 +38,14 @@ uint64_t trace_tiles(int width, int height, int threads, RTCScene shadow_scene, 
         const int y0 = std::max(tile_y, row_begin);
         const int x1 = std::min(x0 + kTileSize, width), y1 = std::min(tile_y + kTileSize, row_end);
         EmbreeShadowTracer tracer(shadow_scene, query);
-        for (int y = y0; y < y1; ++y)
+        for (int y = y0; y < y1; ++y) {
+            throw_if_interrupted();  // Ctrl-C: every worker stops within a row of pixels, nothing is kept
             for (int x = x0; x < x1; ++x) {
                 watch.pixel_started(worker, x, y);
                 pixel(x, y, tracer);
                 watch.pixel_finished(worker);
             }
+        }
         shadow_rays += tracer.rays();
         if (progress) {
             std::lock_guard lock(progress_mutex);

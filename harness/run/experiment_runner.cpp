@@ -577,6 +577,8 @@ RunRecord run_experiment(const PreparedExperiment& prepared, const TechniqueRegi
             write_run_reports(out, run, experiment);
             test_hooks::group_recorded(groups_measured);
         }
+    } catch (const Interrupted&) {
+        // Ctrl-C or SIGTERM while a reference was ray-traced: it is dropped, the run is interrupted below.
     } catch (const std::exception& e) {
         // The run cannot go on (a full disk, an unwritable folder, a reference that cannot be
         // rendered): record why, if the disk still takes it.

@@ -2,6 +2,7 @@
 
 #include <atomic>
 #include <csignal>
+#include <unistd.h>
 
 namespace canopy {
 
@@ -14,7 +15,11 @@ void on_signal(int signal) {
     if (!received.compare_exchange_strong(none, signal)) {  // the second signal: stop now
         std::signal(signal, SIG_DFL);
         std::raise(signal);
+        return;
     }
+    // At once, so Ctrl-C is seen to be taken (write() is safe in a signal handler; fmt is not).
+    static constexpr char kSaid[] = "\ncanopy: stopping (a second Ctrl-C or SIGTERM ends canopy at once)\n";
+    [[maybe_unused]] const ssize_t written = write(STDERR_FILENO, kSaid, sizeof kSaid - 1);
 }
 
 }  // namespace
@@ -27,5 +32,9 @@ void install_interrupt_handler() {
 bool interrupt_requested() { return received.load() != 0; }
 
 int interrupt_signal() { return received.load(); }
+
+void throw_if_interrupted() {
+    if (interrupt_requested()) throw Interrupted();
+}
 
 }  // namespace canopy

@@ -62,6 +62,31 @@ OutputFolderLock::~OutputFolderLock() {
     if (fd_ >= 0) ::close(fd_);  // releases the lock
 }
 
+fs::path output_file(const std::string& out, const std::string& file_name) {
+    const fs::path given(out);
+    std::error_code ec;
+    const bool folder = fs::is_directory(given, ec) || (!out.empty() && out.back() == '/') || given.filename() == "." ||
+                        given.filename() == "..";
+    if (folder && fs::absolute(given).lexically_normal() == fs::absolute(given).root_path())
+        throw ConfigError(given, 0, "is the filesystem's root folder: canopy writes no file there",
+                          fmt::format("give a file (--out /tmp/{0}) or another folder (--out /tmp/ writes /tmp/{0})", file_name));
+    const fs::path file = folder ? given / file_name : given;
+    const fs::file_status status = fs::status(file, ec);
+    if (fs::exists(status) && !fs::is_regular_file(status))
+        throw ConfigError(file, 0, "is neither a file nor a folder (a device, a pipe or a socket): canopy would replace it",
+                          "give a file or a folder with --out");
+    // The nearest of the file's folders that exists must be a folder.
+    for (fs::path parent = file.parent_path(); !parent.empty(); parent = parent.parent_path()) {
+        const fs::file_status parent_status = fs::status(parent, ec);
+        if (fs::is_directory(parent_status)) break;
+        if (fs::exists(parent_status))
+            throw ConfigError(parent, 0, fmt::format("is a file, not a folder: {} cannot be written", file.string()),
+                              "give a path through folders with --out");
+        if (parent == parent.parent_path()) break;
+    }
+    return file;
+}
+
 bool is_committed_results_folder(const fs::path& dir) {
     const fs::path full = fs::weakly_canonical(fs::absolute(dir));
     std::string previous;

@@ -44,6 +44,13 @@ private:
     int fd_ = -1;
 };
 
+// The file a command's --out names (`canopy report`'s page, `canopy compare`'s table), checked
+// before anything is written: a folder (one that exists, or a path ending in '/') gets
+// `file_name` inside it; anything else is the file itself. Throws ConfigError (exit code 2) for
+// the filesystem's root folder, for something that is neither a file nor a folder (a device, a
+// pipe) and for a path through a file. Creates nothing: the caller creates the file's folder.
+std::filesystem::path output_file(const std::string& out, const std::string& file_name);
+
 // Whether `dir` is, or is under, a results/paper or results/baselines folder.
 bool is_committed_results_folder(const std::filesystem::path& dir);
 

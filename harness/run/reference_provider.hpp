@@ -53,5 +53,8 @@ private:
 
 // Default cache folder: $CANOPY_CACHE_DIR, else results/cache/reference in the working directory.
 std::filesystem::path default_reference_cache_dir();
+// Before any work: throws ConfigError (exit 2) naming the path when the cache folder, or the
+// nearest of its folders that exists, is a file (e.g. $CANOPY_CACHE_DIR set to one), not a folder.
+void check_reference_cache_dir(const std::filesystem::path& dir);
 
 }  // namespace canopy

@@ -83,18 +83,18 @@ std::vector<size_t> assign_shards(const std::vector<double>& group_cost, size_t 
 
 std::string ShardSpec::text() const { return fmt::format("{}/{}", index + 1, count); }
 
-ShardSpec parse_shard(const std::string& text) {
+ShardSpec parse_shard(const std::string& text, const std::string& flag) {
     const size_t slash = text.find('/');
     const auto number = [&](const std::string& part) {
         if (part.empty() || part.find_first_not_of("0123456789") != std::string::npos || part.size() > 6)
-            throw std::invalid_argument(fmt::format("--shard {}: expected i/N with whole numbers, e.g. --shard 2/4", text));
+            throw std::invalid_argument(fmt::format("{0} {1}: expected i/N with whole numbers, e.g. {0} 2/4", flag, text));
         return size_t(std::stoul(part));
     };
     if (slash == std::string::npos)
-        throw std::invalid_argument(fmt::format("--shard {}: expected i/N, e.g. --shard 2/4", text));
+        throw std::invalid_argument(fmt::format("{0} {1}: expected i/N, e.g. {0} 2/4", flag, text));
     const size_t i = number(text.substr(0, slash)), n = number(text.substr(slash + 1));
     if (n < 1 || i < 1 || i > n)
-        throw std::invalid_argument(fmt::format("--shard {}: i must be 1 to N (N at least 1), e.g. --shard 1/{}", text,
+        throw std::invalid_argument(fmt::format("{0} {1}: i must be 1 to N (N at least 1), e.g. {0} 1/{2}", flag, text,
                                                 std::max<size_t>(n, 1)));
     return ShardSpec{i - 1, n};
 }

@@ -37,12 +37,13 @@ RunPlan plan_run(const Experiment& experiment, const std::vector<Case>& cases, c
 // the shard with the least cost so far (ties: the lowest index). Deterministic.
 std::vector<size_t> assign_shards(const std::vector<double>& group_cost, size_t shards);
 
-// "i/N" (1 <= i <= N) -> {i - 1, N}; throws std::invalid_argument saying what is wrong.
+// "i/N" (1 <= i <= N) -> {i - 1, N}; throws std::invalid_argument saying what is wrong, in the
+// words of the option that gave it (`flag`: "--shard", or "--tile" for `canopy reference`).
 struct ShardSpec {
     size_t index = 0;  // from 0
     size_t count = 1;
     std::string text() const;  // "2/4"
 };
-ShardSpec parse_shard(const std::string& text);
+ShardSpec parse_shard(const std::string& text, const std::string& flag = "--shard");
 
 }  // namespace canopy

@@ -124,6 +124,87 @@ case $case in
     (cd "$work/elsewhere" && ./canopy bench reference --width 8 --height 8 --light-samples 1 --pixel-samples 1 >/dev/null 2>"$work/stderr") \
       || fail "bench reference failed with configs/ in the current directory"
     grep -q "on local at 8x8" "$work/stderr" || fail "the current directory's configs/ was not used" ;;
+  tile_hint)
+    # Issue 36: `--tile 0/8` was answered with an example of --shard.
+    "$canopy" reference "$data/scenes/tiny.toml" --tile 0/8 --out "$work/tiles" --width 8 --height 8 >"$work/stdout" 2>"$work/stderr"
+    rc=$?
+    cat "$work/stderr"
+    [ $rc -eq 2 ] || fail "exit code $rc, expected 2"
+    grep -q -- '--tile 0/8: i must be 1 to N .*e\.g\. --tile 1/8' "$work/stderr" || fail "the message does not give --tile's form"
+    ! grep -q -- '--shard' "$work/stderr" || fail "the message names --shard"
+    [ ! -e "$work/tiles" ] || fail "a tile folder was created" ;;
+  scene_dir)
+    # Issue 36: a scene path naming a folder said "not found".
+    experiment folder_scene unused
+    sed -i 's|"../scenes/unused.toml"|"../scenes"|' "$work/experiments/folder_scene.toml"
+    expect_refused folder_scene "experiments/folder_scene\.toml:2: error: scene file '\.\./scenes' is a directory" ;;
+  unknown_command)
+    # Issue 36: `canopy frobnicate` said "A subcommand is required".
+    "$canopy" frobnicate >"$work/stdout" 2>"$work/stderr"
+    rc=$?
+    cat "$work/stderr"
+    [ $rc -eq 2 ] || fail "exit code $rc, expected 2"
+    grep -q 'unknown command frobnicate; the commands are: run, reference, bench, compare' "$work/stderr" \
+      || fail "the message does not name the word and list the commands"
+    "$canopy" bench refrence >"$work/stdout" 2>"$work/stderr"
+    rc=$?
+    cat "$work/stderr"
+    [ $rc -eq 2 ] || fail "bench refrence: exit code $rc, expected 2"
+    grep -q "unknown command bench refrence; the commands are: reference, scaling" "$work/stderr" || fail "bench's commands are not listed"
+    grep -q "did you mean bench reference?" "$work/stderr" || fail "no suggestion" ;;
+  cache_dir_file)
+    # Issue 36: CANOPY_CACHE_DIR naming a file was found only after ray-tracing. A reference that
+    # takes minutes must be refused at once.
+    echo "a file" >"$work/cache_file"
+    start=$(date +%s)
+    CANOPY_CACHE_DIR="$work/cache_file" timeout 60 "$canopy" reference "$data/scenes/tiny.toml" --out "$work/ref" \
+      --width 2048 --height 2048 --pixel-samples 256 >"$work/stdout" 2>"$work/stderr"
+    rc=$?
+    cat "$work/stderr"
+    [ $rc -eq 2 ] || fail "reference: exit code $rc, expected 2"
+    [ $(($(date +%s) - start)) -le 10 ] || fail "refused only after $(($(date +%s) - start)) s"
+    grep -q "$work/cache_file: error: is a file, not a folder.*CANOPY_CACHE_DIR names it" "$work/stderr" || fail "the message does not name the file"
+    [ ! -e "$work/ref" ] || fail "reference wrote something"
+    # The same through --reference-cache, and in a run; a run without the reference does not need the cache.
+    "$canopy" reference "$data/scenes/tiny.toml" --reference-cache "$work/cache_file/reference" --width 8 --height 8 >/dev/null 2>"$work/stderr"
+    rc=$?
+    [ $rc -eq 2 ] && grep -q "is a file, not a folder" "$work/stderr" || fail "--reference-cache through a file: exit $rc"
+    CANOPY_CACHE_DIR="$work/cache_file" "$canopy" run "$data/experiments/tiny.toml" --out "$work/out" --quick >/dev/null 2>"$work/stderr"
+    rc=$?
+    [ $rc -eq 2 ] && grep -q "is a file, not a folder" "$work/stderr" || fail "run: exit $rc, expected 2"
+    [ ! -e "$work/out" ] || fail "the run created its folder"
+    CANOPY_CACHE_DIR="$work/cache_file" "$canopy" run "$data/experiments/tiny.toml" --out "$work/out" --quick --no-reference \
+      --images none --no-progress >/dev/null 2>"$work/stderr" || fail "run --no-reference refused: $(cat "$work/stderr")" ;;
+  density_map_file)
+    # Issue 36: an image that is not one exited 1 with no file:line.
+    printf '[scene]\nname = "lawn"\n\n[[light]]\ntype = "directional"\ndirection = [0, -1, 0]\n\n[[object]]\nshape = "plane"\nsize = [8, 8]\n\n[[population]]\nname = "lawn"\nkind = "grass"\nparams = { cells_x = 2, cells_z = 2, cell_size = 1, blades = 20, density_map = "file", density_map_file = "map.png" }\n' \
+      >"$work/scenes/lawn.toml"
+    experiment lawn lawn
+    echo "not an image" >"$work/scenes/map.png"
+    expect_refused lawn 'scenes/lawn\.toml:12: error: .*density_map_file: cannot read image .*map\.png: it is neither PNG nor OpenEXR'
+    printf '\x89PNG\r\n\x1a\ntruncated' >"$work/scenes/map.png"
+    expect_refused lawn 'scenes/lawn\.toml:12: error: .*density_map_file: cannot read image .*map\.png: ' ;;
+  repeated_entries)
+    # Issue 36: the same scene or technique listed twice gave identical rows under one heading.
+    scene box "$directional" "$box"
+    printf '[experiment]\nscenes = [\n  "../scenes/box.toml",\n  "../scenes/box.toml",\n]\nresolutions = [[32, 24]]\n\n[[technique]]\nname = "shadow.hard"\n' \
+      >"$work/experiments/scene_twice.toml"
+    expect_refused scene_twice 'experiments/scene_twice\.toml:4: error: scene .box. is listed twice \(first at line 3\)'
+    grep -q 'hint: .*variant with a name of its own' "$work/stderr" || fail "no hint for a repeated scene"
+    pcf3='[[technique]]\nname = "shadow.pcf"\n[technique.params]\nkernel = 3'
+    experiment technique_twice box "$pcf3\n\n[[technique]]\nname = \"shadow.hard\"\n\n[[technique]]\nname = \"shadow.pcf\"\nparams = { kernel = 3 }"
+    expect_refused technique_twice 'experiments/technique_twice\.toml:15: error: \[\[technique\]\] shadow\.pcf repeats the parameters of the \[\[technique\]\] at line 7 \(.* kernel=3 '
+    grep -q 'hint: remove this entry, or give it other parameters' "$work/stderr" || fail "no hint for a repeated technique"
+    # Sweeps that overlap, and a list holding a value twice, repeat cases too.
+    experiment overlap box '[[technique]]\nname = "shadow.pcf"\nparams = { kernel = [3, 5] }\n\n[[technique]]\nname = "shadow.pcf"\nparams = { kernel = [5, 7] }'
+    expect_refused overlap 'experiments/overlap\.toml:11: error: .*repeats the parameters of the \[\[technique\]\] at line 7 \(.* kernel=5 '
+    experiment listed_twice box '[[technique]]\nname = "shadow.pcf"\nparams = { kernel = [3, 3] }'
+    expect_refused listed_twice 'experiments/listed_twice\.toml:7: error: .*shadow\.pcf gives the same parameters twice'
+    # Another parameter, or a variant of the scene with its own name, is another case.
+    experiment kernels box "$pcf3\n\n[[technique]]\nname = \"shadow.pcf\"\nparams = { kernel = 5 }"
+    sed -i 's|scenes = .*|scenes = ["../scenes/box.toml", { file = "../scenes/box.toml", name = "box-b" }]|' "$work/experiments/kernels.toml"
+    "$canopy" plan "$work/experiments/kernels.toml" >"$work/stdout" 2>"$work/stderr" || fail "distinct entries refused: $(cat "$work/stderr")"
+    grep -q "4 cases" "$work/stdout" || fail "expected 4 cases: $(head -1 "$work/stdout")" ;;
   *) fail "unknown case $case" ;;
 esac
 echo "ok: $case"

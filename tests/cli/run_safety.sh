@@ -383,6 +383,8 @@ PY
     grep -A3 "^shadow.hard\$" "$work/list" | grep -q "requires: a shadow-casting light" || fail "shadow.hard says no requirement"
     grep -A3 "^grass.geometry\$" "$work/list" | grep -q "requires: renders 'grass' populations" || fail "grass.geometry hides its population"
     grep -A12 '^population kind "grass"' "$work/list" | grep -q "^    cells_x " || fail "list lacks the grass population kind's parameters"
+    # Defaults and ranges as declared (issue 36: 0.15f was shown as 0.15000000596046448).
+    ! grep -E '[0-9]\.[0-9]*(0000|9999)[0-9]+' "$work/list" || fail "list shows a float's double noise"
     # Parameter rows: the type and the default start in the same column whatever the name's length.
     [ "$(grep -E '^    [a-z_]+ ' "$work/list" | awk '{ print index($0, " default ") }' | sort -u | wc -l)" -eq 1 ] \
       || fail "the default column drifts"

@@ -123,6 +123,96 @@ case $case in
     python3 -c "import json,sys; j=json.load(open('$work/out/results.json')); sys.exit(0 if j['status']=='interrupted' else 1)" \
       || fail "results.json is not a valid interrupted record"
     ! ls -a "$work/out" | grep -q '\.tmp' || fail "temporary files left behind" ;;
+  report_out)
+    # Issue 36: `report --out /` wrote a temporary file at / and then failed with EBUSY.
+    "$canopy" run "$data/experiments/tiny.toml" --out "$work/run" --quick --no-reference --images none --no-progress \
+      >/dev/null 2>&1 || fail "run failed"
+    before=$(ls -a / | sort)
+    "$canopy" report "$work/run" --out / >"$work/stdout" 2>"$work/stderr"; rc=$?
+    cat "$work/stderr"
+    [ $rc -eq 2 ] || fail "report --out /: exit code $rc, expected 2"
+    grep -q "^/: error: is the filesystem's root folder" "$work/stderr" || fail "report --out /: the message does not say why"
+    [ "$(ls -a / | sort)" = "$before" ] || fail "report --out / wrote into /"
+    "$canopy" compare "$work/run" "$work/run" --out / >/dev/null 2>"$work/stderr"; rc=$?
+    [ $rc -eq 2 ] && grep -q "root folder" "$work/stderr" || fail "compare --out /: exit code $rc, expected 2"
+    # A folder gets report.html (compare: compare.md); a new folder is created.
+    mkdir "$work/pages"
+    "$canopy" report "$work/run" --out "$work/pages" >/dev/null 2>"$work/stderr" || fail "report --out FOLDER: $(cat "$work/stderr")"
+    [ -s "$work/pages/report.html" ] || fail "report --out FOLDER wrote no FOLDER/report.html"
+    "$canopy" report "$work/run" --out "$work/new/sub/" >/dev/null 2>"$work/stderr" || fail "report --out NEW/: $(cat "$work/stderr")"
+    [ -s "$work/new/sub/report.html" ] || fail "report --out NEW/ wrote no NEW/report.html"
+    "$canopy" compare "$work/run" "$work/run" --out "$work/pages" >/dev/null 2>"$work/stderr" || fail "compare --out FOLDER: $(cat "$work/stderr")"
+    grep -q "^# canopy compare" "$work/pages/compare.md" || fail "compare --out FOLDER wrote no FOLDER/compare.md"
+    "$canopy" compare "$work/run" "$work/run" --out "$work/made/here/table.md" >/dev/null 2>"$work/stderr" \
+      || fail "compare --out NEW/FILE: $(cat "$work/stderr")"
+    [ -s "$work/made/here/table.md" ] || fail "compare did not create its folder"
+    # Through a file: refused before anything is written.
+    "$canopy" compare "$work/run" "$work/run" --out "$work/pages/report.html/table.md" >/dev/null 2>"$work/stderr"; rc=$?
+    [ $rc -eq 2 ] && grep -q "report.html: error: is a file, not a folder" "$work/stderr" || fail "--out through a file: exit $rc" ;;
+  compare_exit_codes)
+    # Issue 36: compare exited 1 both for a regression and for a report it could not write.
+    "$canopy" run "$data/experiments/tiny.toml" --out "$work/a" --quick --no-reference --images none --no-progress \
+      >/dev/null 2>&1 || fail "run failed"
+    cp -r "$work/a" "$work/b"
+    python3 - "$work/b/results.json" <<'PY'
+import json, sys
+j = json.load(open(sys.argv[1]))
+j["cases"][1]["ok"] = False
+j["cases"][1]["error"] = "made to fail by the test"
+json.dump(j, open(sys.argv[1], "w"))
+PY
+    "$canopy" compare "$work/a" "$work/a" >/dev/null 2>&1; rc=$?
+    [ $rc -eq 0 ] || fail "nothing flagged: exit $rc, expected 0"
+    "$canopy" compare "$work/a" "$work/b" >/dev/null 2>&1; rc=$?
+    [ $rc -eq 1 ] || fail "a case failed in the candidate: exit $rc, expected 1"
+    "$canopy" compare "$work/a" "$work/missing" >/dev/null 2>&1; rc=$?
+    [ $rc -eq 2 ] || fail "a missing run: exit $rc, expected 2"
+    CANOPY_TEST_FAIL_WRITE_AFTER=0 "$canopy" compare "$work/a" "$work/a" --out "$work/table.md" >/dev/null 2>"$work/stderr"; rc=$?
+    cat "$work/stderr"
+    [ $rc -eq 3 ] || fail "a report that cannot be written: exit $rc, expected 3"
+    grep -q "the report could not be written: cannot write .*table.md" "$work/stderr" || fail "the write failure is not named"
+    CANOPY_TEST_FAIL_WRITE_AFTER=0 "$canopy" compare "$work/a" "$work/b" --out "$work/table.md" >/dev/null 2>&1; rc=$?
+    [ $rc -eq 3 ] || fail "a regression and a failed write: exit $rc, expected 3"
+    # Documented where compare is.
+    "$canopy" compare --help >"$work/help"
+    grep -q "1 a regression" "$work/help" && grep -q "2 bad input" "$work/help" && grep -q "3 an I/O failure" "$work/help" \
+      || fail "compare --help does not list the exit codes" ;;
+  interrupt_reference)
+    # Issue 36: Ctrl-C during a reference's ray-trace ended canopy about 13 s later. Now within
+    # a row of pixels: `canopy reference`, then a run's reference. Each trace takes far longer
+    # than the test waits.
+    stopped_within() {  # PID SECONDS: sends SIGINT, the process must exit within SECONDS; sets rc
+      local start end
+      start=$(date +%s%N)
+      kill -INT "$1"
+      wait "$1"; rc=$?
+      end=$(date +%s%N)
+      echo "exit $rc $(((end - start) / 1000000)) ms after SIGINT"
+      [ $(((end - start) / 1000000)) -le $(($2 * 1000)) ] || fail "still running $2 s after SIGINT"
+    }
+    "$canopy" reference "$data/scenes/tiny.toml" --width 1024 --height 1024 --pixel-samples 1024 --no-cache \
+      --out "$work/ref" >/dev/null 2>"$work/stderr" &
+    pid=$!
+    sleep 1.5
+    kill -0 $pid 2>/dev/null || fail "the reference ended before SIGINT: $(cat "$work/stderr")"
+    stopped_within $pid 2
+    cat "$work/stderr"
+    [ "$rc" -eq 130 ] || fail "reference: exit code $rc, expected 130"
+    grep -q "canopy: stopping" "$work/stderr" || fail "SIGINT was not acknowledged"
+    [ ! -e "$work/ref" ] || fail "an interrupted reference wrote images"
+    sed -e "s|\.\./scenes/|$data/scenes/|" -e 's/resolutions = .*/resolutions = [[1024, 1024]]/' "$data/experiments/tiny.toml" >"$work/big.toml"
+    printf '\n[reference]\npixel_samples = 1024\n' >>"$work/big.toml"
+    "$canopy" run "$work/big.toml" --out "$work/out" --no-cache --no-progress >/dev/null 2>"$work/stderr" &
+    pid=$!
+    for _ in $(seq 300); do grep -q "writing to" "$work/stderr" || ! kill -0 $pid 2>/dev/null && break; sleep 0.1; done
+    sleep 1.5
+    kill -0 $pid 2>/dev/null || fail "the run ended before SIGINT: $(cat "$work/stderr")"
+    stopped_within $pid 2
+    cat "$work/stderr"
+    [ "$rc" -eq 130 ] || fail "run: exit code $rc, expected 130"
+    grep -q "canopy: stopping" "$work/stderr" || fail "SIGINT was not acknowledged in the run"
+    [ "$(python3 -c "import json; print(json.load(open('$work/out/results.json'))['status'])")" = interrupted ] \
+      || fail "the run is not recorded as interrupted" ;;
   *) fail "unknown case $case" ;;
 esac
 echo "ok: $case"

@@ -147,8 +147,15 @@ GrassPopulationSpec grass_population_spec(const ParamSet& params, const Populati
         throw std::invalid_argument(fmt::format("density_map_file is given but density_map is \"{}\": set density_map = \"file\" "
                                                 "to read it, or remove it",
                                                 pattern));
-    if (pattern == "file")
-        f.density = density_map_from_image(read_image(map_file), low, high, map_file);
+    if (pattern == "file") {
+        Image map;
+        try {
+            map = read_image(map_file);
+        } catch (const std::runtime_error& e) {  // the reader's reason: not PNG or OpenEXR, truncated, ...
+            throw std::invalid_argument(fmt::format("density_map_file: {}", e.what()));
+        }
+        f.density = density_map_from_image(map, low, high, map_file);
+    }
     else
         f.density = density_map(pattern == "ramp_x"      ? DensityPattern::ramp_x
                                 : pattern == "clearings" ? DensityPattern::clearings
