@@ -167,8 +167,12 @@ TEST_CASE("no verdict rests on a case whose reference is degenerate (every techn
         CHECK_FALSE(v.decided());
         CHECK(v.because.find("every case it compares is flagged") != std::string::npos);
     }
-    // paper.md says why beside the verdict, and results.md's table flags the cases.
-    CHECK(paper_report(*e.paper, run, kNoNoise).find("not judged: flagged case") != std::string::npos);
+    // paper.md flags the reference under its heading and says why beside each verdict.
+    const std::string report = paper_report(*e.paper, run, kNoNoise);
+    CHECK(report.find("not judged: flagged case") != std::string::npos);
+    CHECK(report.find("**Flagged:** tiny 96x64: degenerate reference: no lit pixels, uniform image.") != std::string::npos);
+    run.references[0].degenerate.clear();
+    CHECK(paper_report(*e.paper, run, kNoNoise).find("Flagged") == std::string::npos);
 }
 
 TEST_CASE("a timing claim from too few samples says so instead of a verdict") {

@@ -396,7 +396,13 @@ TEST_CASE("replacing a run removes the files it recorded only; a killed run's te
     CHECK_FALSE(fs::exists(dir / "images/.a.tmp123.png"));
     CHECK_FALSE(fs::exists(dir / ".results.tmp9.json"));
     CHECK(fs::exists(dir / "results.json"));
+    std::ofstream(dir / "experiment.toml") << "mine";  // beside a run that wrote no copy of its config
     CHECK(remove_run_outputs(dir, run) == 11);
+    CHECK(fs::exists(dir / "experiment.toml"));
+    run.inputs = {{"experiment.toml", "0"}};  // a run that did write it
+    std::ofstream(dir / "results.json") << "x";
+    CHECK(remove_run_outputs(dir, run) == 2);
+    CHECK_FALSE(fs::exists(dir / "experiment.toml"));
     // Whatever is not recorded stays, whatever its name or extension.
     for (const char* kept : {"notes.txt", "images/keep.txt", "images/holiday.png", "images/b.exr"})
         CHECK_MESSAGE(fs::exists(dir / kept), kept);

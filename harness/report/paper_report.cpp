@@ -377,6 +377,12 @@ std::string paper_report(const PaperComparison& paper, const RunRecord& run, con
                        run.config_file, e.config_hash,
                        run.warmup_frames, run.rounds, run.frames_per_sample, run.frames_per_sample == 1 ? "" : "s",
                        run.quick ? " (--quick)" : "");
+    // A reference every technique matches: its cases' numbers below say nothing about the techniques.
+    for (const ReferenceRecord& r : run.references)
+        if (!r.degenerate.empty())
+            out += fmt::format("**Flagged:** {} {}x{}: {}. Every technique scores near perfect against it: its cases' "
+                               "errors say nothing about them, and no claim's verdict rests on them.\n\n",
+                               r.scene, r.resolution.width, r.resolution.height, degenerate_reference_text(r.degenerate));
 
     const PaperRow* base = paper.baseline.empty() ? nullptr : row_named(paper, paper.baseline);
     std::vector<std::string> header{"row"};

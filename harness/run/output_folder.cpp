@@ -21,8 +21,8 @@ namespace fs = std::filesystem;
 namespace {
 
 // What every run writes beside its images (report.html: `canopy report`, or `run --report`).
-constexpr std::array kReportFiles = {"results.json", "results.csv", "results.md", "results.gbench.json", "paper.md",
-                                     "paper.json",   "pareto.md",   "report.html", "experiment.toml"};
+constexpr std::array kReportFiles = {"results.json", "results.csv", "results.md", "results.gbench.json",
+                                     "paper.md",     "paper.json",  "pareto.md",  "report.html"};
 
 bool is_empty_folder(const fs::path& dir) { return fs::is_directory(dir) && fs::directory_iterator(dir) == fs::directory_iterator(); }
 
@@ -160,6 +160,9 @@ void remove_temporary_files(const fs::path& dir) {
 
 std::vector<std::string> recorded_files(const RunRecord& run) {
     std::vector<std::string> files(kReportFiles.begin(), kReportFiles.end());
+    // The config's copy, by a run that records its inputs (older runs wrote none: a user's own
+    // experiment.toml beside one is kept).
+    if (!run.inputs.empty()) files.push_back("experiment.toml");
     auto add = [&](const std::string& file) {
         if (!file.empty()) files.push_back(file);
     };
