@@ -10,6 +10,7 @@
 
 #include <chrono>
 #include <cstring>
+#include <map>
 #include <set>
 #include <stdexcept>
 
@@ -89,6 +90,11 @@ public:
         : ex_(executor), commands_(commands), state_(state) {}
 
     void start_pass(size_t index) { pass_ = index; }
+    // Draw commands pass `index` recorded this frame (FrameTiming::pass_draws).
+    uint32_t draws(size_t index) const {
+        const auto it = draws_.find(index);
+        return it == draws_.end() ? 0 : it->second;
+    }
     uint64_t uploaded_bytes() const { return uploaded_; }
     const std::vector<std::pair<std::string, double>>& counters() const { return counters_; }
 
@@ -114,10 +120,12 @@ public:
         vkCmdBindPipeline(commands_, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
     }
     void draw_scene(SceneFilter filter) override {
+        note_draw();
         ex_.scene_.draw(commands_, binding().layout, filter == SceneFilter::shadow_casters);
     }
     std::span<const GeneratedPopulation> populations() const override { return ex_.scene_.populations(); }
     void draw_population(const std::string& name, uint32_t max_copies) override {
+        note_draw();
         ex_.scene_.draw_population(commands_, binding().layout, name, max_copies);
     }
     VkDrawIndexedIndirectCommand population_draw_arguments(const std::string& name) const override {
@@ -125,20 +133,24 @@ public:
     }
     void draw_population_indirect(const std::string& name, const std::string& copies,
                                   const std::string& arguments) override {
+        note_draw();
         ex_.scene_.draw_population_indirect(commands_, binding().layout, name, ex_.resources_->buffer(copies).handle(),
                                             ex_.resources_->buffer(arguments).handle());
     }
     void draw_prototype(const std::string& name, uint32_t instances) override {
+        note_draw();
         ex_.scene_.draw_prototype(commands_, binding().layout, name, instances);
     }
     void draw_over_population(const std::string& name, std::span<const std::string> vertex_buffers,
                               uint32_t vertex_count) override {
+        note_draw();
         std::vector<VkBuffer> buffers;
         for (const std::string& b : vertex_buffers) buffers.push_back(ex_.resources_->buffer(b).handle());
         ex_.scene_.draw_over_population(commands_, binding().layout, name, buffers, vertex_count);
     }
     void draw_over_population_indirect(const std::string& name, std::span<const std::string> vertex_buffers,
                                        const std::string& copies, const std::string& arguments) override {
+        note_draw();
         std::vector<VkBuffer> buffers;
         for (const std::string& b : vertex_buffers) buffers.push_back(ex_.resources_->buffer(b).handle());
         ex_.scene_.draw_over_population_indirect(commands_, binding().layout, name, buffers,
@@ -146,16 +158,19 @@ public:
                                                  ex_.resources_->buffer(arguments).handle());
     }
     void draw(std::span<const std::string> vertex_buffers, uint32_t vertex_count, uint32_t instance_count) override {
+        note_draw();
         bind_vertex_buffers(vertex_buffers);
         vkCmdDraw(commands_, vertex_count, instance_count, 0, 0);
     }
     void draw_indexed(std::span<const std::string> vertex_buffers, const std::string& index_buffer, uint32_t index_count,
                       uint32_t instance_count) override {
+        note_draw();
         bind_vertex_buffers(vertex_buffers);
         vkCmdBindIndexBuffer(commands_, ex_.resources_->buffer(index_buffer).handle(), 0, VK_INDEX_TYPE_UINT32);
         vkCmdDrawIndexed(commands_, index_count, instance_count, 0, 0, 0);
     }
     void draw_indirect(std::span<const std::string> vertex_buffers, const std::string& arguments) override {
+        note_draw();
         bind_vertex_buffers(vertex_buffers);
         vkCmdDrawIndirect(commands_, ex_.resources_->buffer(arguments).handle(), 0, 1, sizeof(VkDrawIndirectCommand));
     }
@@ -163,6 +178,7 @@ public:
                                      const std::string& arguments, const std::string& count, uint32_t max_draws) override {
         if (!ex_.gpu_.draw_indirect_count())
             throw GpuError(fmt::format("device '{}' lacks drawIndirectCount (pass '{}')", ex_.gpu_.info().name, pass().name));
+        note_draw();
         bind_vertex_buffers(vertex_buffers);
         vkCmdBindIndexBuffer(commands_, ex_.resources_->buffer(index_buffer).handle(), 0, VK_INDEX_TYPE_UINT32);
         vkCmdDrawIndexedIndirectCount(commands_, ex_.resources_->buffer(arguments).handle(), 0,
@@ -267,6 +283,8 @@ private:
     size_t pass_ = 0;
     uint64_t uploaded_ = 0;
     std::vector<std::pair<std::string, double>> counters_;
+    std::map<size_t, uint32_t> draws_;  // per pass index
+    void note_draw() { ++draws_[pass_]; }
 };
 
 GraphExecutor::GraphExecutor(const GpuContext& gpu, MemoryLedger& ledger, FrameGraph graph, uint32_t width,
@@ -600,6 +618,7 @@ PhaseTiming GraphExecutor::run(Phase phase_id, const FrameState& state, bool cou
         phase.timer->begin(commands_, slot);
         record_pass(commands_, index, context);
         phase.timer->end(commands_, slot);
+        timing.pass_draws.push_back(context.draws(index));
         ++slot;
     }
     if (counting) primitive_counter_->end(commands_);

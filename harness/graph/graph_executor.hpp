@@ -31,6 +31,7 @@ struct PhaseTiming {
     uint64_t uploaded_bytes = 0;
     std::optional<PrimitiveCounts> primitives;  // when asked for and the device counts them
     std::vector<std::pair<std::string, double>> counters;  // CpuPassContext::count, in first-counted order
+    std::vector<uint32_t> pass_draws;  // per GPU pass: the draw commands it recorded
 };
 
 class GraphExecutor {

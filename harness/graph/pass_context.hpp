@@ -98,6 +98,9 @@ public:
 
     // The extent of an image's mip 0, as allocated.
     virtual VkExtent2D extent(const std::string& image) const = 0;
+    // A host-visible buffer (BufferDecl::host_visible) as the CPU passes recorded before this one
+    // left it this frame: e.g. a draw record a CPU cull wrote, to record no draw for a count of 0.
+    virtual std::span<const std::byte> read(const std::string& buffer) const = 0;
 
     // For what the services do not cover yet; prefer adding a service.
     virtual VkCommandBuffer raw_commands() = 0;

@@ -237,8 +237,8 @@ FrameTiming FrameRenderer::render_frame(const FrameState& state, bool count_prim
     write_uniforms(state.camera);
     const PhaseTiming t = executor_->run_frame(state, count_primitives);
     next_frame_ = state.frame_index + 1;
-    return FrameTiming{t.pass_gpu_ms, t.gpu_ms,         t.wall_ms,   t.pass_cpu_ms,
-                       t.record_cpu_ms, t.uploaded_bytes, t.primitives, t.counters};
+    return FrameTiming{t.pass_gpu_ms,   t.gpu_ms,         t.wall_ms,    t.pass_cpu_ms, t.record_cpu_ms,
+                       t.uploaded_bytes, t.primitives, t.counters, t.pass_draws};
 }
 
 namespace {

@@ -26,6 +26,7 @@ struct FrameTiming {
     uint64_t uploaded_bytes = 0;      // moved from the CPU into buffers by the frame's passes
     std::optional<PrimitiveCounts> primitives;  // triangles submitted and rasterised, when counted
     std::vector<std::pair<std::string, double>> counters;  // the CPU passes' named counts (CpuPassContext::count)
+    std::vector<uint32_t> pass_draws;  // per GPU pass, in pass_names() order: the draw commands it recorded
 };
 
 struct MemoryUse {

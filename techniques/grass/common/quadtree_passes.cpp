@@ -13,6 +13,8 @@
 #include <fmt/format.h>
 
 #include <array>
+#include <cstddef>
+#include <cstring>
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
@@ -197,7 +199,24 @@ void use_quadtree_band(PassDecl& pass, const QuadtreeBandDecl& band) {
     pass.uses.push_back(use(quadtree_draw(band.name), Use::indirect));
 }
 
+bool quadtree_band_empty(const PassContext& pc, const QuadtreeBandDecl& band) {
+    // The record the band's CPU selection wrote this frame (select_quadtree above): its instances.
+    const std::span<const std::byte> record = pc.read(quadtree_draw(band.name));
+    uint32_t instances = 0;
+    if (draws_copies(band)) {
+        if (record.size() < sizeof(VkDrawIndexedIndirectCommand)) return false;
+        std::memcpy(&instances, record.data() + offsetof(VkDrawIndexedIndirectCommand, instanceCount), sizeof instances);
+    } else {
+        if (record.size() < sizeof(VkDrawIndirectCommand)) return false;
+        std::memcpy(&instances, record.data() + offsetof(VkDrawIndirectCommand, instanceCount), sizeof instances);
+    }
+    return instances == 0;
+}
+
 void draw_quadtree_band(PassContext& pc, const QuadtreeBandDecl& band, const std::string& vertex_buffer) {
+    // A band that keeps nothing this frame records no draw: on lavapipe an indirect draw of no
+    // instances still costs milliseconds (issue 37).
+    if (quadtree_band_empty(pc, band)) return;
     if (draws_copies(band)) {
         if (const GeneratedPopulation* grass = first_grass(pc.populations()))
             pc.draw_population_indirect(grass->name, quadtree_list(band.name), quadtree_draw(band.name));
@@ -214,6 +233,7 @@ void declare_macro_band_pass(PassDecl& frame, const QuadtreeBandDecl& band, cons
     over_on_terrain.vertices = macro_layout();
     frame.record = [ground, over, over_on_terrain, band, vertex_buffer](PassContext& pc) {
         if (ground) record_ground(pc, *ground);
+        if (quadtree_band_empty(pc, band)) return;
         pc.bind(pc.raster_pipeline(macros_on_terrain(pc.populations()) ? over_on_terrain : over));
         draw_quadtree_band(pc, band, vertex_buffer);
     };

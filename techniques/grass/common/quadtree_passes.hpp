@@ -69,6 +69,9 @@ void use_quadtree_band(PassDecl& pass, const QuadtreeBandDecl& band);
 // Draws a copies band with the bound pipeline (the first grass population's prototype over the
 // kept copies), or a macro band: `vertex_buffer` (binding 0) once per macro-cell (binding 1).
 void draw_quadtree_band(PassContext& pc, const QuadtreeBandDecl& band, const std::string& vertex_buffer = "");
+// Whether the band's CPU selection kept nothing this frame (its draw record holds no instance):
+// then draw_quadtree_band records no draw.
+bool quadtree_band_empty(const PassContext& pc, const QuadtreeBandDecl& band);
 
 // Makes `frame` a macro band's frame pass (grass.volume's and grass.image's under a quadtree):
 // the band's uses (use_quadtree_band), and a record that draws the scene's objects with `ground`

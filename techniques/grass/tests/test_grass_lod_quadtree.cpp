@@ -377,3 +377,28 @@ TEST_CASE("grass.lod quadtree: Lemme's hilltops (§6.4.6) draw the far band's bl
     CHECK(counter(high_timing, "hilltop_draws") == 0);
     CHECK(max_difference(high_image, frame(high, plain).second) <= 1e-5f);
 }
+
+TEST_CASE("grass.lod quadtree: a band that keeps nothing this frame records no draw") {
+    // On lavapipe an indirect draw of no instances still costs milliseconds: a band whose CPU
+    // selection kept nothing must not record one. Every blade near, then every blade far.
+    const Scene scene = lod_field_scene();
+    for (const auto& [values, drawn] : {std::pair{quadtree_values(1e6, 1e6, 1e6, 1e6), std::string("near")},
+                                        std::pair{quadtree_values(0, 0, 0, 0), std::string("far")}}) {
+        CAPTURE(drawn);
+        auto r = renderer(scene, "grass.lod", values);
+        const FrameTiming t = r->render_counting_primitives(FrameState{});
+        const std::vector<std::string> names = r->pass_names();
+        REQUIRE(t.pass_draws.size() == names.size());
+        // Each band's pass (near: the ground too) and its selection's count of instances.
+        for (const auto& [band, pass] : {std::pair{"near", "blades"}, std::pair{"middle", "volume_volumes"},
+                                         std::pair{"far", "image_slices"}}) {
+            CAPTURE(band);
+            const auto at = std::find(names.begin(), names.end(), pass);
+            REQUIRE(at != names.end());
+            const double kept = counter(t, std::string(band) + "_draws");
+            CHECK((kept > 0) == (band == drawn));
+            const uint32_t ground = std::string(band) == "near" ? 1 : 0;
+            CHECK(t.pass_draws[size_t(at - names.begin())] == ground + (kept > 0 ? 1u : 0u));
+        }
+    }
+}
