@@ -251,9 +251,8 @@ std::vector<ClaimVerdict> judge_claims(const PaperComparison& paper, const RunRe
                                                        : paper.columns[col] + " vs " + paper.columns[right_col];
             // A case measured against a degenerate reference (every technique matches it) decides
             // nothing, its time included: the scene is not the one the claim is about.
-            if (const auto& reasons = !degenerate_reasons(run, *l).empty() ? degenerate_reasons(run, *l)
-                                                                            : degenerate_reasons(run, *r);
-                !reasons.empty()) {
+            const std::vector<std::string>& left_flags = degenerate_reasons(run, *l);
+            if (const auto& reasons = left_flags.empty() ? degenerate_reasons(run, *r) : left_flags; !reasons.empty()) {
                 flagged += fmt::format("{}{}: {}", flagged.empty() ? "" : "; ", where, degenerate_reference_text(reasons));
                 continue;
             }

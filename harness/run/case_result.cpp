@@ -2,10 +2,13 @@
 
 namespace canopy {
 
+bool same_reference(const ReferenceRecord& r, const std::string& scene, const Resolution& resolution) {
+    return r.scene == scene && r.resolution.width == resolution.width && r.resolution.height == resolution.height;
+}
+
 const ReferenceRecord* reference_of(const RunRecord& run, const CaseResult& c) {
     for (const ReferenceRecord& r : run.references)
-        if (r.scene == c.scene && r.resolution.width == c.resolution.width && r.resolution.height == c.resolution.height)
-            return &r;
+        if (same_reference(r, c.scene, c.resolution)) return &r;
     return nullptr;
 }
 

@@ -191,6 +191,8 @@ struct RunRecord {
     std::vector<CaseResult> cases;
 };
 
+// Whether `r` is the reference of `scene` at `resolution`.
+bool same_reference(const ReferenceRecord& r, const std::string& scene, const Resolution& resolution);
 // The reference `c` was compared with (same scene and resolution), or null.
 const ReferenceRecord* reference_of(const RunRecord& run, const CaseResult& c);
 // Why that reference is degenerate (ReferenceRecord::degenerate), empty when it is not or none.

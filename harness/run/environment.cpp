@@ -249,7 +249,11 @@ Environment collect_environment(const GpuContext& gpu, const std::string& config
         e.git_commit = head.empty() ? "unknown" : head;
         if (!head.empty()) e.dirty_files = changed_files(checkout);
         e.git_dirty = !e.dirty_files.empty();
-        if (e.binary_commit != "unknown") e.binary_dirty = !changed_files(source_checkout()).empty();
+        // The binary's checkout is usually the run's: its status is not read twice.
+        std::error_code error;
+        const bool same_checkout = std::filesystem::equivalent(checkout, source_checkout(), error);
+        if (e.binary_commit != "unknown")
+            e.binary_dirty = same_checkout ? e.git_dirty : !changed_files(source_checkout()).empty();
     }
     // A bundle's copy of the checkout has fresh file times and the bundle names its own commit.
     if (!built_from_recorded_commit()) e.binary_older_than = source_newer_than_this_binary();

@@ -185,10 +185,6 @@ struct KeptResults {
     std::vector<ReferenceRecord> references;
 };
 
-bool same_reference(const ReferenceRecord& r, const std::string& scene, const Resolution& resolution) {
-    return r.scene == scene && r.resolution.width == resolution.width && r.resolution.height == resolution.height;
-}
-
 bool files_exist(const std::filesystem::path& dir, std::initializer_list<const std::string*> files) {
     return std::all_of(files.begin(), files.end(),
                        [&](const std::string* f) { return f->empty() || std::filesystem::is_regular_file(dir / *f); });
