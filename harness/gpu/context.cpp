@@ -253,6 +253,9 @@ GpuContext::GpuContext(const std::string& selector, Validation validation) {
     enable.features.alphaToOne = supported.features.alphaToOne;
     enable.features.sampleRateShading = supported.features.sampleRateShading;
     sample_rate_shading_ = supported.features.sampleRateShading;
+    // Anisotropic samplers (SamplerKind::anisotropic) where the device offers them, else trilinear.
+    enable.features.samplerAnisotropy = supported.features.samplerAnisotropy;
+    max_anisotropy_ = supported.features.samplerAnisotropy ? std::min(16.0f, props.limits.maxSamplerAnisotropy) : 1.0f;
     alpha_to_one_ = supported.features.alphaToOne;
 
     float priority = 1.0f;

@@ -68,6 +68,8 @@ public:
     bool pipeline_statistics() const { return pipeline_statistics_; }  // primitive counts (PrimitiveCounter)
     bool alpha_to_one() const { return alpha_to_one_; }  // alpha-to-coverage pipelines store alpha 1
     bool sample_rate_shading() const { return sample_rate_shading_; }  // fragment shaders may run per sample
+    // What SamplerKind::anisotropic samplers take: up to 16, 1 where the device has no samplerAnisotropy.
+    float max_anisotropy() const { return max_anisotropy_; }
 
     uint32_t memory_type(uint32_t type_bits, VkMemoryPropertyFlags wanted) const;
     VkFormatFeatureFlags2 format_features(VkFormat format) const;  // optimal tiling
@@ -94,6 +96,7 @@ private:
     bool pipeline_statistics_ = false;
     bool alpha_to_one_ = false;
     bool sample_rate_shading_ = false;
+    float max_anisotropy_ = 1.0f;
     VkPhysicalDeviceMemoryProperties memory_{};
 };
 

@@ -45,6 +45,7 @@ const char* sampler_name(SamplerKind kind) {
         case SamplerKind::nearest: return "nearest";
         case SamplerKind::linear: return "linear";
         case SamplerKind::linear_mipmap: return "linear-mipmap";
+        case SamplerKind::anisotropic: return "anisotropic";
         case SamplerKind::compare_linear: return "compare-linear";
     }
     return "?";
@@ -162,8 +163,9 @@ std::string describe(const FrameGraph& graph) {
         const std::string size = i.extent.rule == ImageExtent::Rule::screen
                                      ? fmt::format("screen/{}", i.extent.divisor)
                                      : fmt::format("{}x{}", i.extent.width, i.extent.height);
-        out += fmt::format("image {} format={} size={} layers={} mips={} samples={}{}\n", i.name, format_name(i.format), size,
-                           i.layers, i.mips, i.samples, i.persistent ? " persistent" : "");
+        out += fmt::format("image {} format={} size={} layers={} mips={} samples={}{}{}\n", i.name, format_name(i.format), size,
+                           i.layers, i.mips, i.samples, i.persistent ? " persistent" : "",
+                           i.arrayed ? " arrayed" : "");
     }
     for (const BufferDecl& b : graph.buffers)
         out += fmt::format("buffer {} bytes={}{} usage={}{}{}{}\n", b.name, b.bytes,

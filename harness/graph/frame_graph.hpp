@@ -51,6 +51,9 @@ struct ImageDecl {
     uint32_t mips = 1;
     uint32_t samples = 1;     // 1 or 4 on lavapipe
     bool persistent = false;  // keeps its contents from frame to frame (and from the load phase)
+    // Its views are 2D arrays even with one layer (layered images' always are): for shaders that
+    // read it and layered images alike (image2DArray, sampler2DArray).
+    bool arrayed = false;
 };
 
 enum BufferUsage : uint32_t {
@@ -93,7 +96,9 @@ enum class Use {
     transfer_write,    // copy destination (uploads, fills, copies)
 };
 
-enum class SamplerKind { nearest, linear, linear_mipmap, compare_linear };
+// linear_mipmap: trilinear; anisotropic: trilinear with up to 16 samples along a stretched
+// footprint (GpuContext::max_anisotropy; trilinear where the device has none).
+enum class SamplerKind { nearest, linear, linear_mipmap, compare_linear, anisotropic };
 
 // A range of an image's mips and layers (all by default).
 struct Subresource {

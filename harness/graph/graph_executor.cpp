@@ -365,12 +365,17 @@ VkSampler GraphExecutor::sampler(SamplerKind kind) {
         case SamplerKind::nearest: s = create_sampler(device, VK_FILTER_NEAREST); break;
         case SamplerKind::linear: s = create_sampler(device, VK_FILTER_LINEAR); break;
         case SamplerKind::compare_linear: s = create_sampler(device, VK_FILTER_LINEAR, true); break;
-        case SamplerKind::linear_mipmap: {
+        case SamplerKind::linear_mipmap:
+        case SamplerKind::anisotropic: {
             VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
             info.magFilter = info.minFilter = VK_FILTER_LINEAR;
             info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_LINEAR;
             info.addressModeU = info.addressModeV = info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
             info.maxLod = VK_LOD_CLAMP_NONE;
+            if (kind == SamplerKind::anisotropic && gpu_.max_anisotropy() > 1.0f) {
+                info.anisotropyEnable = VK_TRUE;
+                info.maxAnisotropy = gpu_.max_anisotropy();
+            }
             VK_CHECK(vkCreateSampler(device, &info, nullptr, &s));
             break;
         }

@@ -83,7 +83,7 @@ private:
     std::vector<std::unique_ptr<PassBinding>> bindings_;  // per pass
     std::array<PhasePasses, 2> phases_;
     std::unique_ptr<PrimitiveCounter> primitive_counter_;  // when the device has pipeline statistics
-    std::array<VkSampler, 4> samplers_{};
+    std::array<VkSampler, 5> samplers_{};
     std::map<std::string, bool> buffer_written_;  // written since the last buffer barrier
     VkCommandPool command_pool_ = VK_NULL_HANDLE;
     VkCommandBuffer commands_ = VK_NULL_HANDLE;

@@ -98,8 +98,9 @@ VkImageView GraphImage::view(const Subresource& range) {
     if (auto it = views_.find(key); it != views_.end()) return it->second;
     VkImageViewCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
     info.image = image_;
-    // Layered images always get array views (one layer of them included), so shaders see one type.
-    info.viewType = decl_.layers > 1 ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D;
+    // Layered images always get array views (one layer of them included), so shaders see one type;
+    // so do images declared arrayed.
+    info.viewType = decl_.layers > 1 || decl_.arrayed ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D;
     info.format = decl_.format;
     info.subresourceRange = {aspect_, r.mip, r.mip_count, r.layer, r.layer_count};
     VkImageView view;

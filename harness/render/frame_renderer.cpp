@@ -53,7 +53,7 @@ std::optional<Unsupported> check_image(const GpuContext& gpu, const FrameGraph& 
                 return Unsupported{fmt::format("device '{}' has no depth-compare sampling for {} (needed by hardware PCF)",
                                                device, name),
                                    device_hint()};
-            if (u.use == Use::sampled && (u.sampler == SamplerKind::linear || u.sampler == SamplerKind::linear_mipmap) &&
+            if (u.use == Use::sampled && (u.sampler == SamplerKind::linear || u.sampler == SamplerKind::linear_mipmap || u.sampler == SamplerKind::anisotropic) &&
                 lacks(VK_FORMAT_FEATURE_2_SAMPLED_IMAGE_FILTER_LINEAR_BIT))
                 return Unsupported{fmt::format("device '{}' cannot filter format {} linearly (image '{}')", device, name,
                                                image.name),

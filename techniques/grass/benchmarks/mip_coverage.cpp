@@ -22,9 +22,8 @@
 namespace canopy {
 namespace {
 
-// A baked slice as colour and alpha: the bakes store a threshold in alpha, above 1 where no
-// blade shows (PATCH_BAKE_EMPTY); a texel is a blade (alpha 1) or none (0), whatever the
-// scene's density (a density below 1 would cut some at render time).
+// A baked slice's level 0 as colour and alpha (blade_texels.h: alpha 1 where a blade shows, 0
+// where none does), whatever the scene's density (a density below 1 would cut some at render time).
 grass::RgbaLevel slice_level(const Image& baked) {
     grass::RgbaLevel level;
     level.width = uint32_t(baked.width);
@@ -33,9 +32,7 @@ grass::RgbaLevel slice_level(const Image& baked) {
     for (int y = 0; y < baked.height; ++y)
         for (int x = 0; x < baked.width; ++x) {
             const float* t = baked.at(x, y);
-            const bool blade = t[3] <= 1.0f;
-            level.texels[size_t(y) * size_t(baked.width) + size_t(x)] =
-                blade ? glm::vec4(t[0], t[1], t[2], 1.0f) : glm::vec4(0.0f);
+            level.texels[size_t(y) * size_t(baked.width) + size_t(x)] = glm::vec4(t[0], t[1], t[2], t[3]);
         }
     return level;
 }
@@ -122,10 +119,14 @@ public:
         };
         const std::vector<Source> sources{
             {fmt::format("grass.image: the top view, baked at {0} x {0}", image_bake),
-             baked_slices(gpu, scene, "grass.image", {{"resolution", image_bake}}, "slice_albedo", 1, s)},
+             baked_slices(gpu, scene, "grass.image", {{"resolution", image_bake}, {"bake_supersampling", 1LL}},
+                          "slice_albedo", 1, s)},
             {fmt::format("grass.volume: {} slices baked at {} x {}", 2 * n, slice_bake, height_bake),
              baked_slices(gpu, scene, "grass.volume",
-                          {{"slices", (long long)n}, {"resolution", slice_bake}, {"height_resolution", height_bake}},
+                          {{"slices", (long long)n},
+                           {"resolution", slice_bake},
+                           {"height_resolution", height_bake},
+                           {"bake_supersampling", 1LL}},
                           "slices_albedo", 2 * n, s)},
         };
         FamilyBenchmarkResult result;

@@ -9,6 +9,7 @@
 #include "grass_billboard_params.h"
 #include "../common/grass_family.hpp"
 #include "../common/grass_passes.hpp"
+#include "../common/mip_passes.hpp"
 #include "../common/patch_bake.hpp"
 #include "../common/grass_population.hpp"
 
@@ -24,7 +25,8 @@ namespace canopy {
 namespace {
 
 namespace names {
-constexpr const char* kImage = "billboard";      // RGBA32F x 2 layers: radiance, threshold
+constexpr const char* kImage = "billboard";      // RGBA32F x 2 layers: radiance, covered (blade_texels.h)
+constexpr const char* kBlades = "billboard_blades";  // RGBA32F x 2 layers: the blade map (blade_texels.h)
 constexpr const char* kBakeDepth = "bake_depth";
 constexpr const char* kQuads = "quads";          // 24 QuadVertex: the xy quad's two halves, then the zy quad's
 constexpr const char* kFront = "bake_front";     // PatchBake of layer 0
@@ -73,6 +75,10 @@ public:
     ErrorColumns error_columns() const override { return grass::kGrassErrorColumns; }
     std::vector<std::string> pareto_errors() const override { return grass::pareto_errors(); }
 
+    std::optional<ParamConflict> conflict(const ParamSet& params) const override {
+        return grass::slice_filtering_conflict(params);
+    }
+
     FrameGraph graph(const ParamSet& params) const override {
         const uint32_t resolution = uint32_t(params.integer("resolution"));
         const auto block = shader::GrassBillboardParams::from(params);
@@ -82,10 +88,13 @@ public:
         g.needs.populations_on_terrain = true;  // each quad's foot on the ground (grass_billboards.vert)
         g.shader_params.set_block(block);
         g.report["orientation"] = crossed ? "crossed" : "camera-facing";
-        g.images.push_back({.name = names::kImage, .format = VK_FORMAT_R32G32B32A32_SFLOAT,
-                            .extent = ImageExtent::square(resolution), .layers = 2, .persistent = true});
-        g.images.push_back({.name = names::kBakeDepth, .format = VK_FORMAT_D32_SFLOAT,
-                            .extent = ImageExtent::square(resolution)});
+        const grass::SliceFiltering filtering = grass::slice_filtering(params);
+        const uint32_t mips = grass::mip_levels(resolution, resolution, filtering);
+        const ImageExtent extent = grass::bake_extent(resolution, resolution, filtering);
+        for (const char* image : {names::kImage, names::kBlades})
+            g.images.push_back({.name = image, .format = VK_FORMAT_R32G32B32A32_SFLOAT, .extent = extent, .layers = 2,
+                                .mips = mips, .persistent = true});
+        g.images.push_back({.name = names::kBakeDepth, .format = VK_FORMAT_D32_SFLOAT, .extent = extent});
         g.buffers.push_back({.name = names::kQuads, .bytes = sizeof(grass::QuadVertex) * kQuadVertices,
                              .usage = kVertexBuffer, .persistent = true});
         for (const char* camera : {names::kFront, names::kSide})
@@ -112,18 +121,20 @@ public:
             PassDecl p{.name = layer == 0 ? "bake_front" : "bake_side", .kind = PassKind::raster, .phase = Phase::load};
             p.push_constant_bytes = sizeof(DrawConstants);
             p.uses = {use(graph_names::kFrameUniforms, Use::uniform, 0), use(cameras[layer], Use::uniform, 1),
-                      cleared(names::kImage, Use::color_attachment, {0.0f, 0.0f, 0.0f, shader::PATCH_BAKE_EMPTY}, true,
-                              layer),
+                      cleared(names::kImage, Use::color_attachment, {0.0f, 0.0f, 0.0f, 0.0f}, true, layer),
+                      cleared(names::kBlades, Use::color_attachment, grass::kBladeMapEmpty, true, layer),
                       cleared(names::kBakeDepth, Use::depth_attachment, kFarDepth, false)};
             p.settings = fmt::format("layer={}", layer);
             p.record = [bake](PassContext& pc) { grass::record_prototype_bake(pc, bake); };
             g.passes.push_back(std::move(p));
         }
+        grass::declare_mip_passes(g, {.colour = names::kImage, .blades = names::kBlades, .width = resolution,
+                                      .height = resolution, .layers = 2, .filtering = filtering});
 
         PassDecl frame{.name = "billboards", .kind = PassKind::raster};
         frame.push_constant_bytes = sizeof(DrawConstants);
-        frame.uses = {use(graph_names::kFrameUniforms, Use::uniform, 0), use(names::kImage, Use::sampled, 1),
-                      use(names::kQuads, Use::vertex),
+        frame.uses = {use(graph_names::kFrameUniforms, Use::uniform, 0), grass::sampled_slices(names::kImage, 1, filtering),
+                      grass::sampled_slices(names::kBlades, 8, filtering), use(names::kQuads, Use::vertex),
                       cleared(graph_names::kColor, Use::color_attachment, grass::kUncoveredClear),
                       cleared(graph_names::kDepth, Use::depth_attachment, kFarDepth)};
         const RasterState ground = grass::ground_state();

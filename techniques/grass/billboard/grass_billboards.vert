@@ -20,14 +20,12 @@ layout(location = 9) in vec4 corner_densities;           // patch order (grass_d
 layout(location = 0) out vec2 uv;
 layout(location = 1) flat out float layer;
 layout(location = 2) flat out vec4 densities;
-layout(location = 3) out vec2 ground_xz;  // the quad's foot in the patch, where density is read
 
 void main() {
     uv = quad_uv.xy;
     layer = quad_position.w;
     densities = corner_densities;
     vec3 p = quad_position.xyz;
-    ground_xz = p.xz;
     vec4 world;
     vec2 foot = p.xz;  // patch space
     if (frame.technique.orientation == GRASS_BILLBOARD_CAMERA_FACING) {
@@ -38,7 +36,6 @@ void main() {
         float length_right = length(right);
         right = length_right > 1e-6 ? right / length_right : vec3(1.0, 0.0, 0.0);
         world = vec4(centre + right * ((p.x - 0.5) * scale) + vec3(0.0, p.y * scale, 0.0), 1.0);
-        ground_xz = vec2(p.x, 0.5);
         foot = (inverse(instance_model) * vec4(world.x, centre.y, world.z, 1.0)).xz;
     } else {
         world = instance_model * vec4(p, 1.0);

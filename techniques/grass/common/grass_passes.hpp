@@ -9,6 +9,8 @@
 #include "graph/raster_state.hpp"
 #include "core/technique.hpp"
 
+#include "../shaders/blade_texels.h"
+
 #include <glm/glm.hpp>
 
 #include <array>
@@ -20,14 +22,23 @@
 namespace canopy::grass {
 
 inline ResourceUse use(const std::string& resource, Use how, int binding = -1) { return {resource, how, binding}; }
+inline ResourceUse use(const std::string& resource, Use how, int binding, SamplerKind sampler) {
+    return {resource, how, binding, sampler};
+}
 
-// An attachment cleared at the pass's start; `layer`: one layer of a layered image (else all).
+// What a blade map is cleared to: no blade.
+inline constexpr std::array<float, 4> kBladeMapEmpty = {shader::BLADE_MAP_EMPTY.x, shader::BLADE_MAP_EMPTY.y,
+                                                        shader::BLADE_MAP_EMPTY.z, shader::BLADE_MAP_EMPTY.w};
+
+// An attachment cleared at the pass's start, its level 0 (an image with mips has them made from it
+// after); `layer`: one layer of a layered image (else all).
 inline ResourceUse cleared(const std::string& image, Use how, std::array<float, 4> clear, bool store = true,
                            uint32_t layer = ~0u) {
     ResourceUse u{image, how};
     u.clear = clear;
     u.store = store;
-    if (layer != ~0u) u.range = Subresource{0, ~0u, layer, 1};
+    u.range = Subresource{0, 1, 0, ~0u};
+    if (layer != ~0u) u.range = Subresource{0, 1, layer, 1};
     return u;
 }
 

@@ -8,6 +8,7 @@
 #include "image_graph.hpp"
 #include "../common/grass_family.hpp"
 #include "../common/grass_passes.hpp"
+#include "../common/mip_passes.hpp"
 #include "../common/grass_population.hpp"
 
 #include "shaders/grass/grass_image_frag.h"
@@ -32,11 +33,16 @@ public:
     ErrorColumns error_columns() const override { return grass::kGrassErrorColumns; }
     std::vector<std::string> pareto_errors() const override { return grass::pareto_errors(); }
 
+    std::optional<ParamConflict> conflict(const ParamSet& params) const override {
+        return grass::slice_filtering_conflict(params);
+    }
+
     FrameGraph graph(const ParamSet& params) const override {
         grass::ImageSettings settings{.resolution = uint32_t(params.integer("resolution")),
                                       .slice_height = float(params.real("slice_height")),
                                       .macro_cells = uint32_t(params.integer("macro_cells"))};
         settings.macro_terrain.max_unplanarity = float(params.real("macro_unplanarity"));
+        settings.filtering = grass::slice_filtering(params);
         FrameGraph g;
         g.needs.populations = {grass::kGrassPopulationKind};
         // A quad per cell (grass_image_vertex.glsl) or per macro-cell (grass_image_macro_vertex.glsl)

@@ -7,6 +7,7 @@
 #include "../common/grass_passes.hpp"
 #include "../common/grass_population.hpp"
 #include "../common/macro_passes.hpp"
+#include "../common/mip_passes.hpp"
 #include "../common/patch_bake.hpp"
 
 #include "shaders/grass/grass_image_macro_frag.h"
@@ -24,14 +25,15 @@ namespace canopy::grass {
 namespace {
 
 struct Names {
-    std::string albedo;  // RGBA32F: albedo, threshold
+    std::string albedo;  // RGBA32F: albedo, covered (blade_texels.h)
     std::string normal;  // RGBA16F: patch-space normal
+    std::string blades;  // RGBA32F: the blade map (blade_texels.h)
     std::string bake_depth;
     std::string quad;    // 6 QuadVertex
     std::string camera;  // PatchBake, looking down
     explicit Names(const std::string& p)
-        : albedo(p + "slice_albedo"), normal(p + "slice_normal"), bake_depth(p + "bake_depth"), quad(p + "quad"),
-          camera(p + "bake_camera") {}
+        : albedo(p + "slice_albedo"), normal(p + "slice_normal"), blades(p + "slice_blades"),
+          bake_depth(p + "bake_depth"), quad(p + "quad"), camera(p + "bake_camera") {}
 };
 
 // The quad over the bake's frame in x and z at `height` above the ground, its coordinates those
@@ -55,11 +57,15 @@ void declare_image_bake(FrameGraph& g, const ImageSettings& s) {
     const Names names(s.prefix);
     const bool tiled = s.macro_cells > 0 || s.selected_by.has_value();
     const float slice_height = s.slice_height;
-    g.images.push_back({.name = names.albedo, .format = VK_FORMAT_R32G32B32A32_SFLOAT,
-                        .extent = ImageExtent::square(s.resolution), .persistent = true});
-    g.images.push_back({.name = names.normal, .format = VK_FORMAT_R16G16B16A16_SFLOAT,
-                        .extent = ImageExtent::square(s.resolution), .persistent = true});
-    g.images.push_back({.name = names.bake_depth, .format = VK_FORMAT_D32_SFLOAT, .extent = ImageExtent::square(s.resolution)});
+    const uint32_t mips = mip_levels(s.resolution, s.resolution, s.filtering);
+    const ImageExtent extent = bake_extent(s.resolution, s.resolution, s.filtering);
+    g.images.push_back({.name = names.albedo, .format = VK_FORMAT_R32G32B32A32_SFLOAT, .extent = extent, .mips = mips,
+                        .persistent = true, .arrayed = true});
+    g.images.push_back({.name = names.normal, .format = VK_FORMAT_R16G16B16A16_SFLOAT, .extent = extent, .mips = mips,
+                        .persistent = true, .arrayed = true});
+    g.images.push_back({.name = names.blades, .format = VK_FORMAT_R32G32B32A32_SFLOAT, .extent = extent, .mips = mips,
+                        .persistent = true, .arrayed = true});
+    g.images.push_back({.name = names.bake_depth, .format = VK_FORMAT_D32_SFLOAT, .extent = extent});
     g.buffers.push_back({.name = names.quad, .bytes = sizeof(QuadVertex) * 6, .usage = kVertexBuffer, .persistent = true});
     g.buffers.push_back({.name = names.camera, .bytes = sizeof(shader::PatchBake), .usage = kUniformBuffer});
     if (s.macro_cells > 0) {  // a quadtree's bands share the field records it declares
@@ -83,12 +89,15 @@ void declare_image_bake(FrameGraph& g, const ImageSettings& s) {
     PassDecl top{.name = s.prefix + "bake_top", .kind = PassKind::raster, .phase = Phase::load};
     top.push_constant_bytes = sizeof(DrawConstants);
     top.uses = {use(graph_names::kFrameUniforms, Use::uniform, 0), use(names.camera, Use::uniform, 1),
-                cleared(names.albedo, Use::color_attachment, {0.0f, 0.0f, 0.0f, shader::PATCH_BAKE_EMPTY}),
+                cleared(names.albedo, Use::color_attachment, {0.0f, 0.0f, 0.0f, 0.0f}),
                 cleared(names.normal, Use::color_attachment, {0.0f, 1.0f, 0.0f, 0.0f}),
+                cleared(names.blades, Use::color_attachment, kBladeMapEmpty),
                 cleared(names.bake_depth, Use::depth_attachment, kFarDepth, false)};
     top.settings = tiled ? "down, tiled" : "down";
     top.record = [bake, tiled](PassContext& pc) { record_prototype_bake(pc, bake, tiled); };
     g.passes.push_back(std::move(top));
+    declare_mip_passes(g, {.colour = names.albedo, .blades = names.blades, .companion = names.normal, .width = s.resolution,
+                           .height = s.resolution, .layers = 1, .filtering = s.filtering, .pass_prefix = s.prefix + "top_"});
 }
 
 PassDecl image_frame_pass(const ImageSettings& s, const RasterState& per_cell, bool ground,
@@ -98,8 +107,9 @@ PassDecl image_frame_pass(const ImageSettings& s, const RasterState& per_cell, b
     const uint32_t macro = s.macro_cells;
     PassDecl frame{.name = s.prefix + "slices", .kind = PassKind::raster};
     frame.push_constant_bytes = sizeof(DrawConstants);
-    frame.uses = {use(graph_names::kFrameUniforms, Use::uniform, 0), use(names.albedo, Use::sampled, 1),
-                  use(names.normal, Use::sampled, 2), use(names.quad, Use::vertex)};
+    frame.uses = {use(graph_names::kFrameUniforms, Use::uniform, 0), sampled_slices(names.albedo, 1, s.filtering),
+                  sampled_slices(names.normal, 2, s.filtering), sampled_slices(names.blades, 8, s.filtering),
+                  use(names.quad, Use::vertex)};
     frame.uses.insert(frame.uses.end(), attachments.begin(), attachments.end());
     const std::optional<RasterState> objects = ground ? std::optional<RasterState>(ground_state()) : std::nullopt;
     if (s.selected_by) {

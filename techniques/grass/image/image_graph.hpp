@@ -7,6 +7,7 @@
 #include "graph/raster_state.hpp"
 
 #include "../common/macro_passes.hpp"
+#include "../common/mip_passes.hpp"
 #include "../common/quadtree_passes.hpp"
 
 #include <cstdint>
@@ -32,6 +33,7 @@ struct ImageSettings {
     // on the field's grid heights, uneven macro-cells split (macro_passes.hpp). The setup and the
     // frame pass share its count, so both passes are declared from the same settings.
     MacroTerrain macro_terrain{.max_unplanarity = 0.05f};
+    SliceFiltering filtering;    // how the bake is filtered when drawn
 };
 
 // The vertices the frame pass draws per cell (a cull drawing them needs it).

@@ -129,6 +129,7 @@ public:
 
     std::optional<ParamConflict> conflict(const ParamSet& params) const override {
         if (auto c = grass::blade_samples_conflict(params)) return c;
+        if (auto c = grass::slice_filtering_conflict(params)) return c;
         if (params.choice("culling") == "quadtree" && params.choice("middle") == "slices")
             return ParamConflict{{"culling", "middle"},
                                  "the quadtree draws the middle band as macro-cells, which the BTF slices do not have",
@@ -172,6 +173,7 @@ public:
         const uint32_t samples = uint32_t(params.integer("samples"));
         const bool to_coverage = block.coverage == shader::GRASS_COVERAGE_ALPHA_TO_COVERAGE;
         const bool gpu_culled = params.choice("culling") == "gpu";
+        const grass::SliceFiltering filtering = grass::slice_filtering(params);
         const bool quadtree = params.choice("culling") == "quadtree";
         // Each band's distances, for the quadtree (Lemme §6.1-6.2: the blades' copies, the volume's and image's
         // macro-cells) and the GPU culls alike.
@@ -226,19 +228,22 @@ public:
                                .prefix = level_name("volume", level) + "_",
                                .culled_by = gpu_culled ? std::optional<std::string>(level_name("middle", level) + "_")
                                                        : std::nullopt,
-                               .selected_by = quadtree ? std::optional(middle_bands[size_t(level - 1)]) : std::nullopt});
+                               .selected_by = quadtree ? std::optional(middle_bands[size_t(level - 1)]) : std::nullopt,
+                               .filtering = filtering});
         const bool btf = params.choice("middle") == "slices";
         const grass::SlicesSettings slices{.slices = uint32_t(block.slices),
                                            .resolution = uint32_t(params.integer("resolution")),
                                            .height_resolution = uint32_t(params.integer("height_resolution")),
                                            .shadow_resolution = uint32_t(params.integer("middle_shadow_resolution")),
                                            .prefix = "middle_",
-                                           .culled_by = gpu_culled ? std::optional<std::string>("middle_") : std::nullopt};
+                                           .culled_by = gpu_culled ? std::optional<std::string>("middle_") : std::nullopt,
+                                           .filtering = filtering};
         const grass::ImageSettings image{.resolution = uint32_t(params.integer("image_resolution")),
                                          .slice_height = float(params.real("slice_height")),
                                          .prefix = "image_",
                                          .culled_by = gpu_culled ? std::optional<std::string>("far_") : std::nullopt,
-                                         .selected_by = quadtree ? std::optional(far_band) : std::nullopt};
+                                         .selected_by = quadtree ? std::optional(far_band) : std::nullopt,
+                                         .filtering = filtering};
         FrameGraph g;
         g.needs.populations = {grass::kGrassPopulationKind};
         // Each band's per-cell representation follows a terrain as it does alone, and so do the
@@ -354,6 +359,8 @@ public:
                                            : (per_sample ? std::span<const uint32_t>(grass_lod_volume_per_sample_frag)
                                                          : std::span<const uint32_t>(grass_lod_volume_frag));
         middle.sample_shading = per_sample;
+        // The slices' filtered alpha is coverage as the blades' outline is (grass_slice_coverage.glsl).
+        middle.alpha_to_coverage = to_coverage && samples > 1;
         RasterState middle_on_terrain = middle;  // the quadtree's macro-cells on a terrain
         middle_on_terrain.vertex_spirv = grass_lod_volume_macro_terrain_vert;
         middle_on_terrain.fragment_spirv = per_sample ? std::span<const uint32_t>(grass_lod_volume_macro_terrain_per_sample_frag)
@@ -396,6 +403,7 @@ public:
                                       : std::span<const uint32_t>(grass_lod_image_vert);
         quads.fragment_spirv = quadtree ? std::span<const uint32_t>(grass_lod_image_macro_frag)
                                         : std::span<const uint32_t>(grass_lod_image_frag);
+        quads.alpha_to_coverage = to_coverage && samples > 1;
         RasterState quads_on_terrain = quads;
         quads_on_terrain.vertex_spirv = grass_lod_image_macro_terrain_vert;
         quads_on_terrain.fragment_spirv = grass_lod_image_macro_terrain_frag;

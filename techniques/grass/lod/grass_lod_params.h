@@ -6,6 +6,7 @@
 
 #include "param_block.h"
 #include "../shaders/blade_coverage.h"
+#include "../shaders/slice_filtering_params.h"
 
 #define GRASS_LOD_PARAMS(SHADER, PLAN, DERIVED)                                                              \
     SHADER(real, geometry_full, (5.0, 0.0, 1e6),                                                             \
@@ -54,7 +55,8 @@
     PLAN(integer, height_resolution, (64, 4, 4096), "texels of a middle-band slice up the patch's height (grass.volume's and grass.slices')") \
     PLAN(integer, middle_shadow_resolution, (0, 0, 8192), "middle = slices: grass.slices' shadow_resolution, the blades' shadows baked into the slices' rows from one depth view per baked light direction this many texels a side; 0: no shadows in the bake") \
     PLAN(integer, image_resolution, (256, 16, 4096), "texels across the far band's top-view bake (grass.image's resolution)") \
-    PLAN(real, slice_height, (0.1, 0.01, 1.0), "the far band's slice height, a fraction of the tallest blade (grass.image's)")
+    PLAN(real, slice_height, (0.1, 0.01, 1.0), "the far band's slice height, a fraction of the tallest blade (grass.image's)") \
+    GRASS_SLICE_FILTERING_PARAMS(PLAN, "coverage")
 
 CANOPY_BEGIN_NAMESPACE
 CANOPY_PARAM_BLOCK(GrassLodParams, GRASS_LOD_PARAMS)

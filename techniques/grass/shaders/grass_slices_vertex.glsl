@@ -25,7 +25,6 @@ layout(location = 6) in vec4 instance_normal_matrix[3];  // locations 6-8
 layout(location = 9) in vec4 corner_densities;           // patch order (grass_density.h)
 
 layout(location = 0) out vec2 uv;
-layout(location = 1) out vec2 patch_xz;
 layout(location = 2) out vec4 weights0123;  // btf_light_weights, interpolated and renormalised per fragment
 layout(location = 3) out float weight4;
 layout(location = 4) out vec3 light_irradiance;  // on a surface facing the light
@@ -51,7 +50,6 @@ void main() {
         uv.x = 1.0 - uv.x;
     }
     vec4 world = instance_model * position + vec4(0.0, grass_terrain_lift(lifts, position.xz, mirror), 0.0, 0.0);
-    patch_xz = position.xz;
     densities = corner_densities;
     band = grass_representation_band(instance_model);
 

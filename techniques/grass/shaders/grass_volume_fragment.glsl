@@ -1,16 +1,20 @@
 // The volume's fragment stage (grass.volume, and grass.lod's middle band): Lemme's ray cast
 // through the cell's vertical slices (§5.2, eq 5.3-5.21). The ray from the eye to this exit point
 // enters the cuboid (volume_entry), walks the slice planes in order (volume_walk.h), and at each
-// samples the slice's baked texel: skipped where the blade's threshold is beyond the cell's
-// density there or outside the representation's band (grass_lod_band.glsl), else lit per pixel
-// with the baked normal by the family's one model and composited front to back (eq 5.19-5.20). The
-// depth written is that of the first blade met (Lemme: "used for modifying the depth value"), so
-// overlapping cuboids and the ground resolve by the depth test. A ray that meets no blade is
-// discarded. Included after the technique's parameter block, which has `slices`.
+// samples the slice's baked texel, filtered over the hit's footprint (volume_slice_footprint): its
+// alpha the share its blades cover that the density at their root and the representation's band
+// (grass_lod_band.glsl) keep (grass_slice_coverage.glsl), lit per pixel with the baked normal by
+// the family's one model and composited front to back (eq 5.19-5.20). The depth written is that
+// of the blade where the gathered opacity passes a_r (Lemme: the first blade's, "used for
+// modifying the depth value"; a filtered texel's faint edge is not a blade), so overlapping cuboids and
+// the ground resolve by the depth test. What the ray gathers is made coverage as a slice's alpha
+// is (alpha-to-coverage, or the alpha test at a_r). Included after the technique's parameter
+// block, which has `slices`.
 #include "frame_uniforms.glsl"
 #include "draw_constants.glsl"
 #include "grass_density.h"
 #include "grass_shading.glsl"
+#include "grass_slice_coverage.glsl"
 #include "volume_walk.h"
 #include "grass_terrain.h"
 #ifdef GRASS_LOD_VOLUME_LEVELS
@@ -20,8 +24,9 @@
 #define GRASS_VOLUME_SLICES (frame.technique.slices)
 #endif
 
-layout(set = 0, binding = 1) uniform sampler2DArray slice_albedo;  // NEAREST: thresholds are not blended
-layout(set = 0, binding = 2) uniform sampler2DArray slice_normal;  // NEAREST
+layout(set = 0, binding = 1) uniform sampler2DArray slice_albedo;  // trilinear, or NEAREST (mip_filter = "none")
+layout(set = 0, binding = 2) uniform sampler2DArray slice_normal;  // the same
+layout(set = 0, binding = 8) uniform sampler2DArray slice_blades;  // the same (blade_texels.h)
 layout(set = 0, binding = 3, std140) uniform BoxBlock { VolumeBox box; };
 
 // GRASS_VOLUME_PER_SAMPLE: the exit point interpolated at each covered sample, so under MSAA the
@@ -69,20 +74,30 @@ void main() {
         if (stretch != vec2(0.0) && (height < 0.0 || height > 1.0)) continue;
         // Slices along x are baked looking along x (u = z), those along z looking along z (u = x).
         vec3 texel = hit.axis == 0 ? vec3(q.z, 1.0 - height, float(slice)) : vec3(q.x, 1.0 - height, float(n + slice));
-        vec4 albedo = texture(slice_albedo, texel);
-        if (!grass_blade_in_band(albedo.a, grass_root_density(densities, p.xz), band)) continue;
-        // A level-0 texel shows a blade or none: its alpha is 1 (eq 5.19-5.20 keep the general form).
-        float hit_alpha = 1.0;
+        // The footprint (world): u spans the box across the plane, v the patch's height.
         vec3 world = (model * vec4(p, 1.0)).xyz;
-        vec3 normal = mat3(normal_matrix[0], normal_matrix[1], normal_matrix[2]) * texture(slice_normal, texel).xyz;
+        vec4 g = volume_slice_footprint(normalize(world - frame.camera_position.xyz), hit.axis,
+                                        -(frame.view * vec4(world, 1.0)).z / frame.viewport.z,
+                                        vec2((hit.axis == 0 ? box.extent.z * abs(model[2][2]) : box.extent.x * abs(model[0][0])),
+                                             box.extent.y * model[1][1]));
+        vec2 gx = g.xy, gy = g.zw;
+        vec4 albedo = textureGrad(slice_albedo, texel, gx, gy);
+        float hit_alpha = grass_slice_alpha(albedo, textureGrad(slice_blades, texel, gx, gy), densities, band);
+        if (!(hit_alpha > 0.0)) continue;
+        vec3 normal = mat3(normal_matrix[0], normal_matrix[1], normal_matrix[2]) *
+                      grass_slice_normal(textureGrad(slice_normal, texel, gx, gy).xyz);
         vec3 radiance = grass_lit_output(albedo.rgb, world, normal, 1.0, draw.albedo.w).rgb;
-        if (alpha == 0.0) first_blade = world;
+        // The depth is where the gathered opacity passes a_r (the first hit where it never does): a
+        // filtered texel's faint edge in front of a blade does not move it.
+        if (alpha == 0.0 || (alpha <= GRASS_ALPHA_REFERENCE && alpha + (1.0 - alpha) * hit_alpha > GRASS_ALPHA_REFERENCE))
+            first_blade = world;
         color += (1.0 - alpha) * hit_alpha * radiance;  // eq 5.19
         alpha += (1.0 - alpha) * hit_alpha;             // eq 5.20
         if (alpha >= 0.999) break;                      // "sufficient opacity"
     }
-    if (alpha <= 0.0) discard;
+    if (!(alpha > 0.0)) discard;
+    float coverage = grass_slice_coverage(alpha);
     vec4 clip = frame.view_proj * vec4(first_blade, 1.0);
     gl_FragDepth = clip.z / clip.w;
-    out_color = vec4(color / alpha, 1.0);
+    out_color = vec4(color / alpha, coverage);
 }

@@ -2,10 +2,11 @@
 // middle band under culling = "quadtree"; Lemme §6.2, eq 6.6): the ray walks the n k slice planes
 // of the macro-cell in each direction (volume_walk.h with n k planes), and each plane it meets
 // shows its own cell's copy of the tiled slices: the slice that cell's mirror puts there
-// (grass_macro_slice), read at the mirrored point, cut by that cell's densities and, in grass.lod,
-// by that cell's band (grass_lod_band.glsl), lit with the mirrored baked normal; composited front
-// to back as for one cell (grass_volume_fragment.glsl). The depth written is that of the first
-// blade met. Included after the technique's parameter block, which has `slices`.
+// (grass_macro_slice), read at the mirrored point filtered over the hit's footprint, thinned by
+// that cell's densities and, in grass.lod, by that cell's band (grass_lod_band.glsl,
+// grass_slice_coverage.glsl), lit with the mirrored baked normal; composited front to back as for
+// one cell (grass_volume_fragment.glsl). The depth written is that of the blade where the gathered opacity passes a_r.
+// Included after the technique's parameter block, which has `slices`.
 //
 // With GRASS_MACRO_TERRAIN (grass_volume_macro_vertex.glsl), each hit's lookup is shifted down by
 // the ground under it, read from the field's grid heights on its own cell's two triangles, as one
@@ -16,14 +17,16 @@
 #include "grass_density.h"
 #include "grass_macro_cells.h"
 #include "grass_shading.glsl"
+#include "grass_slice_coverage.glsl"
 #include "grass_lod_band.glsl"
 #include "volume_walk.h"
 #ifndef GRASS_VOLUME_SLICES
 #define GRASS_VOLUME_SLICES (frame.technique.slices)
 #endif
 
-layout(set = 0, binding = 1) uniform sampler2DArray slice_albedo;  // NEAREST: thresholds are not blended
-layout(set = 0, binding = 2) uniform sampler2DArray slice_normal;  // NEAREST
+layout(set = 0, binding = 1) uniform sampler2DArray slice_albedo;  // trilinear, or NEAREST (mip_filter = "none")
+layout(set = 0, binding = 2) uniform sampler2DArray slice_normal;  // the same
+layout(set = 0, binding = 8) uniform sampler2DArray slice_blades;  // the same (blade_texels.h)
 layout(set = 0, binding = 3, std140) uniform FieldBlock { GrassMacroField field; };
 layout(set = 0, binding = 4, std430) readonly buffer CellBlock { GrassCell field_cells[]; };
 #ifdef GRASS_MACRO_TERRAIN
@@ -91,18 +94,29 @@ void main() {
         // Slices along x are baked looking along x (u = z), those along z looking along z (u = x).
         vec3 texel = hit.axis == 0 ? vec3(p.y, 1.0 - texel_height, float(slice))
                                    : vec3(p.x, 1.0 - texel_height, float(n + slice));
-        vec4 albedo = texture(slice_albedo, texel);
-        if (!grass_blade_in_band(albedo.a, grass_root_density(c.densities, p), band)) continue;
+        // The footprint (world): the tiled bake's u spans one cell, v the patch's height (the
+        // ground's slope aside).
         vec3 world = origin + q * extent;
-        vec3 normal = grass_mirror_vector(texture(slice_normal, texel).xyz, s);
+        vec4 g = volume_slice_footprint(normalize(world - frame.camera_position.xyz), hit.axis,
+                                        -(frame.view * vec4(world, 1.0)).z / frame.viewport.z,
+                                        vec2(size, field.patch_top.x * size));
+        vec2 gx = g.xy, gy = g.zw;
+        vec4 albedo = textureGrad(slice_albedo, texel, gx, gy);
+        float hit_alpha = grass_slice_alpha(albedo, textureGrad(slice_blades, texel, gx, gy), c.densities, band);
+        if (!(hit_alpha > 0.0)) continue;
+        vec3 normal = grass_mirror_vector(grass_slice_normal(textureGrad(slice_normal, texel, gx, gy).xyz), s);
         vec3 radiance = grass_lit_output(albedo.rgb, world, normal, 1.0, field.patch_top.y).rgb;
-        if (alpha == 0.0) first_blade = world;
-        color += (1.0 - alpha) * radiance;  // eq 5.19 with a level-0 texel's alpha of 1
-        alpha += (1.0 - alpha);             // eq 5.20
-        if (alpha >= 0.999) break;          // "sufficient opacity"
+        // The depth is where the gathered opacity passes a_r (the first hit where it never does): a
+        // filtered texel's faint edge in front of a blade does not move it.
+        if (alpha == 0.0 || (alpha <= GRASS_ALPHA_REFERENCE && alpha + (1.0 - alpha) * hit_alpha > GRASS_ALPHA_REFERENCE))
+            first_blade = world;
+        color += (1.0 - alpha) * hit_alpha * radiance;  // eq 5.19
+        alpha += (1.0 - alpha) * hit_alpha;             // eq 5.20
+        if (alpha >= 0.999) break;                      // "sufficient opacity"
     }
-    if (alpha <= 0.0) discard;
+    if (!(alpha > 0.0)) discard;
+    float coverage = grass_slice_coverage(alpha);
     vec4 clip = frame.view_proj * vec4(first_blade, 1.0);
     gl_FragDepth = clip.z / clip.w;
-    out_color = vec4(color / alpha, 1.0);
+    out_color = vec4(color / alpha, coverage);
 }

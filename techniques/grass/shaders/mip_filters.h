@@ -29,6 +29,12 @@ CANOPY_FN vec4 mip_max_alpha(vec4 t0, vec4 t1, vec4 t2, vec4 t3) {
     return vec4(mip_alpha_weighted_colour(t0, t1, t2, t3), max(max(t0.w, t1.w), max(t2.w, t3.w)));
 }
 
+// A supersampled bake brought down one step (canopy's anti-aliased level 0, Lemme L514): the
+// share of the four covered (their mean alpha) and their alpha-weighted colour.
+CANOPY_FN vec4 mip_resolve(vec4 t0, vec4 t1, vec4 t2, vec4 t3) {
+    return vec4(mip_alpha_weighted_colour(t0, t1, t2, t3), (t0.w + t1.w + t2.w + t3.w) * 0.25f);
+}
+
 // Eq 4.14-4.15: a texel of a max-alpha level with its alpha scaled by scale_coverage = a_r / a'_r,
 // kept in [0, 1].
 CANOPY_FN vec4 mip_scale_alpha(vec4 t, float scale_coverage) {
@@ -39,6 +45,18 @@ CANOPY_FN vec4 mip_scale_alpha(vec4 t, float scale_coverage) {
 CANOPY_FN vec4 mip_bleed(vec4 t, vec4 next_level) {
     return vec4(vec3(t) * t.w + vec3(next_level) * (1.0f - t.w), t.w);
 }
+
+// A companion texel (a normal, or a BTF slice's lit row and its light's visibility) of the next
+// level: the four weighted by their colours' alphas `alphas`, their mean where none is covered.
+CANOPY_FN vec4 mip_companion(vec4 t0, vec4 t1, vec4 t2, vec4 t3, vec4 alphas) {
+    float sum = alphas.x + alphas.y + alphas.z + alphas.w;
+    if (sum == 0.0f) return (t0 + t1 + t2 + t3) * 0.25f;
+    return (t0 * alphas.x + t1 * alphas.y + t2 * alphas.z + t3 * alphas.w) / sum;
+}
+
+// Eq 4.16 for a companion texel whose colour has alpha `alpha`: its transparent part from the next
+// level's texel (all four channels).
+CANOPY_FN vec4 mip_bleed_companion(vec4 t, float alpha, vec4 next_level) { return t * alpha + next_level * (1.0f - alpha); }
 
 CANOPY_END_NAMESPACE
 

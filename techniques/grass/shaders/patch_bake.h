@@ -1,17 +1,13 @@
 // How grass techniques bake their patch at load (GLSL and C++): an orthographic camera framing
-// the prototype's bounds (or, tiled, its cell) along one axis (common/patch_bake.hpp makes them), and what a baked
-// texel holds where it shows no blade. One struct for the bake passes' uniform block and the
-// C++ that fills it.
+// the prototype's bounds (or, tiled, its cell) along one axis (common/patch_bake.hpp makes them).
+// One struct for the bake passes' uniform block and the C++ that fills it. What a baked texel
+// holds: blade_texels.h.
 #ifndef CANOPY_GRASS_PATCH_BAKE_H
 #define CANOPY_GRASS_PATCH_BAKE_H
 
 #include "shared_math.h"
 
 CANOPY_BEGIN_NAMESPACE
-
-// A baked texel's alpha channel holds the density threshold of the blade it shows; texels that
-// show no blade hold this, which no density reaches, so the representation cuts them away.
-CANOPY_CONST float PATCH_BAKE_EMPTY = 2.0f;
 
 struct PatchBake {
     mat4 view_proj;      // patch space -> the bake's clip space

@@ -19,9 +19,12 @@ layout(location = 2) out vec2 strip_uv;
 layout(location = 3) out float colour;
 layout(location = 4) flat out float taper;
 layout(location = 5) flat out float threshold;
+layout(location = 6) flat out vec2 root;  // the blade's root, patch x and z (the tile's copy's)
 
 void main() {
-    patch_position = in_position + (bake.tiles.x > 0.0 ? patch_bake_tile(gl_InstanceIndex) : vec3(0.0));
+    vec3 tile = bake.tiles.x > 0.0 ? patch_bake_tile(gl_InstanceIndex) : vec3(0.0);
+    patch_position = in_position + tile;
+    root = blade_root.xy + tile.xz;
     patch_normal = in_normal;
     strip_uv = blade_strip.xy;
     colour = blade_strip.w;

@@ -90,6 +90,28 @@ CANOPY_FN VolumeHit volume_next_hit(VolumeWalk w, vec3 e, ivec2 crossed, float n
     return volume_next_hit(w, e, crossed, vec2(n, n));
 }
 
+// The footprint of a pixel on a slice plane, for a filtered lookup (textureGrad: the walk's loop
+// is not uniform control flow, so implicit derivatives are undefined there, and a cuboid's faces
+// would make them jump): a pixel `pixel` world units across at the hit (its view depth over the
+// focal length) seen along unit `ray` on a plane across `axis` (0: x = const, 1: z = const) spans
+// pixel / cos(theta) along the ray's tilt in the plane and `pixel` across it. Returned as the two
+// gradients of the lookup (u, v) (xy and zw), u running along z (axis 0) or x (axis 1) and v down
+// the height, `texel_world` world units for u and for v to go from 0 to 1. A ray almost in the
+// plane gives the coarsest level.
+CANOPY_FN vec4 volume_slice_footprint(vec3 ray, int axis, float pixel, vec2 texel_world) {
+    vec3 normal = axis == 0 ? vec3(1.0f, 0.0f, 0.0f) : vec3(0.0f, 0.0f, 1.0f);
+    float cos_theta = max(abs(dot(ray, normal)), 1e-3f);
+    vec3 tilt = ray - dot(ray, normal) * normal;  // the ray's direction within the plane
+    float tilt_length = length(tilt);
+    tilt = tilt_length > 1e-6f ? tilt / tilt_length : vec3(0.0f, 1.0f, 0.0f);
+    vec3 across = cross(normal, tilt);
+    vec3 g1 = tilt * (pixel / cos_theta);
+    vec3 g2 = across * pixel;
+    float u1 = axis == 0 ? g1.z : g1.x;
+    float u2 = axis == 0 ? g2.z : g2.x;
+    return vec4(u1 / texel_world.x, -g1.y / texel_world.y, u2 / texel_world.x, -g2.y / texel_world.y);
+}
+
 CANOPY_END_NAMESPACE
 
 #endif

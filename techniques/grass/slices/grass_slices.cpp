@@ -12,6 +12,7 @@
 #include "slices_graph.hpp"
 #include "../common/grass_family.hpp"
 #include "../common/grass_passes.hpp"
+#include "../common/mip_passes.hpp"
 #include "../common/grass_population.hpp"
 
 #include "shaders/grass/grass_slices_frag.h"
@@ -36,6 +37,10 @@ public:
     ErrorColumns error_columns() const override { return grass::kGrassErrorColumns; }
     std::vector<std::string> pareto_errors() const override { return grass::pareto_errors(); }
 
+    std::optional<ParamConflict> conflict(const ParamSet& params) const override {
+        return grass::slice_filtering_conflict(params);
+    }
+
     FrameGraph graph(const ParamSet& params) const override {
         const auto block = shader::GrassSlicesParams::from(params);
         const grass::SlicesSettings settings{.slices = uint32_t(block.slices),
@@ -43,7 +48,8 @@ public:
                                              .height_resolution = uint32_t(params.integer("height_resolution")),
                                              .slice_height = block.slice_height,
                                              .neighbours = params.boolean("neighbours"),
-                                             .shadow_resolution = uint32_t(params.integer("shadow_resolution"))};
+                                             .shadow_resolution = uint32_t(params.integer("shadow_resolution")),
+                                             .filtering = grass::slice_filtering(params)};
         FrameGraph g;
         g.needs.populations = {grass::kGrassPopulationKind};
         g.needs.populations_on_terrain = true;  // the quads follow it (grass_slices_vertex.glsl)

@@ -24,16 +24,19 @@ namespace canopy::grass {
 namespace {
 
 struct Names {
-    std::string albedo;      // RGBA32F x 4n layers: albedo (the ambient row), threshold
+    std::string albedo;      // RGBA32F x 4n layers: albedo (the ambient row), covered (blade_texels.h)
     std::string lit;         // RGBA16F x 20n layers: the five lit rows of each slice and side
-    std::string top_albedo;  // RGBA32F: the horizontal slice's albedo, threshold
+    std::string blades;      // RGBA32F x 4n layers: the blade map (blade_texels.h)
+    std::string top_albedo;  // RGBA32F, arrayed: the horizontal slice's albedo, covered
     std::string top_lit;     // RGBA16F x 5 layers
+    std::string top_blades;  // RGBA32F, arrayed: its blade map
     std::string bake_depth, top_depth;
     std::string quads;       // (2n + 1) x 6 QuadVertex, (4n + 1) x 6 on a terrain
     std::string light_depth;  // D32 x 5 layers: a shadowed bake's light views
     std::string shadows;      // BakeShadows
     explicit Names(const std::string& p)
-        : albedo(p + "slices_albedo"), lit(p + "slices_lit"), top_albedo(p + "top_albedo"), top_lit(p + "top_lit"),
+        : albedo(p + "slices_albedo"), lit(p + "slices_lit"), blades(p + "slices_blades"), top_albedo(p + "top_albedo"),
+          top_lit(p + "top_lit"), top_blades(p + "top_blades"),
           bake_depth(p + "bake_depth"), top_depth(p + "top_bake_depth"), quads(p + "slice_quads"),
           light_depth(p + "bake_light_depth"), shadows(p + "bake_shadows") {}
 };
@@ -139,15 +142,22 @@ void declare_slices_bake(FrameGraph& g, const SlicesSettings& s) {
     const uint32_t n = s.slices, lights = uint32_t(shader::BTF_LIGHTS);
     const bool tiled = s.neighbours;
     const float slice_height = s.slice_height;
-    const ImageExtent side = ImageExtent::texels(s.resolution, s.height_resolution);
-    const ImageExtent top = ImageExtent::square(s.resolution);
+    const ImageExtent side = bake_extent(s.resolution, s.height_resolution, s.filtering);
+    const ImageExtent top = bake_extent(s.resolution, s.resolution, s.filtering);
+    const uint32_t side_mips = mip_levels(s.resolution, s.height_resolution, s.filtering);
+    const uint32_t top_mips = mip_levels(s.resolution, s.resolution, s.filtering);
     g.images.push_back({.name = names.albedo, .format = VK_FORMAT_R32G32B32A32_SFLOAT, .extent = side,
-                        .layers = 4 * n, .persistent = true});
+                        .layers = 4 * n, .mips = side_mips, .persistent = true});
     g.images.push_back({.name = names.lit, .format = VK_FORMAT_R16G16B16A16_SFLOAT, .extent = side,
-                        .layers = 4 * n * lights, .persistent = true});
-    g.images.push_back({.name = names.top_albedo, .format = VK_FORMAT_R32G32B32A32_SFLOAT, .extent = top, .persistent = true});
+                        .layers = 4 * n * lights, .mips = side_mips, .persistent = true});
+    g.images.push_back({.name = names.blades, .format = VK_FORMAT_R32G32B32A32_SFLOAT, .extent = side,
+                        .layers = 4 * n, .mips = side_mips, .persistent = true});
+    g.images.push_back({.name = names.top_albedo, .format = VK_FORMAT_R32G32B32A32_SFLOAT, .extent = top,
+                        .mips = top_mips, .persistent = true, .arrayed = true});
     g.images.push_back({.name = names.top_lit, .format = VK_FORMAT_R16G16B16A16_SFLOAT, .extent = top,
-                        .layers = lights, .persistent = true});
+                        .layers = lights, .mips = top_mips, .persistent = true});
+    g.images.push_back({.name = names.top_blades, .format = VK_FORMAT_R32G32B32A32_SFLOAT, .extent = top,
+                        .mips = top_mips, .persistent = true, .arrayed = true});
     g.images.push_back({.name = names.bake_depth, .format = VK_FORMAT_D32_SFLOAT, .extent = side});
     g.images.push_back({.name = names.top_depth, .format = VK_FORMAT_D32_SFLOAT, .extent = top});
     // Room for the quads on a terrain; a flat field fills and draws the first slices_cell_vertices.
@@ -232,8 +242,8 @@ void declare_slices_bake(FrameGraph& g, const SlicesSettings& s) {
         PassDecl p{.name = b.name, .kind = PassKind::raster, .phase = Phase::load};
         p.push_constant_bytes = sizeof(DrawConstants);
         p.uses = {use(graph_names::kFrameUniforms, Use::uniform, 0), use(b.camera, Use::uniform, 1),
-                  cleared(horizontal ? names.top_albedo : names.albedo, Use::color_attachment,
-                          {0.0f, 0.0f, 0.0f, shader::PATCH_BAKE_EMPTY}, true, b.layer)};
+                  cleared(horizontal ? names.top_albedo : names.albedo, Use::color_attachment, {0.0f, 0.0f, 0.0f, 0.0f},
+                          true, b.layer)};
         if (shadowed) {
             ResourceUse depth = use(names.light_depth, Use::sampled, 2);
             depth.sampler = SamplerKind::compare_linear;
@@ -243,6 +253,8 @@ void declare_slices_bake(FrameGraph& g, const SlicesSettings& s) {
         for (uint32_t row = 0; row < lights; ++row)
             p.uses.push_back(cleared(horizontal ? names.top_lit : names.lit, Use::color_attachment, {0.0f, 0.0f, 0.0f, 0.0f},
                                      true, horizontal ? row : b.layer * lights + row));
+        p.uses.push_back(cleared(horizontal ? names.top_blades : names.blades, Use::color_attachment, kBladeMapEmpty, true,
+                                 b.layer));
         p.uses.push_back(cleared(horizontal ? names.top_depth : names.bake_depth, Use::depth_attachment, kFarDepth, false));
         p.settings = horizontal ? fmt::format("down{}", tiled ? ", tiled" : "")
                                 : fmt::format("layer={}{}", b.layer, tiled ? " tiled" : "");
@@ -250,6 +262,13 @@ void declare_slices_bake(FrameGraph& g, const SlicesSettings& s) {
         p.record = [bake, tiled](PassContext& pc) { record_prototype_bake(pc, bake, tiled); };
         g.passes.push_back(std::move(p));
     }
+    // The lit rows filter with their slice side's coverage (five to a layer).
+    declare_mip_passes(g, {.colour = names.albedo, .blades = names.blades, .companion = names.lit, .companions = lights,
+                           .width = s.resolution, .height = s.height_resolution, .layers = 4 * n,
+                           .filtering = s.filtering, .pass_prefix = s.prefix + "slices_"});
+    declare_mip_passes(g, {.colour = names.top_albedo, .blades = names.top_blades, .companion = names.top_lit,
+                           .companions = lights, .width = s.resolution, .height = s.resolution, .layers = 1,
+                           .filtering = s.filtering, .pass_prefix = s.prefix + "top_"});
 }
 
 PassDecl slices_frame_pass(const SlicesSettings& s, const RasterState& per_cell, bool ground,
@@ -257,9 +276,11 @@ PassDecl slices_frame_pass(const SlicesSettings& s, const RasterState& per_cell,
     const Names names(s.prefix);
     PassDecl frame{.name = s.prefix + "btf_slices", .kind = PassKind::raster};
     frame.push_constant_bytes = sizeof(DrawConstants);
-    frame.uses = {use(graph_names::kFrameUniforms, Use::uniform, 0), use(names.albedo, Use::sampled, 1),
-                  use(names.lit, Use::sampled, 2),  use(names.top_albedo, Use::sampled, 3),
-                  use(names.top_lit, Use::sampled, 4), use(names.quads, Use::vertex)};
+    const SliceFiltering& f = s.filtering;
+    frame.uses = {use(graph_names::kFrameUniforms, Use::uniform, 0), sampled_slices(names.albedo, 1, f),
+                  sampled_slices(names.lit, 2, f),          sampled_slices(names.top_albedo, 3, f),
+                  sampled_slices(names.top_lit, 4, f),      sampled_slices(names.blades, 8, f),
+                  sampled_slices(names.top_blades, 9, f),   use(names.quads, Use::vertex)};
     frame.uses.insert(frame.uses.end(), attachments.begin(), attachments.end());
     const std::optional<RasterState> objects = ground ? std::optional<RasterState>(ground_state()) : std::nullopt;
     RasterState slices = per_cell;

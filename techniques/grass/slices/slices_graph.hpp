@@ -7,6 +7,8 @@
 #include "graph/frame_graph.hpp"
 #include "graph/raster_state.hpp"
 
+#include "../common/mip_passes.hpp"
+
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -35,6 +37,7 @@ struct SlicesSettings {
     std::string prefix;               // before every resource and pass name ("" for grass.slices)
     // The frame pass draws the copies the cull of this prefix kept (grass_cull.hpp), not all.
     std::optional<std::string> culled_by;
+    SliceFiltering filtering;         // how the slices are filtered when drawn
 };
 
 // The vertices the frame pass draws per cell: 2n vertical quads and the horizontal one; on a

@@ -33,9 +33,16 @@ const Technique& image_technique() {
     return *t;
 }
 
+// Level 0 alone, unfiltered (mip_filter = "none", bake_supersampling = 1): each texel one blade,
+// as the texel-by-texel checks against the rays need; filtering is test_grass_coverage's and
+// test_mip_filters'.
 FrameRenderer renderer_for(const Scene& scene, uint32_t width, uint32_t height, double slice_height = 0.1) {
-    const ParamSet params = ParamSet::resolve(
-        image_technique().params(), {{"resolution", (long long)kBake}, {"slice_height", slice_height}}, {}, {}, "grass.image");
+    const ParamSet params = ParamSet::resolve(image_technique().params(),
+                                              {{"resolution", (long long)kBake},
+                                               {"slice_height", slice_height},
+                                               {"mip_filter", std::string("none")},
+                                               {"bake_supersampling", 1LL}},
+                                              {}, {}, "grass.image");
     return FrameRenderer(test::gpu(), scene, build_scene_meshes(scene), width, height, image_technique().graph(params));
 }
 
@@ -47,20 +54,23 @@ TEST_CASE("grass.image: the top-view bake shows, texel by texel, the blade a ver
     renderer.render();
     const Image albedo = renderer.read_image("slice_albedo");
     const Image normal = renderer.read_image("slice_normal");
+    const Image blades = renderer.read_image("slice_blades");
     REQUIRE(albedo.width == int(kBake));
     const auto truth = grass::test::traced_bake(scene, grass::test::View::down, kBake);
-    const grass::test::BakeAgreement same = grass::test::compare_bake(albedo, truth);
+    const grass::test::BakeAgreement same = grass::test::compare_bake(albedo, blades, truth);
     CAPTURE(same.compared);
     CAPTURE(same.covered);
     CHECK(same.covered > 300);
     CHECK(same.coverage == 0);
     CHECK(same.threshold == 0);
-    CHECK(grass::test::compare_bake(albedo, truth, true).coverage > 100);
+    CHECK(grass::test::compare_bake(albedo, blades, truth, true).coverage > 100);
     // Where a blade is baked, its normal is a unit vector turned to the sky (the side the bake saw).
     int normals = 0;
     for (int j = 0; j < int(kBake); ++j)
         for (int i = 0; i < int(kBake); ++i) {
-            if (albedo.at(i, j)[3] > 1.0f) continue;
+            // Level 0 is not anti-aliased: a texel shows a blade or none.
+            CHECK((albedo.at(i, j)[3] == 1.0f || albedo.at(i, j)[3] == 0.0f));
+            if (albedo.at(i, j)[3] == 0.0f) continue;
             const float* n = normal.at(i, j);
             CHECK(std::abs(std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) - 1.0f) < 2e-3f);
             CHECK(n[1] >= 0.0f);
@@ -101,10 +111,12 @@ TEST_CASE("grass.image: a thinner field cuts the baked blades whose threshold th
         const Scene scene = one_cell_scene(kFarAbove, density);
         FrameRenderer renderer = renderer_for(scene, 160, 120);
         renderer.render();
-        const Image baked = renderer.read_image("slice_albedo");
+        const Image colour = renderer.read_image("slice_albedo");
+        const Image baked = renderer.read_image("slice_blades");
         *texels = *kept_texels = 0;
-        for (size_t i = 3; i < baked.pixels.size(); i += 4) {
-            *texels += baked.pixels[i] <= 1.0f;
+        for (size_t i = 0; i < baked.pixels.size(); i += 4) {
+            if (colour.pixels[i + 3] == 0.0f) continue;
+            ++*texels;
             *kept_texels += baked.pixels[i] <= 0.3f;
         }
         return grass::test::grass_pixels(renderer.read_color());

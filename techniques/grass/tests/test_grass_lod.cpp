@@ -73,7 +73,10 @@ TEST_CASE("grass.lod: with its bands at either end it draws what each representa
     CHECK(max_difference(blades, volume) > 0.1f);
     CHECK(max_difference(blades, image) > 0.1f);
     // With Boulanger's middle band: all slices, as grass.slices draws them.
-    const Image slices = render(scene, "grass.slices", {{"slices", 4LL}, {"resolution", 96LL}, {"height_resolution", 48LL}});
+    // grass.lod filters every band by its one mip_filter (Lemme's by default), grass.slices by
+    // Boulanger's max-alpha unless told.
+    const Image slices = render(scene, "grass.slices",
+                                {{"slices", 4LL}, {"resolution", 96LL}, {"height_resolution", 48LL}, {"mip_filter", std::string("coverage")}});
     Values btf = lod_values(0, 0, 1e6, 1e6);
     btf["middle"] = std::string("slices");
     const Image lod_slices = render(scene, "grass.lod", btf);
@@ -82,7 +85,11 @@ TEST_CASE("grass.lod: with its bands at either end it draws what each representa
     CHECK(max_difference(slices, volume) > 0.1f);
     // The shadowed bake too: grass.lod's middle_shadow_resolution is grass.slices' shadow_resolution.
     const Image shadowed = render(scene, "grass.slices",
-                                  {{"slices", 4LL}, {"resolution", 96LL}, {"height_resolution", 48LL}, {"shadow_resolution", 256LL}});
+                                  {{"slices", 4LL},
+                                   {"resolution", 96LL},
+                                   {"height_resolution", 48LL},
+                                   {"shadow_resolution", 256LL},
+                                   {"mip_filter", std::string("coverage")}});
     btf["middle_shadow_resolution"] = 256LL;
     CHECK(max_difference(render(scene, "grass.lod", btf), shadowed) <= 1e-5f);
     CHECK(max_difference(shadowed, slices) > 0.01f);  // the bake's shadows show: the check above tells them apart
@@ -259,7 +266,8 @@ TEST_CASE("grass.lod on a terrain: each band alone draws what its representation
     const Scene hills = grass::test::hills_scene("[camera]\nposition = [0.0, 2.5, 4.5]\ntarget = [0.0, 0.3, 0.0]\nfov = 45", 1.2);
     const Image blades = render(hills, "grass.geometry", {{"samples", 1LL}, {"coverage", std::string("alpha_test")}});
     const Image volume = render(hills, "grass.volume", {{"slices", 4LL}, {"resolution", 96LL}, {"height_resolution", 48LL}});
-    const Image slices = render(hills, "grass.slices", {{"slices", 4LL}, {"resolution", 96LL}, {"height_resolution", 48LL}});
+    const Image slices = render(hills, "grass.slices",
+                                {{"slices", 4LL}, {"resolution", 96LL}, {"height_resolution", 48LL}, {"mip_filter", std::string("coverage")}});
     const Image image = render(hills, "grass.image", {{"resolution", 128LL}});
     CHECK(max_difference(blades, volume) > 0.1f);
     CHECK(max_difference(volume, slices) > 0.1f);

@@ -10,6 +10,7 @@
 #include "volume_graph.hpp"
 #include "../common/grass_family.hpp"
 #include "../common/grass_passes.hpp"
+#include "../common/mip_passes.hpp"
 #include "../common/grass_population.hpp"
 
 #include "shaders/grass/grass_volume_frag.h"
@@ -34,12 +35,17 @@ public:
     ErrorColumns error_columns() const override { return grass::kGrassErrorColumns; }
     std::vector<std::string> pareto_errors() const override { return grass::pareto_errors(); }
 
+    std::optional<ParamConflict> conflict(const ParamSet& params) const override {
+        return grass::slice_filtering_conflict(params);
+    }
+
     FrameGraph graph(const ParamSet& params) const override {
         const auto block = shader::GrassVolumeParams::from(params);
-        const grass::VolumeSettings settings{.slices = uint32_t(block.slices),
-                                             .resolution = uint32_t(params.integer("resolution")),
-                                             .height_resolution = uint32_t(params.integer("height_resolution")),
-                                             .macro_cells = uint32_t(params.integer("macro_cells"))};
+        grass::VolumeSettings settings{.slices = uint32_t(block.slices),
+                                       .resolution = uint32_t(params.integer("resolution")),
+                                       .height_resolution = uint32_t(params.integer("height_resolution")),
+                                       .macro_cells = uint32_t(params.integer("macro_cells"))};
+        settings.filtering = grass::slice_filtering(params);
         FrameGraph g;
         g.needs.populations = {grass::kGrassPopulationKind};
         g.shader_params.set_block(block);

@@ -27,13 +27,15 @@ namespace {
 
 // Resource names under the settings' prefix.
 struct Names {
-    std::string albedo;      // RGBA32F x 2n layers: albedo, threshold
+    std::string albedo;      // RGBA32F x 2n layers: albedo, covered (blade_texels.h)
     std::string normal;      // RGBA16F x 2n layers: patch-space normal
+    std::string blades;      // RGBA32F x 2n layers: the blade map (blade_texels.h)
     std::string bake_depth;
     std::string cuboid;      // 36 QuadVertex: corner (q space), face plane
     std::string box;         // VolumeBox
     explicit Names(const std::string& p)
-        : albedo(p + "slices_albedo"), normal(p + "slices_normal"), bake_depth(p + "bake_depth"), cuboid(p + "cuboid"),
+        : albedo(p + "slices_albedo"), normal(p + "slices_normal"), blades(p + "slices_blades"),
+          bake_depth(p + "bake_depth"), cuboid(p + "cuboid"),
           box(p + "volume_box") {}
 };
 
@@ -96,12 +98,15 @@ void declare_volume_bake(FrameGraph& g, const VolumeSettings& s) {
     const Names names(s.prefix);
     const uint32_t n = s.slices;
     const bool tiled = s.macro_cells > 0 || s.selected_by.has_value();
-    const ImageExtent extent = ImageExtent::texels(s.resolution, s.height_resolution);
+    const ImageExtent extent = bake_extent(s.resolution, s.height_resolution, s.filtering);
     const std::vector<SliceBake> bakes = slice_bakes(n, s.prefix);
+    const uint32_t mips = mip_levels(s.resolution, s.height_resolution, s.filtering);
     g.images.push_back({.name = names.albedo, .format = VK_FORMAT_R32G32B32A32_SFLOAT, .extent = extent,
-                        .layers = 2 * n, .persistent = true});
+                        .layers = 2 * n, .mips = mips, .persistent = true});
     g.images.push_back({.name = names.normal, .format = VK_FORMAT_R16G16B16A16_SFLOAT, .extent = extent,
-                        .layers = 2 * n, .persistent = true});
+                        .layers = 2 * n, .mips = mips, .persistent = true});
+    g.images.push_back({.name = names.blades, .format = VK_FORMAT_R32G32B32A32_SFLOAT, .extent = extent,
+                        .layers = 2 * n, .mips = mips, .persistent = true});
     g.images.push_back({.name = names.bake_depth, .format = VK_FORMAT_D32_SFLOAT, .extent = extent});
     g.buffers.push_back({.name = names.cuboid, .bytes = sizeof(QuadVertex) * kCuboidVertices, .usage = kVertexBuffer,
                          .persistent = true});
@@ -142,14 +147,17 @@ void declare_volume_bake(FrameGraph& g, const VolumeSettings& s) {
                    .phase = Phase::load};
         p.push_constant_bytes = sizeof(DrawConstants);
         p.uses = {use(graph_names::kFrameUniforms, Use::uniform, 0), use(b.camera, Use::uniform, 1),
-                  cleared(names.albedo, Use::color_attachment, {0.0f, 0.0f, 0.0f, shader::PATCH_BAKE_EMPTY}, true,
-                          b.layer),
+                  cleared(names.albedo, Use::color_attachment, {0.0f, 0.0f, 0.0f, 0.0f}, true, b.layer),
                   cleared(names.normal, Use::color_attachment, {0.0f, 1.0f, 0.0f, 0.0f}, true, b.layer),
+                  cleared(names.blades, Use::color_attachment, kBladeMapEmpty, true, b.layer),
                   cleared(names.bake_depth, Use::depth_attachment, kFarDepth, false)};
         p.settings = fmt::format("layer={}{}", b.layer, tiled ? " tiled" : "");
         p.record = [bake, tiled](PassContext& pc) { record_prototype_bake(pc, bake, tiled); };
         g.passes.push_back(std::move(p));
     }
+    declare_mip_passes(g, {.colour = names.albedo, .blades = names.blades, .companion = names.normal, .width = s.resolution,
+                           .height = s.height_resolution, .layers = 2 * n, .filtering = s.filtering,
+                           .pass_prefix = s.prefix + "slices_"});
 }
 
 PassDecl volume_frame_pass(const VolumeSettings& s, const RasterState& per_cell, bool ground,
@@ -159,8 +167,9 @@ PassDecl volume_frame_pass(const VolumeSettings& s, const RasterState& per_cell,
     const uint32_t macro = s.macro_cells;
     PassDecl frame{.name = s.prefix + "volumes", .kind = PassKind::raster};
     frame.push_constant_bytes = sizeof(DrawConstants);
-    frame.uses = {use(graph_names::kFrameUniforms, Use::uniform, 0), use(names.albedo, Use::sampled, 1),
-                  use(names.normal, Use::sampled, 2), use(names.cuboid, Use::vertex)};
+    frame.uses = {use(graph_names::kFrameUniforms, Use::uniform, 0), sampled_slices(names.albedo, 1, s.filtering),
+                  sampled_slices(names.normal, 2, s.filtering), sampled_slices(names.blades, 8, s.filtering),
+                  use(names.cuboid, Use::vertex)};
     frame.uses.insert(frame.uses.end(), attachments.begin(), attachments.end());
     const std::optional<RasterState> objects = ground ? std::optional<RasterState>(ground_state()) : std::nullopt;
     if (s.selected_by) {

@@ -7,6 +7,7 @@
 #include "graph/raster_state.hpp"
 
 #include "../common/macro_passes.hpp"
+#include "../common/mip_passes.hpp"
 #include "../common/quadtree_passes.hpp"
 
 #include <cstdint>
@@ -34,6 +35,7 @@ struct VolumeSettings {
     // its ground's height range, each hit's lookup shifted by the ground under it; never split
     // (macro_passes.hpp). The setup and the frame pass share its count.
     MacroTerrain macro_terrain{.height_ranges = true};
+    SliceFiltering filtering;         // how the slices are filtered when drawn
 };
 
 // The vertices the frame pass draws per cell: a cuboid's 12 triangles.

@@ -4,9 +4,11 @@
 #extension GL_GOOGLE_include_directive : require
 #include "blade_alpha.h"
 #include "blade_curve.h"
+#include "blade_texels.h"
 #include "cell_mirroring.h"
 #include "grass_density.h"
 #include "lod_selection.h"
+#include "mip_filters.h"
 #include "patch_bake.h"
 #include "volume_walk.h"
 

@@ -67,9 +67,9 @@ std::vector<TexelTruth> traced_bake_over(const Scene& scene, const Bounds& b, Vi
     return truth;
 }
 
-BakeAgreement compare_bake(const Image& baked, const std::vector<TexelTruth>& truth, bool flip_u) {
+BakeAgreement compare_bake(const Image& colour, const Image& blades, const std::vector<TexelTruth>& truth, bool flip_u) {
     BakeAgreement a;
-    const int width = baked.width, height = baked.height;
+    const int width = colour.width, height = colour.height;
     const auto at = [&](int i, int j) -> const TexelTruth& { return truth[size_t(j) * size_t(width) + size_t(i)]; };
     for (int j = 1; j + 1 < height; ++j)
         for (int i = 1; i + 1 < width; ++i) {
@@ -78,11 +78,13 @@ BakeAgreement compare_bake(const Image& baked, const std::vector<TexelTruth>& tr
                 for (int di = -1; di <= 1; ++di) edge = edge || at(i + di, j + dj).blade != at(i, j).blade;
             if (edge) continue;
             ++a.compared;
-            const float texel = baked.at(flip_u ? width - 1 - i : i, j)[3];
+            const int u = flip_u ? width - 1 - i : i;
+            const bool shown = colour.at(u, j)[3] > 0.5f;
+            const float threshold = blades.at(u, j)[0];
             const bool covered = at(i, j).blade >= 0;
             a.covered += covered;
-            a.coverage += (texel <= 1.0f) != covered;
-            a.threshold += covered && texel <= 1.0f && texel != at(i, j).threshold;
+            a.coverage += shown != covered;
+            a.threshold += covered && shown && (threshold != at(i, j).threshold || blades.at(u, j)[1] != threshold);
         }
     return a;
 }

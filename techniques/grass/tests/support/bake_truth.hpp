@@ -58,8 +58,11 @@ struct BakeAgreement {
     int threshold = 0;  // where both show one but the bake's threshold is not the blade's
 };
 
-// `baked`'s alpha channel against the rays; `flip_u` reads the bake mirrored (to show the check can fail).
-BakeAgreement compare_bake(const Image& baked, const std::vector<TexelTruth>& truth, bool flip_u = false);
+// A bake's level 0 against the rays (shaders/blade_texels.h): a blade where its colour's alpha is
+// above 0.5, its threshold range the blade's one threshold; `flip_u` reads the bake mirrored (to
+// show the check can fail).
+BakeAgreement compare_bake(const Image& colour, const Image& blades, const std::vector<TexelTruth>& truth,
+                           bool flip_u = false);
 
 // Pixels showing grass (green above twice the red: the grounds and backgrounds of the grass
 // tests are brown or black).
