@@ -7,6 +7,7 @@
 
 #include "core/error.hpp"
 #include "core/registry.hpp"
+#include "metrics/coverage_error.hpp"
 #include "render/frame_renderer.hpp"
 #include "run/family_benchmark.hpp"
 #include "scene/geometry.hpp"
@@ -52,6 +53,48 @@ std::vector<grass::RgbaLevel> baked_slices(const GpuContext& gpu, const Scene& s
     return slices;
 }
 
+// One way a representation is baked and filtered (shaders/slice_filtering_params.h).
+struct FilterSetting {
+    std::string label;
+    std::map<std::string, ParamValue> params;
+};
+
+std::vector<FilterSetting> filter_settings() {
+    const auto setting = [](const char* filter, long long supersampling, bool anisotropic) {
+        return std::map<std::string, ParamValue>{{"mip_filter", std::string(filter)},
+                                                 {"bake_supersampling", supersampling},
+                                                 {"mip_anisotropic", anisotropic}};
+    };
+    return {{"level 0, NEAREST (before issue 37)", setting("none", 1, false)},
+            {"box", setting("box", 2, false)},
+            {"max-alpha (Boulanger)", setting("max_alpha", 2, false)},
+            {"coverage-preserving (Lemme)", setting("coverage", 2, false)},
+            {"coverage-preserving, anisotropic", setting("coverage", 2, true)}};
+}
+
+// The scene seen from `elevation` degrees above its ground at `distance` from its camera's target,
+// from the side its camera looks from.
+Scene seen_from(const Scene& scene, float elevation, float distance) {
+    Scene s = scene;
+    glm::vec3 across = scene.camera.position - scene.camera.target;
+    across.y = 0.0f;
+    across = glm::length(across) > 1e-6f ? glm::normalize(across) : glm::vec3(0.0f, 0.0f, 1.0f);
+    const float e = glm::radians(elevation);
+    s.camera.position = scene.camera.target + distance * (std::cos(e) * across + glm::vec3(0.0f, std::sin(e), 0.0f));
+    s.camera.up = glm::vec3(0.0f, 1.0f, 0.0f);
+    return s;
+}
+
+// The pixels' coverage (pixel visibility's) of `technique` drawing `scene`.
+Image coverage_of(const GpuContext& gpu, const Scene& scene, const std::vector<TriangleMesh>& meshes, const std::string& technique,
+                  const std::map<std::string, ParamValue>& params, uint32_t width, uint32_t height) {
+    const Technique* t = TechniqueRegistry::instance().find(technique);
+    FrameRenderer renderer(gpu, scene, meshes, width, height,
+                           t->graph(ParamSet::resolve(t->params(), params, {}, {}, technique)));
+    renderer.render();
+    return renderer.read_pixel_visibility();
+}
+
 struct LevelCoverage {
     uint32_t width = 0, height = 0;
     double coverage = 0;    // eq 4.11 at a_r, over every slice's texels together
@@ -95,8 +138,16 @@ public:
                                    "each level-0 texel resolved from s x s baked texels (1, 2, 4 or 8; 1: a blade or "
                                    "none per texel; 4 at the defaults bakes Table 7.1's 1024^2 and 1024 x 128)"),
                 ParamSpec::real("alpha_reference", 0.5, 0.01, 0.99,
-                                "a_r, the alpha test's reference (Lemme: 'a high alpha reference value', not given)")};
+                                "a_r, the alpha test's reference (Lemme: 'a high alpha reference value', not given)"),
+                ParamSpec::integer("view_width", 320, 0, 1920,
+                                   "the per-view comparison with the blades: image width (height 9/16 of it); 0 skips it")};
     }
+
+private:
+    void views_against_blades(const GpuContext& gpu, const Scene& scene, const ParamSet& params,
+                              FamilyBenchmarkResult& result) const;
+
+public:
 
     FamilyBenchmarkResult run(const GpuContext& gpu, const Scene& scene, const ParamSet& params) const override {
         const float a_r = float(params.real("alpha_reference"));
@@ -176,9 +227,68 @@ public:
             result.numbers[source.label] = {{"base_coverage", base}, {"levels", levels}};
         }
         result.numbers["alpha_reference"] = a_r;
+        if (params.integer("view_width") > 0) views_against_blades(gpu, scene, params, result);
         return result;
     }
 };
+
+// The filters judged by what the blades show (issue 37): each representation drawn as its
+// technique draws it, under each filter, at each elevation, its pixels' coverage against
+// grass.geometry's (one sample a pixel, alpha-tested: an unbiased estimate of the blades'
+// coverage, test_grass_coverage) at the same view; tile MAE over 8 x 8 tiles and bias (the
+// share of the blades' coverage gained or lost).
+void MipCoverage::views_against_blades(const GpuContext& gpu, const Scene& scene, const ParamSet& params,
+                                       FamilyBenchmarkResult& result) const {
+    const uint32_t width = uint32_t(params.integer("view_width")), height = (width * 9 + 8) / 16;
+    const float distance = glm::length(scene.camera.position - scene.camera.target);
+    const std::vector<float> elevations{5.0f, 15.0f, 30.0f, 55.0f, 80.0f};
+    const std::vector<TriangleMesh> meshes = build_scene_meshes(scene);
+    const long long n = params.integer("slices");
+    const std::vector<std::pair<std::string, std::map<std::string, ParamValue>>> techniques{
+        {"grass.image", {{"resolution", params.integer("resolution")}}},
+        {"grass.volume", {{"slices", n}, {"resolution", params.integer("slice_resolution")},
+                          {"height_resolution", params.integer("height_resolution")}}},
+        {"grass.slices", {{"slices", n}, {"resolution", params.integer("slice_resolution")},
+                          {"height_resolution", params.integer("height_resolution")}}},
+        {"grass.billboard", {{"resolution", params.integer("resolution")}}}};
+    std::vector<Image> blades;
+    for (float e : elevations)
+        blades.push_back(coverage_of(gpu, seen_from(scene, e, distance), meshes, "grass.geometry",
+                                     {{"samples", 1LL}, {"coverage", std::string("alpha_test")}}, width, height));
+    result.markdown += fmt::format(
+        "\n# Against the blades, from grazing to top-down\n\nEach representation as its technique draws it, baked "
+        "and filtered as the row says (2x supersampled bakes but the first row; trilinear lookups but the last; "
+        "alpha-tested at 0.5), its pixels' coverage against grass.geometry's (one sample a pixel, alpha-tested: "
+        "an unbiased estimate of the blades' coverage) at the same view: {} x {} pixels, the scene's target seen "
+        "from {:.1f} m at each elevation. Each cell: bias (the share of the blades' coverage gained or lost), "
+        "then the tile MAE over 8 x 8 tiles.\n",
+        width, height, distance);
+    nlohmann::json views = nlohmann::json::object();
+    for (const auto& [technique, base] : techniques) {
+        result.markdown += fmt::format("\n## {}\n\n| filter |", technique);
+        for (float e : elevations) result.markdown += fmt::format(" {:.0f}° |", e);
+        result.markdown += "\n|---|";
+        for (size_t i = 0; i < elevations.size(); ++i) result.markdown += "---:|";
+        result.markdown += "\n";
+        for (const FilterSetting& setting : filter_settings()) {
+            std::map<std::string, ParamValue> values = base;
+            values.insert(setting.params.begin(), setting.params.end());
+            std::string row = "| " + setting.label + " |";
+            nlohmann::json cells = nlohmann::json::array();
+            for (size_t i = 0; i < elevations.size(); ++i) {
+                const CoverageError err = compute_coverage_error(
+                    coverage_of(gpu, seen_from(scene, elevations[i], distance), meshes, technique, values, width, height),
+                    blades[i]);
+                row += fmt::format(" {:+.2f} ({:.3f}) |", err.bias, err.tile_mae);
+                cells.push_back({{"elevation", elevations[i]}, {"bias", err.bias}, {"tile_mae", err.tile_mae},
+                                 {"pixels", err.pixels}});
+            }
+            result.markdown += row + "\n";
+            views[technique][setting.label] = cells;
+        }
+    }
+    result.numbers["views_against_blades"] = views;
+}
 
 RegisterFamilyBenchmark<MipCoverage> registered;
 
