@@ -76,6 +76,19 @@ ResourceUse at_mip(const std::string& image, Use how, int binding, uint32_t mip)
 
 uint32_t groups(uint32_t texels) { return std::max(1u, (texels + 7) / 8); }
 
+// A pass's uses of the colour, blade map and (where there is one) companion, as grass_mip_*.glsl
+// bind them: each at level `from` (bindings 1, 5, 3) used as `first`, and at level `to` (bindings
+// 2, 6, 4) used as `second`.
+void use_chain_levels(PassDecl& pass, const SliceMipChain& c, uint32_t from, Use first, uint32_t to, Use second) {
+    const bool companion = !c.companion.empty();
+    pass.uses = {at_mip(c.colour, first, 1, from), at_mip(c.colour, second, 2, to), at_mip(c.blades, first, 5, from),
+                 at_mip(c.blades, second, 6, to)};
+    if (companion) {
+        pass.uses.push_back(at_mip(c.companion, first, 3, from));
+        pass.uses.push_back(at_mip(c.companion, second, 4, to));
+    }
+}
+
 int filter_code(MipFilter f) { return f == MipFilter::box ? 0 : f == MipFilter::max_alpha ? 1 : 2; }
 constexpr int kResolve = 3;  // grass_mip_reduce.glsl's filter 3
 
@@ -92,12 +105,7 @@ void declare_mip_passes(FrameGraph& g, const SliceMipChain& c) {
         const bool resolving = l <= resolved;
         const int code = resolving ? kResolve : filter_code(*f.filter);
         PassDecl reduce{.name = fmt::format("{}mip_{}", c.pass_prefix, l), .kind = PassKind::compute, .phase = Phase::load};
-        reduce.uses = {at_mip(c.colour, Use::storage_read, 1, l - 1), at_mip(c.colour, Use::storage_write, 2, l),
-                       at_mip(c.blades, Use::storage_read, 5, l - 1), at_mip(c.blades, Use::storage_write, 6, l)};
-        if (companion) {
-            reduce.uses.push_back(at_mip(c.companion, Use::storage_read, 3, l - 1));
-            reduce.uses.push_back(at_mip(c.companion, Use::storage_write, 4, l));
-        }
+        use_chain_levels(reduce, c, l - 1, Use::storage_read, l, Use::storage_write);
         reduce.push_constant_bytes = sizeof(glm::ivec4);
         reduce.settings = fmt::format("{} x {} x {} from the level above, {}", size(l).x, size(l).y, c.layers,
                                       resolving ? "resolving the supersampled bake" : to_string(*f.filter));
@@ -124,12 +132,7 @@ void declare_mip_passes(FrameGraph& g, const SliceMipChain& c) {
     for (uint32_t l = levels - 1; l-- > resolved;) {
         PassDecl bleed{.name = fmt::format("{}mip_{}_bleed", c.pass_prefix, l), .kind = PassKind::compute,
                        .phase = Phase::load};
-        bleed.uses = {at_mip(c.colour, Use::storage_write, 1, l), at_mip(c.colour, Use::storage_read, 2, l + 1),
-                      at_mip(c.blades, Use::storage_write, 5, l), at_mip(c.blades, Use::storage_read, 6, l + 1)};
-        if (companion) {
-            bleed.uses.push_back(at_mip(c.companion, Use::storage_write, 3, l));
-            bleed.uses.push_back(at_mip(c.companion, Use::storage_read, 4, l + 1));
-        }
+        use_chain_levels(bleed, c, l, Use::storage_write, l + 1, Use::storage_read);
         bleed.push_constant_bytes = sizeof(glm::ivec4);
         bleed.settings = f.bleed ? "colour, companion and blade map from the level below"
                                  : "blade map from the level below (mip_bleed = false)";

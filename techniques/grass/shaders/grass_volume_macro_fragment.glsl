@@ -18,6 +18,7 @@
 #include "grass_macro_cells.h"
 #include "grass_shading.glsl"
 #include "grass_slice_coverage.glsl"
+#include "volume_gather.glsl"
 #include "grass_lod_band.glsl"
 #include "volume_walk.h"
 #ifndef GRASS_VOLUME_SLICES
@@ -63,9 +64,7 @@ void main() {
     vec3 e = eye_q + volume_entry(eye_q, to_exit) * to_exit;  // eq 5.4
     vec3 d = exit_q - e;
     VolumeWalk walk = volume_walk(e, d, planes);
-    vec3 color = vec3(0.0);
-    float alpha = 0.0;
-    vec3 first_blade = vec3(0.0);
+    VolumeGather gathered = volume_gather_start();
     ivec2 crossed = ivec2(0);
     int steps = int(planes.x + planes.y) + 1;
     for (int i = 0; i < steps; ++i) {
@@ -106,17 +105,7 @@ void main() {
         if (!(hit_alpha > 0.0)) continue;
         vec3 normal = grass_mirror_vector(grass_slice_normal(textureGrad(slice_normal, texel, gx, gy).xyz), s);
         vec3 radiance = grass_lit_output(albedo.rgb, world, normal, 1.0, field.patch_top.y).rgb;
-        // The depth is where the gathered opacity passes a_r (the first hit where it never does): a
-        // filtered texel's faint edge in front of a blade does not move it.
-        if (alpha == 0.0 || (alpha <= GRASS_ALPHA_REFERENCE && alpha + (1.0 - alpha) * hit_alpha > GRASS_ALPHA_REFERENCE))
-            first_blade = world;
-        color += (1.0 - alpha) * hit_alpha * radiance;  // eq 5.19
-        alpha += (1.0 - alpha) * hit_alpha;             // eq 5.20
-        if (alpha >= 0.999) break;                      // "sufficient opacity"
+        if (volume_gather_add(gathered, radiance, hit_alpha, world)) break;
     }
-    if (!(alpha > 0.0)) discard;
-    float coverage = grass_slice_coverage(alpha);
-    vec4 clip = frame.view_proj * vec4(first_blade, 1.0);
-    gl_FragDepth = clip.z / clip.w;
-    out_color = vec4(color / alpha, coverage);
+    out_color = volume_gather_output(gathered);
 }

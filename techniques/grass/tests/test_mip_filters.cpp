@@ -217,13 +217,31 @@ TEST_CASE("mip filters: `canopy bench mip-coverage` measures the slices the tech
     const Scene scene = grass::test::one_cell_scene("[camera]\nposition = [0.5, 1, 2.5]\ntarget = [0.5, 0, 0.5]", "density = 1.0");
     const ParamSet params = ParamSet::resolve(bench->params(),
                                               {{"resolution", 32LL}, {"slices", 2LL}, {"slice_resolution", 32LL},
-                                               {"height_resolution", 8LL}, {"supersampling", 2LL}},
+                                               {"height_resolution", 8LL}, {"supersampling", 2LL}, {"view_width", 64LL}},
                                               {}, {}, "bench");
     const FamilyBenchmarkResult result = bench->run(test::gpu(), scene, params);
     CHECK(result.markdown.find("coverage-preserving") != std::string::npos);
     int sources = 0;
     for (const auto& [label, source] : result.numbers.items()) {
         if (label == "alpha_reference") continue;
+        if (label == "views_against_blades") {
+            // Every representation under every filter at every elevation, against the blades.
+            REQUIRE(source.size() == 4);
+            for (const auto& [technique, settings] : source.items()) {
+                CAPTURE(technique);
+                CHECK(settings.size() == 5);
+                for (const auto& [setting, cells] : settings.items()) {
+                    CAPTURE(setting);
+                    REQUIRE(cells.size() == 5);
+                    for (const auto& cell : cells) {
+                        CHECK(cell.at("pixels").get<long long>() > 0);
+                        CHECK(std::isfinite(cell.at("bias").get<double>()));
+                        CHECK(cell.at("tile_mae").get<double>() >= 0.0);
+                    }
+                }
+            }
+            continue;
+        }
         ++sources;
         CAPTURE(label);
         const double base = source.at("base_coverage").get<double>();
