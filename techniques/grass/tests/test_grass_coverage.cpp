@@ -15,6 +15,8 @@
 
 #include <doctest/doctest.h>
 
+#include <glm/glm.hpp>
+
 #include <cmath>
 #include <map>
 #include <set>
@@ -156,5 +158,56 @@ TEST_CASE("grass coverage: seen from above, each representation covers what Embr
             compute_coverage_error(blades, reference_coverage(field("density = 0.7, centre_x = 0.1")));
         MESSAGE("moved: tile " << moved.tile_mae << " bias " << moved.bias);
         CHECK(moved.tile_mae > 1.4 * blades_tile_mae);
+    }
+}
+
+TEST_CASE("grass coverage: from far off, at the elevations a far band is seen from, each representation covers as "
+          "the blades do") {
+    // The field from 12 m (a cell about 12 pixels wide at 160 x 120), 15 and 30 degrees up: the
+    // far image's views. Each representation filtered as by default and unfiltered (level 0,
+    // NEAREST), against grass.geometry at one sample a pixel. Measured on lavapipe (bias, tile MAE
+    // at 15 / 30 degrees), bounds about 1.5x that:
+    // - the image, filtered +0.29 (0.10) / +0.48 (0.09), level 0 -0.89 (0.15) / -0.78 (0.08): its
+    //   filter is what keeps the far grass, so it must come nearer the blades than level 0;
+    // - this patch is sparse (120 blades a cell against the theses' 2400), its slices mostly
+    //   empty: max-alpha and Lemme's rescale (which cannot thin a level whose maxima are 1) make
+    //   the volume's and BTF slices' coarse levels far denser than level 0, and compositing or
+    //   stacking them over-covers: the volume +2.36 / +2.82 (level 0 -0.00 / -0.01), the BTF
+    //   slices +3.35 / +5.38 (level 0 +0.06 / +0.09). On the dense L-T7.1 patch the same filters
+    //   add 4-5 % (results/grass/mip-coverage/views-t7.1). Billboards -0.22 / -0.26 (level 0
+    //   -0.12 / -0.23).
+    struct Bound {
+        double filtered_low, filtered_high, level0_abs;
+    };
+    const ParamMap unfiltered{{"mip_filter", std::string("none")}, {"bake_supersampling", 1LL}};
+    const std::map<std::string, Bound> bounds = {{"grass.volume", {1.5, 4.3, 0.03}},
+                                                 {"grass.slices", {2.2, 8.0, 0.14}},
+                                                 {"grass.billboard", {-0.4, -0.14, 0.35}}};
+    for (float elevation : {15.0f, 30.0f}) {
+        CAPTURE(elevation);
+        Scene scene = field();
+        const float e = glm::radians(elevation);
+        scene.camera.position = glm::vec3(0.0f, 12.0f * std::sin(e), 12.0f * std::cos(e));
+        scene.camera.fov_y_degrees = 20.0f;
+        const Image blades = technique_coverage(scene, "grass.geometry", {{"coverage", "alpha_test"}, {"samples", 1LL}});
+        for (const char* name : {"grass.image", "grass.volume", "grass.slices", "grass.billboard"}) {
+            CAPTURE(name);
+            const CoverageError filtered = compute_coverage_error(technique_coverage(scene, name), blades);
+            const CoverageError level0 = compute_coverage_error(technique_coverage(scene, name, unfiltered), blades);
+            CAPTURE(filtered.bias);
+            CAPTURE(filtered.tile_mae);
+            CAPTURE(level0.bias);
+            CHECK(filtered.pixels > 500);
+            if (std::string(name) == "grass.image") {
+                CHECK(std::abs(filtered.bias) < 0.7 * std::abs(level0.bias));
+                CHECK(std::abs(filtered.bias) <= 0.7);
+                CHECK(filtered.tile_mae <= 0.15);
+                continue;
+            }
+            const Bound& b = bounds.at(name);
+            CHECK(filtered.bias >= b.filtered_low);
+            CHECK(filtered.bias <= b.filtered_high);
+            CHECK(std::abs(level0.bias) <= b.level0_abs);
+        }
     }
 }
