@@ -2,7 +2,8 @@
 // moves a little (issue 10, "Popping": "the depth spread of the blades that switch representation
 // between two nearby eyes"). For two eyes `step` apart along the scene camera's line of sight,
 // every blade the field draws is given its representation at each eye by grass.lod's cuts
-// (shaders/lod_selection.h, from its cell's centre distance, as the shaders cut it); the blades
+// (shaders/lod_selection.h, from its root's distance or its cell's centre's, as the shaders cut
+// it under transition_distance); the blades
 // whose representation differs are the ones that can pop, and their distances from the first eye
 // say whether a transition spreads them over a band (Boulanger's density thresholds) or gathers
 // them on a line. No rendering: the selection is the shaders' own header, run on the CPU.
@@ -51,6 +52,8 @@ public:
     std::vector<ParamSpec> params() const override {
         return {ParamSpec::real("step", 0.25, 0.001, 100.0,
                                 "how far the second eye stands behind the first, along the camera's line of sight (m)"),
+                ParamSpec::choice("transition_distance", "blade", {"blade", "cell"},
+                                  "where a blade's band is taken: at its root (grass.lod's default) or its cell's centre"),
                 ParamSpec::real("eye_distance", 4.0, 0.0, 1e5,
                                 "the first eye's distance from the camera's target, along the same line (m)")};
     }
@@ -67,6 +70,7 @@ public:
         const glm::vec3 target = scene.camera.target;
         const glm::vec3 back = glm::normalize(scene.camera.position - target);
         const float step = float(params.real("step"));
+        const bool by_root = params.choice("transition_distance") == "blade";
         const glm::vec3 eye = target + float(params.real("eye_distance")) * back, eye2 = eye + step * back;
         // grass.lod's defaults, and the smooth and sharp bands of configs/experiments/grass/popping.toml.
         const std::vector<Bands> configurations{{"grass.lod's defaults (5-20 m, 50-80 m)", 5, 20, 50, 80},
@@ -77,12 +81,12 @@ public:
             "# grass.lod: the blades that change representation between two eyes {} m apart\n\nScene '{}', its field "
             "of {} x {} cells of {} blades; the first eye {} m from the camera's target along its line of sight, the "
             "second {} m farther. A blade's representation at each eye is grass.lod's cut of its threshold at its "
-            "cell's centre distance (lod_selection.h); depth: the blade's root's distance from the first eye. One row "
+            "{} distance (lod_selection.h); depth: the blade's root's distance from the first eye. One row "
             "per transition: blades to the volume (near/middle), volume to image (middle/far).\n\n"
             "| bands | transition | blades drawn | switching | depth 5 % | median | 95 % | spread (5-95 %) | cells switching |\n"
             "|---|---|---:|---:|---:|---:|---:|---:|---:|\n",
             step, scene.name, spec.field.cells.x, spec.field.cells.y, patch.blades.size(), params.real("eye_distance"),
-            step);
+            step, by_root ? "root's" : "cell's centre");
         nlohmann::json rows = nlohmann::json::array();
         const char* transition_names[2] = {"near/middle", "middle/far"};
         for (const Bands& b : configurations) {
@@ -92,10 +96,11 @@ public:
             uint64_t drawn = 0, other = 0;
             grass::for_each_drawn_blade(spec.field, patch, [&](const grass::FieldBlade& blade) {
                 ++drawn;
-                const glm::vec3 centre = grass::field_point(spec.field, blade.cell, glm::vec3(0.5f, 0.0f, 0.5f));
+                const glm::vec3 at = by_root ? blade.root
+                                             : grass::field_point(spec.field, blade.cell, glm::vec3(0.5f, 0.0f, 0.5f));
                 const float t = patch.blades[blade.blade].threshold;
-                const int a = representation(b, glm::length(centre - eye), t, blade.density);
-                const int c = representation(b, glm::length(centre - eye2), t, blade.density);
+                const int a = representation(b, glm::length(at - eye), t, blade.density);
+                const int c = representation(b, glm::length(at - eye2), t, blade.density);
                 if (a == c) return;
                 // A step back sends a blade to the next band: from the blades (0) or from the volume (1).
                 if (c != a + 1 || a < 0 || a > 1) {

@@ -96,13 +96,14 @@ void declare_quadtree(FrameGraph& g, const std::vector<QuadtreeBandDecl>& bands,
         select.uses.push_back(use(quadtree_draw(band.name), Use::transfer_write));
         if (!draws_copies(band) && band.height_ranges)
             select.uses.push_back(use(quadtree_ranges(band.name), Use::transfer_write));
-        settings += fmt::format("{}{} {}-{} {}{}{}{}", settings.empty() ? "" : "; ", band.name, band.min_distance,
+        settings += fmt::format("{}{} {}-{} {}{}{}{}{}", settings.empty() ? "" : "; ", band.name, band.min_distance,
                                 band.max_distance, draws_copies(band) ? "copies" : fmt::format("macro<={}", band.max_macro),
                                 std::isinf(band.max_unplanarity)
                                     ? ""
                                     : fmt::format(" unplanarity<={} on a terrain", band.max_unplanarity),
                                 band.height_ranges ? " height ranges on a terrain" : "",
-                                band.above_eye ? " above the eye only" : "");
+                                band.above_eye ? " above the eye only" : "",
+                                band.by_blade_root ? " by blade roots" : "");
     }
     select.settings = fmt::format("{}; capacity {} copies, {} macro-cells", settings, capacity.copies, capacity.macros);
     select.run = [bands, capacity](CpuPassContext& cc) {
@@ -121,7 +122,8 @@ void declare_quadtree(FrameGraph& g, const std::vector<QuadtreeBandDecl>& bands,
             std::vector<QuadtreeBand> tests;
             for (const QuadtreeBandDecl& band : bands)
                 tests.push_back({band.min_distance, band.max_distance, draws_copies(band) ? 1u : band.max_macro,
-                                 band.max_unplanarity, band.above_eye});
+                                 band.max_unplanarity, band.above_eye,
+                                 band.by_blade_root ? root_margin_for(field) : 0.0f});
             std::span<const float> grid;
             if (on_terrain) {
                 const std::span<const std::byte> bytes = cc.read(macro_names::kHeights);

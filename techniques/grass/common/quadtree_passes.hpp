@@ -36,6 +36,9 @@ struct QuadtreeBandDecl {
     bool height_ranges = false;
     // Only the nodes whose box reaches above the eye (QuadtreeBand::above_eye: Lemme's hilltops).
     bool above_eye = false;
+    // Its shaders take each blade's band at the blade's root (grass.lod's transition_distance =
+    // "blade"): a node is kept while any root may lie within the band (QuadtreeBand::root_margin).
+    bool by_blade_root = false;
 };
 
 // Names of a band's buffers: "<name>_quadtree_list" (copies or macro-cells),

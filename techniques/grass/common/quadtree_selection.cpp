@@ -87,7 +87,8 @@ private:
             const QuadtreeBand& band = bands_[b];
             if (band.above_eye && !reaches_above_eye) continue;  // discard: no child reaches higher
             const bool unbounded = band.max_distance >= shader::LOD_NO_DISTANCE;
-            const bool none = d.y < band.min_distance - slack || (!unbounded && d.x > band.max_distance + slack);
+            const float reach = slack + band.root_margin;
+            const bool none = d.y < band.min_distance - reach || (!unbounded && d.x > band.max_distance + reach);
             if (none) continue;  // discard
             const bool whole = d.x >= band.min_distance && (unbounded || d.y <= band.max_distance);
             if (level == 0 || (whole && std::max(node.span.x, node.span.y) <= band.max_macro && flat_enough(node, band)))
@@ -130,6 +131,12 @@ uint32_t quadtree_root_level(glm::uvec2 cells) {
     uint32_t level = 0;
     while ((1u << level) < std::max(cells.x, cells.y)) ++level;
     return level;
+}
+
+float root_margin_for(const QuadtreeField& field) {
+    const Bounds& b = field.patch_box;
+    const float lean = std::max({0.0f, -b.min.x, b.max.x - 1.0f, -b.min.z, b.max.z - 1.0f});
+    return field.cell_size * std::sqrt(2.0f) * (0.5f + lean);
 }
 
 glm::vec2 node_centre_distances(const QuadtreeField& field, const QuadtreeNode& node, glm::vec3 eye,

@@ -61,7 +61,16 @@ struct QuadtreeBand {
     // blades over their ground) reaches above the eye, where the grass may stand against the sky;
     // a node whose box tops out at or below the eye is discarded with all its children.
     bool above_eye = false;
+    // The farthest a blade's root may lie from its cell's centre (world units; 0 when the band is
+    // taken at the cell's centre): with transition_distance = "blade" each blade's band follows
+    // its root's distance, so a node is discarded only when every root lies outside the band
+    // (root_margin_for).
+    float root_margin = 0.0f;
 };
+
+// The root_margin of a field whose prototype has `patch_box`: a cell's own blades root inside it,
+// a tiled bake's neighbours' blades as far beyond its edges as blades lean out of a cell.
+float root_margin_for(const QuadtreeField& field);
 
 // A drawn node: its first cell and its span in cells (x, z), as the macro shaders read it.
 struct QuadtreeNode {

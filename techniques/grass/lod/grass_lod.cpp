@@ -181,9 +181,12 @@ public:
             return shader::lod_band_distances(representation, block.geometry_full, block.geometry_none, block.image_start,
                                               block.image_full);
         };
+        // Each blade's band at its root (transition_distance = "blade"), or at its cell's centre.
+        const bool by_blade_root = block.transition_distance == shader::GRASS_LOD_DISTANCE_BLADE;
         const grass::QuadtreeBandDecl near_band{.name = "near",
                                                 .min_distance = band_distances(shader::GRASS_LOD_GEOMETRY).x,
-                                                .max_distance = band_distances(shader::GRASS_LOD_GEOMETRY).y};
+                                                .max_distance = band_distances(shader::GRASS_LOD_GEOMETRY).y,
+                                                .by_blade_root = by_blade_root};
         // The volume's levels (Lemme's 8, 2 and 1 slices): level 1 keeps the names it has alone.
         const int levels = block.volume_levels;
         const shader::vec4 ramps = shader::lod_volume_ramps(levels, block.volume_2_start, block.volume_2_full,
@@ -199,7 +202,8 @@ public:
                                     .max_distance = d.y,
                                     .vertex_count = grass::kVolumeCellVertices,
                                     .max_macro = uint32_t(params.integer("middle_macro_max")),
-                                    .height_ranges = true});
+                                    .height_ranges = true,
+                                    .by_blade_root = by_blade_root});
         }
         const grass::QuadtreeBandDecl& middle_band = middle_bands.front();
         const grass::QuadtreeBandDecl far_band{.name = "far",
@@ -207,7 +211,8 @@ public:
                                                .max_distance = band_distances(shader::GRASS_LOD_IMAGE).y,
                                                .vertex_count = grass::kImageCellVertices,
                                                .max_macro = uint32_t(params.integer("far_macro_max")),
-                                               .max_unplanarity = float(params.real("macro_unplanarity"))};
+                                               .max_unplanarity = float(params.real("macro_unplanarity")),
+                                               .by_blade_root = by_blade_root};
         // Lemme's hilltops (§6.4.6): the far band's cells again, those whose box reaches above the
         // eye, drawn by the volume in its own macro-cells.
         const bool hilltop = quadtree && params.boolean("hilltop_volume");
@@ -217,7 +222,8 @@ public:
                                                    .vertex_count = grass::kVolumeCellVertices,
                                                    .max_macro = middle_band.max_macro,
                                                    .height_ranges = true,
-                                                   .above_eye = true};
+                                                   .above_eye = true,
+                                                   .by_blade_root = by_blade_root};
         std::vector<grass::VolumeSettings> volumes;
         const uint32_t level_slices[3] = {uint32_t(block.slices), uint32_t(params.integer("slices_2")),
                                           uint32_t(params.integer("slices_3"))};

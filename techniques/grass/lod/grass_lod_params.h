@@ -17,6 +17,8 @@
            "distance from which the image takes blades over from the volume (minBTF; Lemme's level 2 begins at 50 m)") \
     SHADER(real, image_full, (80.0, 0.0, 1e6),                                                               \
            "distance from which a cell is all image (maxBTF; Lemme's 8-slice level 1 ends at 80 m)")       \
+    SHADER(choice, transition_distance, ("blade", {"blade", "cell"}),                                          \
+           "the distance a blade's band is taken at: blade, its root's (both theses: Boulanger Algorithm 4, L1210; Lemme L621; a filtered texel's blades' mean root); cell, the cell's centre's (canopy before issue 37: the split steps once per cell)") \
     SHADER(integer, volume_levels, (1, 1, 3),                                                                \
            "the middle band's volume levels, each its own bake and pass, handing its blades to the next over a ramp as the bands do: 1 (canopy's default, one volume of `slices`) to 3 (Lemme's football field, L930-935: 8, 2 and 1 slices); middle = volume only") \
     SHADER(real, volume_2_start, (50.0, 0.0, 1e6),                                                           \
@@ -59,6 +61,8 @@
     GRASS_SLICE_FILTERING_PARAMS(PLAN, "coverage")
 
 CANOPY_BEGIN_NAMESPACE
+CANOPY_CONST int GRASS_LOD_DISTANCE_BLADE = 0;
+CANOPY_CONST int GRASS_LOD_DISTANCE_CELL = 1;
 CANOPY_PARAM_BLOCK(GrassLodParams, GRASS_LOD_PARAMS)
 CANOPY_END_NAMESPACE
 

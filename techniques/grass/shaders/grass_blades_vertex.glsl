@@ -36,6 +36,6 @@ void main() {
     strip_uv = blade_strip.xy;
     colour = blade_strip.w;
     taper = blade_root.z;
-    bool drawn = grass_blade_in_band(blade_strip.z, density, grass_representation_band(instance_model));
+    bool drawn = grass_blade_in_band(blade_strip.z, density, grass_blade_band(instance_model, blade_root.xy));
     gl_Position = drawn ? frame.view_proj * world : vec4(2.0, 2.0, 2.0, 1.0);
 }

@@ -8,6 +8,7 @@
 #include "grass_density.h"
 #include "grass_shading.glsl"
 #include "grass_slice_coverage.glsl"
+#include "grass_lod_band.glsl"
 
 layout(set = 0, binding = 1) uniform sampler2DArray slice_albedo;  // trilinear, or NEAREST (mip_filter = "none")
 layout(set = 0, binding = 2) uniform sampler2DArray slice_normal;  // the same
@@ -18,12 +19,13 @@ layout(location = 1) in vec2 uv;
 layout(location = 2) in vec2 patch_xz;
 layout(location = 3) flat in vec4 densities;
 layout(location = 4) flat in vec3 normal_matrix[3];
-layout(location = 7) flat in vec2 band;  // grass_lod_band.glsl
+layout(location = 7) flat in mat4 model;  // locations 7-10: where a blade's root is (grass_lod_band.glsl)
 layout(location = 0) out vec4 out_color;
 
 void main() {
     vec4 albedo = texture(slice_albedo, vec3(uv, 0.0));
-    float alpha = grass_slice_coverage(grass_slice_alpha(albedo, texture(slice_blades, vec3(uv, 0.0)), densities, band));
+    vec4 blades = texture(slice_blades, vec3(uv, 0.0));
+    float alpha = grass_slice_coverage(grass_slice_alpha(albedo, blades, densities, grass_blade_band(model, blades.zw)));
     vec3 n = mat3(normal_matrix[0], normal_matrix[1], normal_matrix[2]) * grass_slice_normal(texture(slice_normal, vec3(uv, 0.0)).xyz);
     out_color = grass_lit_output(albedo.rgb, world_position, n, alpha, draw.albedo.w);
 }

@@ -38,11 +38,13 @@ void main() {
     vec2 dx = dFdx(field_uv) * c.signs.xy, dy = dFdy(field_uv) * c.signs.xy;
     vec4 albedo = textureGrad(slice_albedo, vec3(p, 0.0), dx, dy);
 #ifdef GRASS_MACRO_TERRAIN
-    vec2 band = grass_macro_cell_band(field, cell, grid_height(cell));
+    float ground = grid_height(cell);
 #else
-    vec2 band = grass_macro_cell_band(field, cell, 0.0);
+    float ground = 0.0;
 #endif
-    float alpha = grass_slice_coverage(grass_slice_alpha(albedo, textureGrad(slice_blades, vec3(p, 0.0), dx, dy), c.densities, band));
+    vec4 blades = textureGrad(slice_blades, vec3(p, 0.0), dx, dy);
+    vec2 band = grass_macro_blade_band(field, cell, c.signs.xy, ground, blades.zw);
+    float alpha = grass_slice_coverage(grass_slice_alpha(albedo, blades, c.densities, band));
     vec3 n = grass_mirror_vector(grass_slice_normal(textureGrad(slice_normal, vec3(p, 0.0), dx, dy).xyz), c.signs.xy);
     out_color = grass_lit_output(albedo.rgb, world_position, n, alpha, field.patch_top.y);
 }

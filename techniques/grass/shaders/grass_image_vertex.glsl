@@ -16,7 +16,7 @@ layout(location = 1) out vec2 uv;
 layout(location = 2) out vec2 patch_xz;
 layout(location = 3) flat out vec4 densities;
 layout(location = 4) flat out vec3 normal_matrix[3];  // locations 4-6
-layout(location = 7) flat out vec2 band;              // grass_lod_band.glsl
+layout(location = 7) flat out mat4 model;             // locations 7-10: where a blade's root is (grass_lod_band.glsl)
 
 void main() {
     // On a terrain (Lemme L902) the quad's corners are lifted onto the ground under them, and its
@@ -38,7 +38,7 @@ void main() {
     uv = corner;
     patch_xz = position.xz;
     densities = corner_densities;
-    band = grass_representation_band(instance_model);
+    model = instance_model;
     for (int c = 0; c < 3; ++c) normal_matrix[c] = instance_normal_matrix[c].xyz;
     gl_Position = frame.view_proj * world;
 }

@@ -1,10 +1,13 @@
-// The share of a cell's blades a representation's shader draws (lod_band, lod_selection.h): all
-// of them (0, 1] when compiled alone; inside grass.lod, whose shaders define
+// The share of a blade's thresholds a representation's shader draws (lod_band, lod_selection.h):
+// all of them (0, 1] when compiled alone; inside grass.lod, whose shaders define
 // GRASS_LOD_REPRESENTATION before including their representation's body, the band of that
-// representation at the cell's distance. The distance is the eye's to the cell's centre (patch
-// point (0.5, 0, 0.5), which mirroring keeps), computed per copy alike in every representation's
-// vertex stage, so the three agree on the cuts of every cell. Needs frame_uniforms.glsl and, in
-// grass.lod, GrassLodParams as the technique's block.
+// representation at the blade's distance. With transition_distance = "blade" (the default, both
+// theses) the distance is the eye's to the blade's root on its copy's ground (patch point
+// (root.x, 0, root.z) placed as the copy is): the blades read their root attribute, the
+// image-based representations the root their blade map holds (a filtered texel's blades' mean);
+// with "cell", to the cell's centre (patch point (0.5, 0, 0.5), which mirroring keeps). Every
+// representation places the point alike, so they agree on the cut of every blade. Needs
+// frame_uniforms.glsl and, in grass.lod, GrassLodParams as the technique's block.
 //
 // grass.lod's volume shaders define GRASS_LOD_VOLUME_LEVELS: one pass per volume level (Lemme's
 // 8, 2 and 1 slices), each with its level and slice count in a uniform at binding 7
@@ -39,14 +42,27 @@ vec2 grass_representation_band_at(vec3 centre) {
 #endif
 }
 
-// The band of the copy placed by `model`.
-vec2 grass_representation_band(mat4 model) { return grass_representation_band_at((model * vec4(0.5, 0.0, 0.5, 1.0)).xyz); }
+// The patch point whose distance decides a blade's band: its root (x, z), or the cell's centre.
+vec2 grass_band_point(vec2 root) {
+#ifdef GRASS_LOD_REPRESENTATION
+    if (frame.technique.transition_distance == GRASS_LOD_DISTANCE_CELL) return vec2(0.5);
+#endif
+    return root;
+}
 
-// The band of field cell `cell` of the macro-cells' field (grass_macro_cells.h): its centre is
-// the same point, computed from the field's placement instead of a copy's matrix. `ground`: the
-// height of the cell's first grid vertex above the field's origin, to which a copy's model lifts
+// The band of a blade rooted at patch point `root` of the copy placed by `model`.
+vec2 grass_blade_band(mat4 model, vec2 root) {
+    vec2 p = grass_band_point(root);
+    return grass_representation_band_at((model * vec4(p.x, 0.0, p.y, 1.0)).xyz);
+}
+
+// The same for a blade of field cell `cell` of the macro-cells' field (grass_macro_cells.h),
+// placed from the field instead of a copy's matrix: the cell mirrored by its signs `s`, lifted by
+// `ground`, the height of its first grid vertex above the field's origin, as a copy's model lifts
 // the cell on a terrain (grass_terrain.h); 0 on flat ground.
-vec2 grass_macro_cell_band(GrassMacroField field, ivec2 cell, float ground) {
+vec2 grass_macro_blade_band(GrassMacroField field, ivec2 cell, vec2 s, float ground, vec2 root) {
+    vec2 p = grass_band_point(root);
+    vec2 placed = vec2(s.x < 0.0 ? 1.0 - p.x : p.x, s.y < 0.0 ? 1.0 - p.y : p.y);
     return grass_representation_band_at(field.origin_size.xyz + vec3(0.0, ground, 0.0) +
-                                         vec3(float(cell.x) + 0.5, 0.0, float(cell.y) + 0.5) * field.origin_size.w);
+                                         vec3(float(cell.x) + placed.x, 0.0, float(cell.y) + placed.y) * field.origin_size.w);
 }

@@ -14,6 +14,7 @@
 #include "btf_interpolation.h"
 #include "bake_shadows.h"
 #include "grass_slice_coverage.glsl"
+#include "grass_lod_band.glsl"
 
 // Trilinear (or NEAREST: mip_filter = "none"); the horizontal slice's are one-layer arrays.
 layout(set = 0, binding = 1) uniform sampler2DArray slices_albedo;
@@ -29,7 +30,7 @@ layout(location = 3) in float weight4;
 layout(location = 4) in vec3 light_irradiance;
 layout(location = 5) flat in vec4 densities;
 layout(location = 6) flat in ivec2 layer;
-layout(location = 7) flat in vec2 band;
+layout(location = 7) flat in mat4 model;  // locations 7-10: where a blade's root is (grass_lod_band.glsl)
 layout(location = 0) out vec4 out_color;
 
 // Read with the footprint taken before the rows' loop (its branches are not uniform control flow).
@@ -49,7 +50,7 @@ void main() {
         albedo = textureGrad(slices_albedo, vec3(uv, float(layer.x)), dx, dy);
         blades = textureGrad(slices_blades, vec3(uv, float(layer.x)), dx, dy);
     }
-    float coverage = grass_slice_coverage(grass_slice_alpha(albedo, blades, densities, band));
+    float coverage = grass_slice_coverage(grass_slice_alpha(albedo, blades, densities, grass_blade_band(model, blades.zw)));
     float density = grass_root_density(densities, blades.zw);
     float sum = weights0123.x + weights0123.y + weights0123.z + weights0123.w + weight4;
     vec3 rows = vec3(0.0);

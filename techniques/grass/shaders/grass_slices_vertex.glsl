@@ -30,7 +30,7 @@ layout(location = 3) out float weight4;
 layout(location = 4) out vec3 light_irradiance;  // on a surface facing the light
 layout(location = 5) flat out vec4 densities;
 layout(location = 6) flat out ivec2 layer;   // x: the albedo layer (-1: the horizontal slice); y: its first lit row
-layout(location = 7) flat out vec2 band;     // grass_lod_band.glsl
+layout(location = 7) flat out mat4 model;    // locations 7-10: where a blade's root is (grass_lod_band.glsl)
 
 void main() {
     int axis = int(quad_uv.z), slice = int(quad_uv.w), n = frame.technique.slices;
@@ -51,7 +51,7 @@ void main() {
     }
     vec4 world = instance_model * position + vec4(0.0, grass_terrain_lift(lifts, position.xz, mirror), 0.0, 0.0);
     densities = corner_densities;
-    band = grass_representation_band(instance_model);
+    model = instance_model;
 
     if (axis == 2) {
         layer = ivec2(-1, 0);

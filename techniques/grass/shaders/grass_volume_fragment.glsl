@@ -18,9 +18,7 @@
 #include "volume_gather.glsl"
 #include "volume_walk.h"
 #include "grass_terrain.h"
-#ifdef GRASS_LOD_VOLUME_LEVELS
-#include "grass_lod_band.glsl"  // the level's uniform and slices
-#endif
+#include "grass_lod_band.glsl"  // a blade's band; in grass.lod's volume levels, the level's uniform and slices
 #ifndef GRASS_VOLUME_SLICES
 #define GRASS_VOLUME_SLICES (frame.technique.slices)
 #endif
@@ -41,7 +39,6 @@ layout(location = 1) flat in vec3 eye_q;
 layout(location = 2) flat in vec4 densities;
 layout(location = 3) flat in mat4 model;
 layout(location = 7) flat in vec3 normal_matrix[3];
-layout(location = 10) flat in vec2 band;  // grass_lod_band.glsl
 layout(location = 11) flat in vec3 lifts;   // grass_terrain.h
 layout(location = 12) flat in vec2 stretch; // the cuboid's bottom and top moved by (grass_volume_vertex.glsl)
 layout(location = 0) out vec4 out_color;
@@ -81,7 +78,8 @@ void main() {
                                              box.extent.y * model[1][1]));
         vec2 gx = g.xy, gy = g.zw;
         vec4 albedo = textureGrad(slice_albedo, texel, gx, gy);
-        float hit_alpha = grass_slice_alpha(albedo, textureGrad(slice_blades, texel, gx, gy), densities, band);
+        vec4 blades = textureGrad(slice_blades, texel, gx, gy);
+        float hit_alpha = grass_slice_alpha(albedo, blades, densities, grass_blade_band(model, blades.zw));
         if (!(hit_alpha > 0.0)) continue;
         vec3 normal = mat3(normal_matrix[0], normal_matrix[1], normal_matrix[2]) *
                       grass_slice_normal(textureGrad(slice_normal, texel, gx, gy).xyz);

@@ -82,9 +82,9 @@ void main() {
 #ifdef GRASS_MACRO_TERRAIN
         texel_height = (heights.x + q.y * heights.y - grid_ground(cell, u)) / (field.patch_top.x * size);
         if (texel_height < 0.0 || texel_height > 1.0) continue;
-        vec2 band = grass_macro_cell_band(field, cell, grid_height(cell));
+        float ground = grid_height(cell);
 #else
-        vec2 band = grass_macro_cell_band(field, cell, 0.0);
+        float ground = 0.0;
 #endif
         vec2 s = c.signs.xy;
         int slice = grass_macro_slice(plane % n, n, hit.axis == 0 ? s.x : s.y);
@@ -101,7 +101,9 @@ void main() {
                                         vec2(size, field.patch_top.x * size));
         vec2 gx = g.xy, gy = g.zw;
         vec4 albedo = textureGrad(slice_albedo, texel, gx, gy);
-        float hit_alpha = grass_slice_alpha(albedo, textureGrad(slice_blades, texel, gx, gy), c.densities, band);
+        vec4 blades = textureGrad(slice_blades, texel, gx, gy);
+        vec2 band = grass_macro_blade_band(field, cell, s, ground, blades.zw);
+        float hit_alpha = grass_slice_alpha(albedo, blades, c.densities, band);
         if (!(hit_alpha > 0.0)) continue;
         vec3 normal = grass_mirror_vector(grass_slice_normal(textureGrad(slice_normal, texel, gx, gy).xyz), s);
         vec3 radiance = grass_lit_output(albedo.rgb, world, normal, 1.0, field.patch_top.y).rgb;

@@ -23,7 +23,6 @@ layout(location = 1) flat out vec3 eye_q;
 layout(location = 2) flat out vec4 densities;
 layout(location = 3) flat out mat4 model;              // locations 3-6
 layout(location = 7) flat out vec3 normal_matrix[3];  // locations 7-9
-layout(location = 10) flat out vec2 band;             // grass_lod_band.glsl
 layout(location = 11) flat out vec3 lifts;            // grass_terrain.h: the cell's other corners over its first
 layout(location = 12) flat out vec2 stretch;          // the cuboid's bottom and top moved by, patch units
 
@@ -40,7 +39,6 @@ void main() {
     exit_q = corner.xyz;
     eye_q = (eye - origin) / extent;
     densities = corner_densities;
-    band = grass_representation_band(instance_model);
     model = instance_model;
     for (int c = 0; c < 3; ++c) normal_matrix[c] = instance_normal_matrix[c].xyz;
     // A face the eye sees from outside is where rays enter: outside the clip volume, so culled.

@@ -2,10 +2,10 @@
 // Algorithm 1; Lemme 2012 §5.4, eq 5.22-5.26): the blades of a cell are split by their density
 // thresholds, the low thresholds going to the farther representation as the camera recedes, so
 // that a transition moves blades one by one instead of swapping the whole cell. GLSL and C++
-// (shared_math.h): grass.lod's shaders run lod_cuts, lod_band and lod_volume_level_band (one cut
-// per cell, at its centre's distance); the weights (eq 4.3-4.5), Algorithm 1 / eq 4.6's window and
-// eq 5.25-5.26's opacities are run by the tests alone until grass.lod draws per-blade transitions
-// (issue 37).
+// (shared_math.h): grass.lod's shaders run lod_cuts, lod_band and lod_volume_level_band (a binary
+// cut per blade, at its root's distance: grass_lod_band.glsl); the weights (eq 4.3-4.5),
+// Algorithm 1 / eq 4.6's window and eq 5.25-5.26's opacities are run by the tests alone until
+// grass.lod draws the smooth transitions (issue 37).
 //
 // Choices where the theses are silent or wrong (techniques/grass/README.md, "Transitions"):
 // - ω_max (Algorithm 1) is not given: canopy takes 0.05, so at most a tenth of the local density

@@ -64,6 +64,7 @@ TEST_CASE("grass.billboard: the bake shows, texel by texel, the blade Embree's o
         CHECK(same.covered > 500);  // the blades fill a good part of the image
         CHECK(same.coverage == 0);
         CHECK(same.threshold == 0);
+        CHECK(same.root == 0);  // the blade map holds each blade's root, where its band is taken
         for (float value : baked.pixels) REQUIRE(std::isfinite(value));
         // The comparison sees a flipped image.
         const grass::test::BakeAgreement flipped = grass::test::compare_bake(baked, blades, truth, true);

@@ -63,6 +63,7 @@ TEST_CASE("grass.image: the top-view bake shows, texel by texel, the blade a ver
     CHECK(same.covered > 300);
     CHECK(same.coverage == 0);
     CHECK(same.threshold == 0);
+    CHECK(same.root == 0);  // the blade map holds each blade's root, where its band is taken
     CHECK(grass::test::compare_bake(albedo, blades, truth, true).coverage > 100);
     // Where a blade is baked, its normal is a unit vector turned to the sky (the side the bake saw).
     int normals = 0;

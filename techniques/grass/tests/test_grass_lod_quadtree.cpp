@@ -152,7 +152,10 @@ TEST_CASE("grass.lod quadtree: a macro-cell's volume and image each draw only th
 
 TEST_CASE("grass.lod quadtree: a field in all three bands covers as the representations do, counting its draws") {
     const Scene scene = lod_field_scene();
+    // Each cell's band at its centre (transition_distance = "cell"), so the counts below are of
+    // cells whose centre lies in each band.
     Values values = quadtree_values(2.0, 2.6, 3.0, 3.4);
+    values["transition_distance"] = std::string("cell");
     auto r = renderer(scene, "grass.lod", values);
     const FrameTiming t = r->render();
     const Image lod = r->read_color();
@@ -176,6 +179,22 @@ TEST_CASE("grass.lod quadtree: a field in all three bands covers as the represen
     }
     CHECK(counter(t, "quadtree_nodes") <= 1 + 4 + 9);
     CHECK(t.uploaded_bytes > 0);
+    // Taken at each blade's root (the default), a band keeps every cell a root of which may lie
+    // in it (QuadtreeBand::root_margin): at least the cells whose centre does. Without the margin
+    // it keeps the same cells, and the blades rooted across a band's edge go missing.
+    {
+        Values by_root = values;
+        by_root["transition_distance"] = std::string("blade");
+        auto rb = renderer(scene, "grass.lod", by_root);
+        const FrameTiming tb = rb->render();
+        int more = 0;
+        for (const char* band : {"near_cells", "middle_cells", "far_cells"}) {
+            CAPTURE(band);
+            CHECK(counter(tb, band) >= counter(t, band));
+            more += counter(tb, band) > counter(t, band);
+        }
+        CHECK(more >= 1);
+    }
 
     const Image blades = render(scene, "grass.geometry", {{"samples", 1LL}, {"coverage", std::string("alpha_test")}});
     const Image image = render(scene, "grass.image", {{"resolution", 128LL}});

@@ -207,6 +207,7 @@ TEST_CASE("grass.slices: each slice side's bake shows the blades of its own sect
             CAPTURE(same.coverage);
             CHECK(same.coverage <= same.compared / 1000);
             CHECK(same.threshold <= same.compared / 1000);
+            CHECK(same.root <= same.compared / 1000);
             covered += same.covered;
             // Seen from behind, the section has the same outline (the blade in front may differ).
             CHECK(grass::test::compare_bake(back, back_blades, truth).coverage <= same.compared / 1000);
@@ -227,6 +228,7 @@ TEST_CASE("grass.slices: each slice side's bake shows the blades of its own sect
     CHECK(same.covered > 300);
     CHECK(same.coverage <= same.compared / 1000);
     CHECK(same.threshold <= same.compared / 1000);
+    CHECK(same.root <= same.compared / 1000);
 }
 
 TEST_CASE("grass.slices: seen from afar along either slice direction and from above, the slices cover what the reference's rays hit") {

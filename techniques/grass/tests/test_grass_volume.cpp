@@ -90,6 +90,7 @@ TEST_CASE("grass.volume: each slice's bake shows the blades of its own section, 
             // ray's hit may fall on either side: a texel or two at most (none seen).
             CHECK(same.coverage <= same.compared / 1000);
             CHECK(same.threshold <= same.compared / 1000);
+            CHECK(same.root <= same.compared / 1000);
             covered += same.covered;
             // The neighbouring section's blades are not this one's.
             if (k + 1 < kSlices) {

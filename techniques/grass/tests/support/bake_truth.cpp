@@ -62,7 +62,9 @@ std::vector<TexelTruth> traced_bake_over(const Scene& scene, const Bounds& b, Vi
             if (view != View::down && along < section.lo) continue;
             const uint32_t blade = (hit->primitive % family.prototype.triangle_count()) / per_blade;
             const uint32_t first_vertex = family.prototype.indices[size_t(blade) * per_blade * 3];
-            truth[size_t(j) * width + i] = {family.vertex_data[first_vertex].data[0].z, int64_t(blade), hit->surface.position};
+            const glm::vec4 root = family.vertex_data[first_vertex].data[1];  // root x, root z, taper
+            truth[size_t(j) * width + i] = {family.vertex_data[first_vertex].data[0].z, int64_t(blade), hit->surface.position,
+                                            glm::vec2(root.x, root.y)};
         }
     return truth;
 }
@@ -85,6 +87,8 @@ BakeAgreement compare_bake(const Image& colour, const Image& blades, const std::
             a.covered += covered;
             a.coverage += shown != covered;
             a.threshold += covered && shown && (threshold != at(i, j).threshold || blades.at(u, j)[1] != threshold);
+            a.root += covered && shown &&
+                      (blades.at(u, j)[2] != at(i, j).root.x || blades.at(u, j)[3] != at(i, j).root.y);
         }
     return a;
 }

@@ -32,6 +32,7 @@ struct TexelTruth {
     float threshold = 2.0f;  // the hit blade's, or the bakes' "empty" (2)
     int64_t blade = -1;      // -1: no blade
     glm::vec3 position{0.0f};  // where the ray meets it
+    glm::vec2 root{0.0f};      // the hit blade's root, patch x and z
 };
 
 // A section of the patch along the axis a bake looks along (x for along_x, z for along_z): what a
@@ -56,6 +57,7 @@ struct BakeAgreement {
     int covered = 0;    // of those, where a ray hits a blade
     int coverage = 0;   // where the bake and the rays disagree on whether a blade is there
     int threshold = 0;  // where both show one but the bake's threshold is not the blade's
+    int root = 0;       // where both show one but the bake's root is not the blade's
 };
 
 // A bake's level 0 against the rays (shaders/blade_texels.h): a blade where its colour's alpha is
