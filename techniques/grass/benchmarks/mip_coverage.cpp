@@ -140,7 +140,9 @@ public:
                 ParamSpec::real("alpha_reference", 0.5, 0.01, 0.99,
                                 "a_r, the alpha test's reference (Lemme: 'a high alpha reference value', not given)"),
                 ParamSpec::integer("view_width", 320, 0, 1920,
-                                   "the per-view comparison with the blades: image width (height 9/16 of it); 0 skips it")};
+                                   "the per-view comparison with the blades: image width (height 9/16 of it); 0 skips it"),
+                ParamSpec::integer("views", 5, 1, 5,
+                                   "the per-view comparison's elevations: the first n of 5, 15, 30, 55 and 80 degrees")};
     }
 
 private:
@@ -241,7 +243,8 @@ void MipCoverage::views_against_blades(const GpuContext& gpu, const Scene& scene
                                        FamilyBenchmarkResult& result) const {
     const uint32_t width = uint32_t(params.integer("view_width")), height = (width * 9 + 8) / 16;
     const float distance = glm::length(scene.camera.position - scene.camera.target);
-    const std::vector<float> elevations{5.0f, 15.0f, 30.0f, 55.0f, 80.0f};
+    std::vector<float> elevations{5.0f, 15.0f, 30.0f, 55.0f, 80.0f};
+    elevations.resize(size_t(params.integer("views")));
     const std::vector<TriangleMesh> meshes = build_scene_meshes(scene);
     const long long n = params.integer("slices");
     const std::vector<std::pair<std::string, std::map<std::string, ParamValue>>> techniques{

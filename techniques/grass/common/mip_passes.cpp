@@ -89,6 +89,14 @@ void use_chain_levels(PassDecl& pass, const SliceMipChain& c, uint32_t from, Use
     }
 }
 
+// A record that pushes `constants` and runs `spirv` over a level of `s` texels and `z` layers.
+auto dispatch_over(glm::ivec4 constants, glm::uvec2 s, uint32_t z, std::span<const uint32_t> spirv) {
+    return [constants, s, z, spirv](PassContext& pc) {
+        pc.push_constants(&constants, sizeof(constants));
+        pc.dispatch(pc.compute_pipeline(spirv), groups(s.x), groups(s.y), z);
+    };
+}
+
 int filter_code(MipFilter f) { return f == MipFilter::box ? 0 : f == MipFilter::max_alpha ? 1 : 2; }
 constexpr int kResolve = 3;  // grass_mip_reduce.glsl's filter 3
 
@@ -109,13 +117,9 @@ void declare_mip_passes(FrameGraph& g, const SliceMipChain& c) {
         reduce.push_constant_bytes = sizeof(glm::ivec4);
         reduce.settings = fmt::format("{} x {} x {} from the level above, {}", size(l).x, size(l).y, c.layers,
                                       resolving ? "resolving the supersampled bake" : to_string(*f.filter));
-        const glm::ivec4 constants(code, int(c.layers), int(per_layer), 0);
-        reduce.record = [constants, s = size(l), z = c.layers * per_layer, companion](PassContext& pc) {
-            pc.push_constants(&constants, sizeof(constants));
-            pc.dispatch(pc.compute_pipeline(companion ? std::span<const uint32_t>(grass_mip_reduce_comp)
-                                                      : std::span<const uint32_t>(grass_mip_reduce_alone_comp)),
-                        groups(s.x), groups(s.y), z);
-        };
+        reduce.record = dispatch_over(glm::ivec4(code, int(c.layers), int(per_layer), 0), size(l), c.layers * per_layer,
+                                      companion ? std::span<const uint32_t>(grass_mip_reduce_comp)
+                                                : std::span<const uint32_t>(grass_mip_reduce_alone_comp));
         g.passes.push_back(std::move(reduce));
         if (resolving || *f.filter != MipFilter::coverage) continue;
         PassDecl rescale{.name = fmt::format("{}mip_{}_coverage", c.pass_prefix, l), .kind = PassKind::compute,
@@ -136,13 +140,10 @@ void declare_mip_passes(FrameGraph& g, const SliceMipChain& c) {
         bleed.push_constant_bytes = sizeof(glm::ivec4);
         bleed.settings = f.bleed ? "colour, companion and blade map from the level below"
                                  : "blade map from the level below (mip_bleed = false)";
-        const glm::ivec4 constants(f.bleed ? 1 : 0, int(c.layers), int(per_layer), 0);
-        bleed.record = [constants, s = size(l), z = c.layers * per_layer, companion](PassContext& pc) {
-            pc.push_constants(&constants, sizeof(constants));
-            pc.dispatch(pc.compute_pipeline(companion ? std::span<const uint32_t>(grass_mip_bleed_comp)
-                                                      : std::span<const uint32_t>(grass_mip_bleed_alone_comp)),
-                        groups(s.x), groups(s.y), z);
-        };
+        bleed.record = dispatch_over(glm::ivec4(f.bleed ? 1 : 0, int(c.layers), int(per_layer), 0), size(l),
+                                     c.layers * per_layer,
+                                     companion ? std::span<const uint32_t>(grass_mip_bleed_comp)
+                                               : std::span<const uint32_t>(grass_mip_bleed_alone_comp));
         g.passes.push_back(std::move(bleed));
     }
 }
