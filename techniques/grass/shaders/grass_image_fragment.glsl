@@ -16,7 +16,6 @@ layout(set = 0, binding = 8) uniform sampler2DArray slice_blades;  // the same (
 
 layout(location = 0) in vec3 world_position;
 layout(location = 1) in vec2 uv;
-layout(location = 2) in vec2 patch_xz;
 layout(location = 3) flat in vec4 densities;
 layout(location = 4) flat in vec3 normal_matrix[3];
 layout(location = 7) flat in mat4 model;  // locations 7-10: where a blade's root is (grass_lod_band.glsl)

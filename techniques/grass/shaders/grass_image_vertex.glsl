@@ -2,7 +2,6 @@
 // little above the ground (Lemme §5.3, L611), placed and mirrored with the cell
 // (PassContext::draw_over_population). Included after the technique's parameter block.
 #include "frame_uniforms.glsl"
-#include "grass_lod_band.glsl"
 #include "grass_terrain.h"
 
 layout(location = 0) in vec4 quad_position;             // patch space
@@ -13,10 +12,9 @@ layout(location = 9) in vec4 corner_densities;           // patch order (grass_d
 
 layout(location = 0) out vec3 world_position;
 layout(location = 1) out vec2 uv;
-layout(location = 2) out vec2 patch_xz;
 layout(location = 3) flat out vec4 densities;
 layout(location = 4) flat out vec3 normal_matrix[3];  // locations 4-6
-layout(location = 7) flat out mat4 model;             // locations 7-10: where a blade's root is (grass_lod_band.glsl)
+layout(location = 7) flat out mat4 model;             // locations 7-10: where a blade's root is (grass_lod_band.glsl, in the fragment stage)
 
 void main() {
     // On a terrain (Lemme L902) the quad's corners are lifted onto the ground under them, and its
@@ -36,7 +34,6 @@ void main() {
                  vec4(0.0, grass_terrain_lift(lifts, position.xz, mirror), 0.0, 0.0);
     world_position = world.xyz;
     uv = corner;
-    patch_xz = position.xz;
     densities = corner_densities;
     model = instance_model;
     for (int c = 0; c < 3; ++c) normal_matrix[c] = instance_normal_matrix[c].xyz;

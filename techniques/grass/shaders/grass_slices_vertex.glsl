@@ -14,7 +14,6 @@
 #include "frame_uniforms.glsl"
 #include "scene_lighting.glsl"
 #include "btf_interpolation.h"
-#include "grass_lod_band.glsl"
 #include "grass_terrain.h"
 
 layout(location = 0) in vec4 quad_position;             // patch space
@@ -30,7 +29,7 @@ layout(location = 3) out float weight4;
 layout(location = 4) out vec3 light_irradiance;  // on a surface facing the light
 layout(location = 5) flat out vec4 densities;
 layout(location = 6) flat out ivec2 layer;   // x: the albedo layer (-1: the horizontal slice); y: its first lit row
-layout(location = 7) flat out mat4 model;    // locations 7-10: where a blade's root is (grass_lod_band.glsl)
+layout(location = 7) flat out mat4 model;    // locations 7-10: where a blade's root is (grass_lod_band.glsl, in the fragment stage)
 
 void main() {
     int axis = int(quad_uv.z), slice = int(quad_uv.w), n = frame.technique.slices;

@@ -7,7 +7,6 @@
 // (volume_entry). Included after the technique's parameter block.
 #include "frame_uniforms.glsl"
 #include "volume_walk.h"
-#include "grass_lod_band.glsl"
 #include "grass_terrain.h"
 
 layout(set = 0, binding = 3, std140) uniform BoxBlock { VolumeBox box; };
