@@ -114,6 +114,26 @@ const std::vector<ParamSpec>& params_specs() {
     return specs;
 }
 
+// The window each cut is crossed over (grass_lod_params.h's `transition`): "thesis" is the
+// middle band's author's, Boulanger's with his BTF slices, Lemme's with his volume.
+int transition_window(const ParamSet& params) {
+    const std::string& transition = params.choice("transition");
+    if (transition == "binary") return shader::GRASS_LOD_WINDOW_BINARY;
+    if (transition == "boulanger") return shader::GRASS_LOD_WINDOW_LINEAR;
+    if (transition == "lemme") return shader::GRASS_LOD_WINDOW_SMOOTHSTEP;
+    return params.choice("middle") == "slices" ? shader::GRASS_LOD_WINDOW_LINEAR : shader::GRASS_LOD_WINDOW_SMOOTHSTEP;
+}
+
+std::string transition_report(const shader::GrassLodParams& block) {
+    if (block.transition_window == shader::GRASS_LOD_WINDOW_BINARY || !(block.transition_width > 0.0f))
+        return "binary cut";
+    return fmt::format("{} over +-{} of the local density, screen door",
+                       block.transition_window == shader::GRASS_LOD_WINDOW_LINEAR
+                           ? "Boulanger's linear window (Algorithm 1, eq 4.6), omega_max"
+                           : "Lemme's smoothstep window (eq 5.26), epsilon",
+                       block.transition_width);
+}
+
 class GrassLod final : public Technique {
 public:
     std::string name() const override { return "grass.lod"; }
@@ -169,7 +189,8 @@ public:
     }
 
     FrameGraph graph(const ParamSet& params) const override {
-        const auto block = shader::GrassLodParams::from(params);
+        auto block = shader::GrassLodParams::from(params);
+        block.transition_window = transition_window(params);
         const uint32_t samples = uint32_t(params.integer("samples"));
         const bool to_coverage = block.coverage == shader::GRASS_COVERAGE_ALPHA_TO_COVERAGE;
         const bool gpu_culled = params.choice("culling") == "gpu";
@@ -271,6 +292,7 @@ public:
                                         block.geometry_none, btf ? "BTF slices" : "volume", volumes[0].slices,
                                         volume_levels, per_sample ? ", ray-cast per sample" : "", middle_shadows,
                                         block.image_start, block.image_full);
+        g.report["transition"] = transition_report(block);
         g.report["coverage"] = to_coverage ? "alpha-to-coverage" : "alpha-test";
         g.report["samples"] = std::to_string(samples);
         const bool culled = gpu_culled;

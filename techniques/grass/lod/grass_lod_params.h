@@ -19,6 +19,11 @@
            "distance from which a cell is all image (maxBTF; Lemme's 8-slice level 1 ends at 80 m)")       \
     SHADER(choice, transition_distance, ("blade", {"blade", "cell"}),                                          \
            "the distance a blade's band is taken at: blade, its root's (both theses: Boulanger Algorithm 4, L1210; Lemme L621; a filtered texel's blades' mean root); cell, the cell's centre's (canopy before issue 37: the split steps once per cell)") \
+    PLAN(choice, transition, ("thesis", {"thesis", "boulanger", "lemme", "binary"}),                            \
+         "how a blade crosses from one band to the next: over a window of thresholds around the cut, its share moving from the nearer representation to the farther one on complementary pixels (a screen door) - boulanger, Algorithm 1 / eq 4.6's linear ramp whose width shrinks toward the band's ends; lemme, eq 5.26's smoothstep of fixed width; thesis (the default), Boulanger's with middle = slices and Lemme's with the volume; binary, at once (eq 5.25 made complementary)") \
+    SHADER(real, transition_width, (0.05, 0.0, 0.25),                                                       \
+           "the transition window's half-width in units of the local density: Boulanger's omega_max (not given; canopy's 0.05) or Lemme's epsilon (not given; canopy's 0.05); 0 is the binary cut") \
+    DERIVED(integer, transition_window, "the window drawn: 0 binary, 1 linear (Boulanger), 2 smoothstep (Lemme)") \
     SHADER(integer, volume_levels, (1, 1, 3),                                                                \
            "the middle band's volume levels, each its own bake and pass, handing its blades to the next over a ramp as the bands do: 1 (canopy's default, one volume of `slices`) to 3 (Lemme's football field, L930-935: 8, 2 and 1 slices); middle = volume only") \
     SHADER(real, volume_2_start, (50.0, 0.0, 1e6),                                                           \

@@ -23,6 +23,7 @@
 #define CANOPY_GRASS_BLADE_TEXELS_H
 
 #include "shared_math.h"
+#include "lod_selection.h"
 
 CANOPY_BEGIN_NAMESPACE
 
@@ -60,10 +61,31 @@ CANOPY_FN vec4 blade_map_reduce(vec4 b0, vec4 b1, vec4 b2, vec4 b3, vec4 alphas)
 // blades' thresholds and roots only; the colour's alpha still says how much a blade covers.
 CANOPY_FN vec4 blade_map_bleed(vec4 b, vec4 next_level) { return blade_map_covered(b) ? b : next_level; }
 
-// The share of a texel's covered part that a representation drawing the band (lo, hi] of the
-// blades (lod_band; (0, 1] alone) keeps at local density ld: the part of the threshold range
-// `range` inside (lo ld, hi ld], the range read as evenly filled; a range of one threshold (a
-// level-0 texel) is kept whole or not at all, as grass_blade_in_band keeps a blade.
+// The screen-door values (lod_band_interval, lod_selection.h) at which a texel's covered part is
+// drawn by a representation drawing the band (lo, hi] of the blades (lod_band; (0, 1] alone) at
+// local density ld, each cut crossed over `window` of `width` (binary alone): the texel's
+// blades read as thresholds spread evenly over `range`, each drawn at its share of the band. The
+// interval's length is that share: the part of the range the density keeps inside the band (a
+// binary window); a range of one threshold (a level-0 texel) gets exactly the interval of its
+// blade, so a blade and the texel showing it share its pixels out without gap or overlap.
+CANOPY_FN vec2 blade_texel_interval(vec2 range, float ld, vec2 band, int window, float width) {
+    if (!(range.y > range.x)) return lod_band_interval(range.x, ld, band, window, width);
+    if (!(ld > 0.0f)) return vec2(0.0f, 0.0f);
+    float a = range.x / ld;
+    float b = min(range.y, ld) / ld;
+    if (!(b > a)) return vec2(0.0f, 0.0f);
+    float scale = ld / (range.y - range.x);  // 1 / the range's width in units of ld
+    float kept = (b - a) * scale;
+    float beyond_lo = (lod_beyond_integral(b, band.x, window, width) - lod_beyond_integral(a, band.x, window, width)) * scale;
+    float beyond_hi = (lod_beyond_integral(b, band.y, window, width) - lod_beyond_integral(a, band.y, window, width)) * scale;
+    // Rounding can take the integrals' difference a hair below 0 where the band keeps nothing.
+    return vec2(kept - beyond_lo, max(kept - beyond_lo, kept - beyond_hi));
+}
+
+// The share of a texel's covered part that a representation drawing the band (lo, hi] keeps at
+// local density ld with binary cuts: the part of the threshold range `range` inside
+// (lo ld, hi ld], the range read as evenly filled; a range of one threshold (a level-0 texel) is
+// kept whole or not at all, as grass_blade_in_band keeps a blade. blade_texel_interval's length.
 CANOPY_FN float blade_texel_share(vec2 range, float ld, vec2 band) {
     float lo = band.x * ld;
     float hi = band.y * ld;

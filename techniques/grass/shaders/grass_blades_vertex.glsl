@@ -2,7 +2,8 @@
 // blade patch in one instanced draw (PassContext::draw_population). A blade whose threshold its
 // cell's density does not reach, or that falls outside the representation's band
 // (grass_lod_band.glsl), is moved outside the clip volume, all its vertices alike, so it draws
-// nothing (Lemme eq 5.22). Outputs are interpolated at the centroid: with MSAA, a blade thinner
+// nothing (Lemme eq 5.22); one inside a transition window draws the screen-door pixels of its
+// share (lod_band_interval; all of them alone). Outputs are interpolated at the centroid: with MSAA, a blade thinner
 // than a pixel would otherwise extrapolate them to the pixel centre, far outside the strip
 // (negative colours). Included after the technique's parameter block.
 #include "frame_uniforms.glsl"
@@ -23,6 +24,7 @@ layout(location = 1) centroid out vec3 world_normal;
 layout(location = 2) centroid out vec2 strip_uv;
 layout(location = 3) centroid out float colour;
 layout(location = 4) flat out float taper;
+layout(location = 5) flat out vec2 transition;  // the screen-door values drawing it (lod_band_interval)
 
 void main() {
     float density = grass_root_density(corner_densities, blade_root.xy);
@@ -36,6 +38,8 @@ void main() {
     strip_uv = blade_strip.xy;
     colour = blade_strip.w;
     taper = blade_root.z;
-    bool drawn = grass_blade_in_band(blade_strip.z, density, grass_blade_band(instance_model, blade_root.xy));
+    transition = lod_band_interval(blade_strip.z, density, grass_blade_band(instance_model, blade_root.xy),
+                                   grass_transition_window(), grass_transition_width());
+    bool drawn = transition.y > transition.x;
     gl_Position = drawn ? frame.view_proj * world : vec4(2.0, 2.0, 2.0, 1.0);
 }

@@ -13,6 +13,8 @@
 // 8, 2 and 1 slices), each with its level and slice count in a uniform at binding 7
 // (GrassLodVolumeLevel), draws that level's share of the volume's band (lod_volume_level_band);
 // the hilltop pass (its z set) draws the image's band instead.
+#ifndef CANOPY_GRASS_LOD_BAND_GLSL
+#define CANOPY_GRASS_LOD_BAND_GLSL
 #include "grass_macro_cells.h"
 #include "lod_selection.h"
 
@@ -42,6 +44,23 @@ vec2 grass_representation_band_at(vec3 centre) {
 #endif
 }
 
+// The window a blade crosses a cut over (lod_band_interval): grass.lod's `transition`; binary
+// where a representation draws alone (its band is all the blades).
+int grass_transition_window() {
+#ifdef GRASS_LOD_REPRESENTATION
+    return frame.technique.transition_window;
+#else
+    return GRASS_LOD_WINDOW_BINARY;
+#endif
+}
+float grass_transition_width() {
+#ifdef GRASS_LOD_REPRESENTATION
+    return frame.technique.transition_width;
+#else
+    return 0.0;
+#endif
+}
+
 // The patch point whose distance decides a blade's band: its root (x, z), or the cell's centre.
 vec2 grass_band_point(vec2 root) {
 #ifdef GRASS_LOD_REPRESENTATION
@@ -66,3 +85,4 @@ vec2 grass_macro_blade_band(GrassMacroField field, ivec2 cell, vec2 s, float gro
     return grass_representation_band_at(field.origin_size.xyz + vec3(0.0, ground, 0.0) +
                                          vec3(float(cell.x) + placed.x, 0.0, float(cell.y) + placed.y) * field.origin_size.w);
 }
+#endif

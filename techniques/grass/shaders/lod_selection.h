@@ -2,10 +2,11 @@
 // Algorithm 1; Lemme 2012 §5.4, eq 5.22-5.26): the blades of a cell are split by their density
 // thresholds, the low thresholds going to the farther representation as the camera recedes, so
 // that a transition moves blades one by one instead of swapping the whole cell. GLSL and C++
-// (shared_math.h): grass.lod's shaders run lod_cuts, lod_band and lod_volume_level_band (a binary
-// cut per blade, at its root's distance: grass_lod_band.glsl); the weights (eq 4.3-4.5),
-// Algorithm 1 / eq 4.6's window and eq 5.25-5.26's opacities are run by the tests alone until
-// grass.lod draws the smooth transitions (issue 37).
+// (shared_math.h): grass.lod's shaders run lod_cuts, lod_band and lod_volume_level_band (the cuts
+// at each blade's root's distance: grass_lod_band.glsl) and lod_band_interval (the window each cut
+// is crossed over: Boulanger's Algorithm 1 / eq 4.6, Lemme's eq 5.26, or binary). The weights
+// (eq 4.3-4.5), lod_far_opacity / lod_near_opacity, lod_in_first / lod_in_second and the
+// uncentred lod_*_opacity_smooth are the theses' own forms, which the tests hold the drawn ones to.
 //
 // Choices where the theses are silent or wrong (techniques/grass/README.md, "Transitions"):
 // - ω_max (Algorithm 1) is not given: canopy takes 0.05, so at most a tenth of the local density
@@ -86,6 +87,70 @@ CANOPY_FN float lod_second_opacity_smooth(float bdth, float ld, float w1, float 
     if (!(ld > 0.0f) || bdth > ld) return 0.0f;
     return smoothstep(w1 - eps, w1 + eps, bdth / ld);
 }
+
+// How a blade crosses a cut between two representations (grass.lod's `transition`): at once
+// (binary, Lemme eq 5.25 made complementary), or over a window of thresholds around the cut in
+// which its opacity moves from the nearer representation to the farther one: Boulanger's linear
+// ramp whose half-width shrinks toward the band's ends (Algorithm 1, eq 4.6; lod_window's shape
+// with ω_max = `width`), or Lemme's smoothstep of fixed half-width ε = `width` (eq 5.26).
+CANOPY_CONST int GRASS_LOD_WINDOW_BINARY = 0;
+CANOPY_CONST int GRASS_LOD_WINDOW_LINEAR = 1;      // Boulanger Algorithm 1, eq 4.6
+CANOPY_CONST int GRASS_LOD_WINDOW_SMOOTHSTEP = 2;  // Lemme eq 5.26
+
+// The window's half-width around cut c: Boulanger's ω(w) (Fig 4.13) or Lemme's ε.
+CANOPY_FN float lod_window_half_width(float c, int window, float width) {
+    if (window == GRASS_LOD_WINDOW_LINEAR)
+        return width * (LOD_OMEGA_0 + (1.0f - LOD_OMEGA_0) * (1.0f - abs(2.0f * clamp(c, 0.0f, 1.0f) - 1.0f)));
+    return width;
+}
+
+// The window's upper end: canopy centres it at c (1 + 2 ω) - ω (see above), so at c = 0 it lies
+// wholly at or below 0 and at c = 1 wholly at or above 1.
+CANOPY_FN float lod_window_top(float c, float half_width) { return clamp(c, 0.0f, 1.0f) * (1.0f + 2.0f * half_width); }
+
+// The share of a blade at x = bdth / ld that lies beyond cut c, i.e. that the farther of the two
+// representations meeting at c draws: [x > c] for the binary cut, else a ramp over the window
+// (linear or smoothstep). 1 - lod_beyond(x, c) is Algorithm 1's opacity (lod_far_opacity: the
+// slices' in Boulanger's order) and Lemme's opacity_s (eq 5.26) with canopy's centred window.
+CANOPY_FN float lod_beyond(float x, float c, int window, float width) {
+    if (window == GRASS_LOD_WINDOW_BINARY || !(width > 0.0f)) return x > c ? 1.0f : 0.0f;
+    float w = lod_window_half_width(c, window, width);
+    float top = lod_window_top(c, w);
+    float t = clamp((x - (top - 2.0f * w)) / (2.0f * w), 0.0f, 1.0f);
+    return window == GRASS_LOD_WINDOW_LINEAR ? t : t * t * (3.0f - 2.0f * t);
+}
+
+// The integral of lod_beyond(., c) from below the window up to x (for a texel's threshold range).
+CANOPY_FN float lod_beyond_integral(float x, float c, int window, float width) {
+    if (window == GRASS_LOD_WINDOW_BINARY || !(width > 0.0f)) return max(x - c, 0.0f);
+    float w = lod_window_half_width(c, window, width);
+    float top = lod_window_top(c, w);
+    float t = clamp((x - (top - 2.0f * w)) / (2.0f * w), 0.0f, 1.0f);
+    float ramp = window == GRASS_LOD_WINDOW_LINEAR ? 0.5f * t * t : t * t * t - 0.5f * t * t * t * t;
+    return 2.0f * w * ramp + max(x - top, 0.0f);
+}
+
+// Which of a pixel's screen-door values h in [0, 1) (lod_screen_door) draw a blade at x = bdth / ld
+// in the band (lo, hi]: [1 - beyond(lo), 1 - beyond(hi)). The bands' intervals tile [0, 1) near to
+// far without gap or overlap, so two representations sharing a blade draw complementary pixels
+// of it and their shares sum to 1; a thinned blade (x > 1) or no grass (ld = 0) gets none. The
+// binary cut gives [0, 1) or nothing: grass_blade_in_band.
+CANOPY_FN vec2 lod_band_interval(float bdth, float ld, vec2 band, int window, float width) {
+    if (!(ld > 0.0f) || !(bdth > 0.0f) || bdth > ld) return vec2(0.0f, 0.0f);
+    float x = bdth / ld;
+    return vec2(1.0f - lod_beyond(x, band.x, window, width), 1.0f - lod_beyond(x, band.y, window, width));
+}
+
+// A per-pixel value in [0, 1), evenly spread over any few pixels (Jimenez's interleaved gradient
+// noise), that every representation reads alike at a pixel: canopy's screen door for a blade's
+// share in a band, so a transition's two shares of one blade land on complementary pixels (a
+// shared alpha through alpha-to-coverage would cover the same samples twice).
+CANOPY_FN float lod_screen_door(vec2 pixel) {
+    return fract(52.9829189f * fract(0.06711056f * floor(pixel.x) + 0.00583715f * floor(pixel.y)));
+}
+
+// Whether screen-door value h falls in `interval`.
+CANOPY_FN bool lod_interval_draws(vec2 interval, float h) { return h >= interval.x && h < interval.y; }
 
 // grass.lod's three representations, near to far.
 CANOPY_CONST int GRASS_LOD_GEOMETRY = 0;

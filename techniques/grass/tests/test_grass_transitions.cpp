@@ -37,11 +37,15 @@ params = { cells_x = 24, cells_z = 24, blades = 200 }
                        "transitions.toml");
 }
 
-nlohmann::json run(double step) {
+nlohmann::json numbers(double step, const std::string& transition) {
     const FamilyBenchmark& b = transitions();
-    const ParamSet params =
-        ParamSet::resolve(b.params(), {{"step", step}, {"eye_distance", 12.0}}, {}, {}, "grass-transitions");
-    return b.run(test::gpu(), field(), params).numbers.at("configurations");
+    const ParamSet params = ParamSet::resolve(
+        b.params(), {{"step", step}, {"eye_distance", 12.0}, {"transition", transition}}, {}, {}, "grass-transitions");
+    return b.run(test::gpu(), field(), params).numbers;
+}
+
+nlohmann::json run(double step, const std::string& transition = "binary") {
+    return numbers(step, transition).at("configurations");
 }
 
 }  // namespace
@@ -74,6 +78,46 @@ TEST_CASE("grass transitions: a step back moves switching blades to the next ban
 }
 
 TEST_CASE("grass transitions: two eyes at the same place switch nothing") {
-    for (const nlohmann::json& r : run(0.001))
-        CHECK(r.at("switching").get<uint64_t>() < r.at("blades_drawn").get<uint64_t>() / 1000);
+    for (const std::string transition : {"binary", "lemme"})
+        for (const nlohmann::json& r : run(0.001, transition)) {
+            CAPTURE(transition);
+            CHECK(r.at("share_moved").get<double>() < double(r.at("blades_drawn").get<uint64_t>()) / 1000.0);
+        }
+}
+
+TEST_CASE("grass transitions: a window moves the blades' worth a binary cut moves, spread over more blades") {
+    // A step moves each cut by the same share of the thresholds whatever the window (away from the
+    // band's ends): the shares moved match the binary cut's switching blades, and more blades move.
+    const nlohmann::json binary = run(0.5, "binary");
+    for (const std::string transition : {"lemme", "boulanger"}) {
+        const nlohmann::json smooth = run(0.5, transition);
+        for (size_t i = 2; i < 6; ++i) {
+            CAPTURE(transition);
+            CAPTURE(i);
+            const double moved = smooth[i].at("share_moved").get<double>();
+            const double switching = double(binary[i].at("switching").get<uint64_t>());
+            CHECK(binary[i].at("share_moved").get<double>() == doctest::Approx(switching));
+            CHECK(moved == doctest::Approx(switching).epsilon(0.1));
+            // On the smooth bands (rows 2-3) the step moves the cut by a fraction of the window.
+            if (i < 4) CHECK(double(smooth[i].at("switching").get<uint64_t>()) > 1.5 * switching);
+        }
+    }
+}
+
+TEST_CASE("grass transitions: filtered texels cutting at their blades' mean root draw at most 0.5 % of the blades "
+          "twice or never at grass.lod's defaults, up to 32-texel footprints") {
+    const nlohmann::json rows = numbers(0.25, "lemme").at("filtered_roots");
+    REQUIRE(rows.size() == 18);  // three band settings x six levels
+    for (size_t i = 0; i < 6; ++i) {
+        const nlohmann::json& r = rows[i];  // grass.lod's defaults
+        CAPTURE(r.dump());
+        const double near = r.at("near_middle_worst_share").get<double>();
+        if (r.at("level").get<int>() <= 5) {
+            CHECK(near <= 0.005);
+            CHECK(r.at("middle_far_bound_worst_share").get<double>() <= 0.005);
+        }
+        // Wider footprints hold roots farther from their mean.
+        if (i > 0) CHECK(near >= rows[i - 1].at("near_middle_worst_share").get<double>());
+    }
+    CHECK(rows[5].at("near_middle_worst_share").get<double>() > 0.0);
 }

@@ -5,11 +5,13 @@
 // a representation drawn alone (w = 0 or 1) leaves no blade semi-transparent; nothing is NaN.
 // grass.lod's three bands (lod_cuts, lod_band, grass_blade_in_band): over distances through both
 // transitions, every blade the density keeps falls in exactly one band, none it thins in any.
+#include "../shaders/blade_texels.h"
 #include "../shaders/grass_density.h"
 #include "../shaders/lod_selection.h"
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -277,4 +279,181 @@ TEST_CASE("grass.lod's volume levels (Lemme's 8, 2, 1 slices): each kept blade f
     CHECK(band(2, 250).y == band(2, 250).x);
     CHECK(band(3, 250).y > band(3, 250).x);
     CHECK(band(3, 250).y < 1.0f);  // the image has the rest
+}
+
+// ---- The transition windows grass.lod draws (lod_beyond, lod_band_interval, lod_screen_door) ----
+
+namespace {
+
+const std::vector<int> kWindows{shader::GRASS_LOD_WINDOW_BINARY, shader::GRASS_LOD_WINDOW_LINEAR,
+                                shader::GRASS_LOD_WINDOW_SMOOTHSTEP};
+
+}  // namespace
+
+TEST_CASE("transition windows: the linear one is Algorithm 1 / eq 4.6, the smoothstep one eq 5.26 centred, binary is "
+          "eq 5.25's complementary cut") {
+    for (float ld : {0.01f, 0.3f, 0.77f, 1.0f})
+        for (int k = 0; k <= 64; ++k) {
+            const float c = float(k) / 64.0f;
+            CAPTURE(ld);
+            CAPTURE(c);
+            const float eps = 0.05f;
+            const float centre = c * (1.0f + 2.0f * eps) - eps;  // canopy's centred window
+            for (float dth : thresholds()) {
+                if (dth > ld) continue;
+                const float x = dth / ld;
+                // The nearer representation's share: Algorithm 1's opacity (Boulanger's slices take
+                // the thresholds canopy's nearer band takes; the window's shape is his).
+                const float linear = 1.0f - shader::lod_beyond(x, c, shader::GRASS_LOD_WINDOW_LINEAR, shader::LOD_OMEGA_MAX);
+                const float smooth = 1.0f - shader::lod_beyond(x, c, shader::GRASS_LOD_WINDOW_SMOOTHSTEP, eps);
+                if (std::abs(linear - shader::lod_far_opacity(dth, ld, c)) > 2e-4f ||
+                    std::abs(smooth - shader::lod_first_opacity_smooth(dth, ld, centre, eps)) > 2e-4f ||
+                    (shader::lod_band_interval(dth, ld, shader::vec2(0.0f, c), shader::GRASS_LOD_WINDOW_BINARY, eps).y > 0.0f) !=
+                        shader::lod_in_first(dth, ld, c)) {
+                    CAPTURE(dth);
+                    CAPTURE(linear);
+                    CAPTURE(smooth);
+                    REQUIRE(false);
+                }
+            }
+        }
+}
+
+TEST_CASE("transition windows: over every distance, threshold and density the bands' screen-door intervals tile 0 to 1 "
+          "near to far for a kept blade, and are empty for a thinned one") {
+    struct Levels {
+        float gf, gn, v2s, v2f, v3s, v3f, is, ifull;
+        int levels;
+    };
+    const std::vector<Levels> settings{{5, 20, 50, 80, 100, 160, 200, 300, 3}, {5, 20, 0, 0, 0, 0, 50, 80, 1},
+                                       {10, 10, 30, 30, 50, 50, 70, 70, 3}, {0, 0, 0, 0, 0, 0, 0, 0, 1}};
+    const std::vector<float> all = thresholds();
+    std::vector<float> some;
+    for (size_t i = 0; i < all.size(); i += 8) some.push_back(all[i]);
+    some.push_back(1.0f);
+    for (int window : kWindows)
+        for (float width : {0.05f, 0.25f})
+            for (const Levels& b : settings) {
+                CAPTURE(window);
+                CAPTURE(width);
+                CAPTURE(b.levels);
+                const shader::vec4 ramps = shader::lod_volume_ramps(b.levels, b.v2s, b.v2f, b.v3s, b.v3f);
+                for (float d = 0.0f; d <= 320.0f; d += 1.37f) {
+                    const shader::vec2 cuts = shader::lod_cuts(d, b.gf, b.gn, b.is, b.ifull);
+                    const shader::vec2 bands[5] = {shader::lod_band(shader::GRASS_LOD_GEOMETRY, cuts),
+                                                   shader::lod_volume_level_band(1, cuts, d, ramps),
+                                                   shader::lod_volume_level_band(2, cuts, d, ramps),
+                                                   shader::lod_volume_level_band(3, cuts, d, ramps),
+                                                   shader::lod_band(shader::GRASS_LOD_IMAGE, cuts)};
+                    for (float ld : kDensities) {
+                        int kept = 0, split = 0;
+                        for (float dth : some) {
+                            float end = 0.0f;
+                            bool ok = true;
+                            int shared = 0;
+                            for (const shader::vec2& band : bands) {
+                                const shader::vec2 i = shader::lod_band_interval(dth, ld, band, window, width);
+                                ok = ok && std::isfinite(i.x) && std::isfinite(i.y) && i.y >= i.x;
+                                if (dth <= ld && ld > 0.0f) {
+                                    ok = ok && i.x == end;  // no gap, no overlap
+                                    end = i.y;
+                                    shared += i.y > i.x;
+                                } else {
+                                    ok = ok && !(i.y > i.x);  // thinned: nowhere
+                                }
+                            }
+                            if (dth <= ld && ld > 0.0f) {
+                                ok = ok && end == 1.0f;
+                                ++kept;
+                                split += shared > 1;
+                            }
+                            if (!ok) {
+                                CAPTURE(d);
+                                CAPTURE(ld);
+                                CAPTURE(dth);
+                                REQUIRE(ok);
+                            }
+                        }
+                        // Only the window's blades are shared: 2 * width of the density per cut, or none (binary).
+                        const double windows = window == shader::GRASS_LOD_WINDOW_BINARY ? 0.0 : 2.0 * width * 4.0;
+                        CHECK(double(split) <= windows * kept + 1.0);
+                    }
+                    // At the ends the one representation draws every blade whole.
+                    if (d < b.gf) CHECK(shader::lod_band_interval(0.5f, 1.0f, bands[0], window, width) == shader::vec2(0.0f, 1.0f));
+                    if (d >= b.ifull) CHECK(shader::lod_band_interval(0.5f, 1.0f, bands[4], window, width) == shader::vec2(0.0f, 1.0f));
+                }
+            }
+}
+
+TEST_CASE("transition windows: a texel's interval is its blade's at level 0, the mean of its blades' shares over a "
+          "range, and the bands' intervals tile what the density keeps") {
+    using shader::vec2;
+    for (int window : kWindows)
+        for (float width : {0.05f, 0.25f})
+            for (float ld : {0.0f, 0.3f, 0.77f, 1.0f})
+                for (float lo_cut : {0.0f, 0.2f, 0.5f})
+                    for (float hi_cut : {0.5f, 0.8f, 1.0f}) {
+                        CAPTURE(window);
+                        CAPTURE(width);
+                        CAPTURE(ld);
+                        const vec2 band(lo_cut, hi_cut);
+                        // Level 0: one threshold.
+                        for (float t : {0.05f, 0.25f, 0.5f, 0.75f, 0.99f, 1.0f, 2.0f})
+                            REQUIRE(shader::blade_texel_interval(vec2(t, t), ld, band, window, width) ==
+                                    shader::lod_band_interval(t, ld, band, window, width));
+                        for (const vec2 range : {vec2(0.1f, 0.9f), vec2(0.2f, 0.4f), vec2(0.45f, 0.55f), vec2(0.6f, 1.0f),
+                                                 vec2(0.01f, 1.0f)}) {
+                            CAPTURE(range);
+                            const vec2 interval = shader::blade_texel_interval(range, ld, band, window, width);
+                            // The mean share of thresholds spread evenly over the range.
+                            double mean = 0.0;
+                            const int n = 20000;
+                            for (int i = 0; i < n; ++i) {
+                                const float t = range.x + (range.y - range.x) * (float(i) + 0.5f) / float(n);
+                                const vec2 b = shader::lod_band_interval(t, ld, band, window, width);
+                                mean += double(b.y - b.x);
+                            }
+                            mean /= n;
+                            CHECK(double(interval.y - interval.x) == doctest::Approx(mean).epsilon(0.0).scale(1.0).epsilon(2e-3));
+                            CHECK(interval.y >= interval.x);
+                            if (window == shader::GRASS_LOD_WINDOW_BINARY)
+                                CHECK(interval.y - interval.x ==
+                                      doctest::Approx(shader::blade_texel_share(range, ld, band)).epsilon(1e-5));
+                            // Near, middle, far at these cuts: [0, kept) without gap or overlap.
+                            const float kept = shader::blade_texel_share(range, ld, vec2(0.0f, 1.0f));
+                            const vec2 near = shader::blade_texel_interval(range, ld, vec2(0.0f, lo_cut), window, width);
+                            const vec2 middle = shader::blade_texel_interval(range, ld, vec2(lo_cut, hi_cut), window, width);
+                            const vec2 far = shader::blade_texel_interval(range, ld, vec2(hi_cut, 1.0f), window, width);
+                            CHECK(near.x == doctest::Approx(0.0f).epsilon(0.0).scale(1.0).epsilon(1e-6));
+                            CHECK(near.y == doctest::Approx(middle.x).epsilon(1e-5));
+                            CHECK(middle.y == doctest::Approx(far.x).epsilon(1e-5));
+                            CHECK(far.y == doctest::Approx(kept).epsilon(1e-5));
+                        }
+                    }
+}
+
+TEST_CASE("transition windows: the screen door lies in 0 to 1 and spreads evenly over any few pixels") {
+    int below[5] = {};
+    const float levels[5] = {0.1f, 0.25f, 0.5f, 0.75f, 0.9f};
+    double worst_block = 0.0;
+    for (int by = 0; by < 64; by += 8)
+        for (int bx = 0; bx < 64; bx += 8) {
+            int block[5] = {};
+            for (int y = by; y < by + 8; ++y)
+                for (int x = bx; x < bx + 8; ++x) {
+                    // Pixel centres, as gl_FragCoord gives them, and the integer corner read alike.
+                    const float h = shader::lod_screen_door(shader::vec2(float(x) + 0.5f, float(y) + 0.5f));
+                    REQUIRE(h == shader::lod_screen_door(shader::vec2(float(x), float(y))));
+                    REQUIRE(h >= 0.0f);
+                    REQUIRE(h < 1.0f);
+                    for (int i = 0; i < 5; ++i) block[i] += h < levels[i];
+                }
+            for (int i = 0; i < 5; ++i) {
+                below[i] += block[i];
+                worst_block = std::max(worst_block, std::abs(block[i] / 64.0 - levels[i]));
+            }
+        }
+    for (int i = 0; i < 5; ++i) CHECK(below[i] / 4096.0 == doctest::Approx(levels[i]).epsilon(0.0).scale(1.0).epsilon(0.01));
+    // Any 8 x 8 block draws a share within 0.05 of its interval's length.
+    CHECK(worst_block <= 0.05);
 }
