@@ -52,13 +52,16 @@ glm::vec2 beyond_cuts(const Bands& b, const Window& w, float d, float t, float d
 
 // A filtered texel knows only its blades' mean root (blade_texels.h), so where the blades, cut at
 // their own roots, meet a texel cut at the mean, some of a blade's share may be drawn twice or
-// never. Modelled here with the texels of a `resolution`-texel bake at mip level L showing the
-// blades whose roots share a square of the level's footprint (2^L / resolution of the cell; the
-// bake's blade map averages the roots of the blades a texel shows, which lean a little across):
-// at each eye along the camera's line, the share of the drawn blades' worth that differs between
-// their own root's cut and their square's mean root's, at the near/middle cut (blades against
-// texels). At the middle/far cut two texels meet, the volume's and the image's, each off its
-// blades' roots: at most twice the figure for one.
+// never. Modelled here with a texel of a `resolution`-texel bake at mip level L showing the blades
+// whose roots share a square of the level's footprint (2^L / resolution of the cell): a proxy. The
+// image's top-view texels gather blades so (leaning a little across their edges); a volume
+// slice's texel gathers them along its section's depth as well (1/8 of a cell with 8 slices: the
+// 32-texel row of a 256-texel bake), and the bench does not read a texel's thresholds as spread
+// over their range, as the shaders do. At each eye along the camera's line, the share of the
+// drawn blades' worth that differs between their own root's cut and their square's mean root's, at
+// the near/middle cut (blades against texels); at the middle/far cut two texels meet, the
+// volume's and the image's, each off its blades' roots: twice the same model's figure, an
+// estimate (their footprints differ), not a bound.
 nlohmann::json filtered_roots(const grass::GrassField& field, const grass::BladePatch& patch,
                               const std::vector<Bands>& configurations, const Window& window, glm::vec3 target,
                               glm::vec3 back, uint32_t resolution, std::string& markdown) {
@@ -90,9 +93,11 @@ nlohmann::json filtered_roots(const grass::GrassField& field, const grass::Blade
         "at their mean root (blade_texels.h), while the blades cut at their own. At {} eyes every 2.5 m along the "
         "camera's line (from the target out to 120 m), the share of the drawn blades' worth whose cut at the "
         "near/middle transition differs between the two (drawn twice, or never); the largest over the eyes, and "
-        "at the middle/far transition the bound for two texels (twice one's). Blades grouped by root: a proxy for "
-        "the blades a texel shows, which lean a little across its edges.\n\n"
-        "| bands | level | footprint (cell) | near/middle: worst eye | middle/far: bound, worst eye |\n|---|---:|---:|---:|---:|\n",
+        "at the middle/far transition twice the same figure (two texels meet there: an estimate, not a bound). "
+        "Blades grouped by root square: a proxy for the blades a texel shows (an image texel's blades lean a "
+        "little across its edges; a volume slice's texel also gathers them along its section's depth, 1/8 of a "
+        "cell with 8 slices: the 0.125 row).\n\n"
+        "| bands | level | footprint (cell) | near/middle: worst eye | middle/far: estimate, worst eye |\n|---|---:|---:|---:|---:|\n",
         resolution, resolution, kEyes);
     nlohmann::json rows = nlohmann::json::array();
     for (const Bands& b : configurations)
@@ -122,7 +127,7 @@ nlohmann::json filtered_roots(const grass::GrassField& field, const grass::Blade
                             {"level", level},
                             {"footprint_cells", double(1u << level) / double(resolution)},
                             {"near_middle_worst_share", worst[0]},
-                            {"middle_far_bound_worst_share", worst[1]}});
+                            {"middle_far_estimate_worst_share", worst[1]}});
         }
     return rows;
 }

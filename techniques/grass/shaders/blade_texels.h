@@ -74,12 +74,11 @@ CANOPY_FN vec2 blade_texel_interval(vec2 range, float ld, vec2 band, int window,
     float a = range.x / ld;
     float b = min(range.y, ld) / ld;
     if (!(b > a)) return vec2(0.0f, 0.0f);
-    float scale = ld / (range.y - range.x);  // 1 / the range's width in units of ld
-    float kept = (b - a) * scale;
-    float beyond_lo = (lod_beyond_integral(b, band.x, window, width) - lod_beyond_integral(a, band.x, window, width)) * scale;
-    float beyond_hi = (lod_beyond_integral(b, band.y, window, width) - lod_beyond_integral(a, band.y, window, width)) * scale;
-    // Rounding can take the integrals' difference a hair below 0 where the band keeps nothing.
-    return vec2(kept - beyond_lo, max(kept - beyond_lo, kept - beyond_hi));
+    float kept = clamp((min(range.y, ld) - range.x) / (range.y - range.x), 0.0f, 1.0f);
+    // Each band's end: the kept part's mean share beyond its cut (lod_beyond_mean).
+    float start = kept * (1.0f - lod_beyond_mean(a, b, band.x, window, width));
+    float end = kept * (1.0f - lod_beyond_mean(a, b, band.y, window, width));
+    return vec2(start, max(start, end));  // rounding may take a band that keeps nothing a hair below 0
 }
 
 // The share of a texel's covered part that a representation drawing the band (lo, hi] keeps at

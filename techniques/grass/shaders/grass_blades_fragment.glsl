@@ -18,8 +18,10 @@ layout(location = 5) flat in vec2 transition;
 layout(location = 0) out vec4 out_color;
 
 void main() {
-    // A blade crossing a transition draws its share of the pixels (lod_selection.h); alone, all.
+#ifdef GRASS_LOD_REPRESENTATION
+    // A blade crossing a transition draws its share of the pixels (lod_selection.h).
     if (!lod_interval_draws(transition, lod_screen_door(gl_FragCoord.xy))) discard;
+#endif
     float alpha = 1.0;
     if (frame.technique.coverage == GRASS_COVERAGE_ALPHA_TEST) {
         if (!blade_opaque(strip_uv, taper)) discard;

@@ -38,8 +38,13 @@ void main() {
     strip_uv = blade_strip.xy;
     colour = blade_strip.w;
     taper = blade_root.z;
+#ifdef GRASS_LOD_REPRESENTATION
     transition = lod_band_interval(blade_strip.z, density, grass_blade_band(instance_model, blade_root.xy),
                                    grass_transition_window(), grass_transition_width());
     bool drawn = transition.y > transition.x;
+#else
+    transition = vec2(0.0, 1.0);
+    bool drawn = grass_blade_drawn(blade_strip.z, density);
+#endif
     gl_Position = drawn ? frame.view_proj * world : vec4(2.0, 2.0, 2.0, 1.0);
 }

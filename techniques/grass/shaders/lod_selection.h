@@ -111,9 +111,11 @@ CANOPY_FN float lod_window_top(float c, float half_width) { return clamp(c, 0.0f
 // The share of a blade at x = bdth / ld that lies beyond cut c, i.e. that the farther of the two
 // representations meeting at c draws: [x > c] for the binary cut, else a ramp over the window
 // (linear or smoothstep). 1 - lod_beyond(x, c) is Algorithm 1's opacity (lod_far_opacity: the
-// slices' in Boulanger's order) and Lemme's opacity_s (eq 5.26) with canopy's centred window.
+// slices' in Boulanger's order) and Lemme's opacity_s (eq 5.26) with canopy's centred window. At
+// c = 0 and c = 1 the window lies wholly outside ]0, 1]: exactly the binary cut there, whatever
+// the rounding of its edge.
 CANOPY_FN float lod_beyond(float x, float c, int window, float width) {
-    if (window == GRASS_LOD_WINDOW_BINARY || !(width > 0.0f)) return x > c ? 1.0f : 0.0f;
+    if (window == GRASS_LOD_WINDOW_BINARY || !(width > 0.0f) || c <= 0.0f || c >= 1.0f) return x > c ? 1.0f : 0.0f;
     float w = lod_window_half_width(c, window, width);
     float top = lod_window_top(c, w);
     float t = clamp((x - (top - 2.0f * w)) / (2.0f * w), 0.0f, 1.0f);
@@ -122,12 +124,29 @@ CANOPY_FN float lod_beyond(float x, float c, int window, float width) {
 
 // The integral of lod_beyond(., c) from below the window up to x (for a texel's threshold range).
 CANOPY_FN float lod_beyond_integral(float x, float c, int window, float width) {
-    if (window == GRASS_LOD_WINDOW_BINARY || !(width > 0.0f)) return max(x - c, 0.0f);
+    if (window == GRASS_LOD_WINDOW_BINARY || !(width > 0.0f) || c <= 0.0f || c >= 1.0f) return max(x - c, 0.0f);
     float w = lod_window_half_width(c, window, width);
     float top = lod_window_top(c, w);
     float t = clamp((x - (top - 2.0f * w)) / (2.0f * w), 0.0f, 1.0f);
     float ramp = window == GRASS_LOD_WINDOW_LINEAR ? 0.5f * t * t : t * t * t - 0.5f * t * t * t * t;
     return 2.0f * w * ramp + max(x - top, 0.0f);
+}
+
+// The mean of lod_beyond(., c) over thresholds spread evenly over [a, b] (x units, a <= b): the
+// window's ramp and the part above it integrated apart, so that a narrow range (a filtered lookup
+// between a level-0 texel and the next) keeps its precision; a range under 1e-4 wide reads its
+// middle.
+CANOPY_FN float lod_beyond_mean(float a, float b, float c, int window, float width) {
+    if (!(b - a > 1.0e-4f)) return lod_beyond(0.5f * (a + b), c, window, width);
+    if (window == GRASS_LOD_WINDOW_BINARY || !(width > 0.0f) || c <= 0.0f || c >= 1.0f)
+        return (max(b, c) - max(a, c)) / (b - a);
+    float w = lod_window_half_width(c, window, width);
+    float top = lod_window_top(c, w);
+    float ta = clamp((a - (top - 2.0f * w)) / (2.0f * w), 0.0f, 1.0f);
+    float tb = clamp((b - (top - 2.0f * w)) / (2.0f * w), 0.0f, 1.0f);
+    float ramp = window == GRASS_LOD_WINDOW_LINEAR ? 0.5f * (tb - ta) * (tb + ta)
+                                                   : (tb * tb * tb - ta * ta * ta) - 0.5f * (tb * tb * tb * tb - ta * ta * ta * ta);
+    return (2.0f * w * ramp + (max(b, top) - max(a, top))) / (b - a);
 }
 
 // Which of a pixel's screen-door values h in [0, 1) (lod_screen_door) draw a blade at x = bdth / ld
@@ -141,12 +160,18 @@ CANOPY_FN vec2 lod_band_interval(float bdth, float ld, vec2 band, int window, fl
     return vec2(1.0f - lod_beyond(x, band.x, window, width), 1.0f - lod_beyond(x, band.y, window, width));
 }
 
-// A per-pixel value in [0, 1), evenly spread over any few pixels (Jimenez's interleaved gradient
-// noise), that every representation reads alike at a pixel: canopy's screen door for a blade's
-// share in a band, so a transition's two shares of one blade land on complementary pixels (a
-// shared alpha through alpha-to-coverage would cover the same samples twice).
+// A per-pixel value in [0, 1) that every representation reads alike at a pixel: canopy's screen
+// door for a blade's share in a band, so a transition's two shares of one blade land on
+// complementary pixels (a shared alpha through alpha-to-coverage would cover the same samples
+// twice). An 8 x 8 ordered-dither (Bayer) matrix in integer arithmetic, so every shader and the
+// C++ tests compute the same value bit for bit; any 8 x 8 pixels hold each of its 64 levels once.
 CANOPY_FN float lod_screen_door(vec2 pixel) {
-    return fract(52.9829189f * fract(0.06711056f * floor(pixel.x) + 0.00583715f * floor(pixel.y)));
+    uint x = uint(max(floor(pixel.x), 0.0f)) & 7u;
+    uint y = uint(max(floor(pixel.y), 0.0f)) & 7u;
+    uint xy = x ^ y;
+    uint level = ((xy & 1u) << 5u) | ((y & 1u) << 4u) | ((xy & 2u) << 2u) | ((y & 2u) << 1u) | ((xy & 4u) >> 1u) |
+                 ((y & 4u) >> 2u);
+    return (float(level) + 0.5f) / 64.0f;
 }
 
 // Whether screen-door value h falls in `interval`.

@@ -153,67 +153,115 @@ TEST_CASE("grass.lod quadtree: a macro-cell's volume and image each draw only th
     CHECK(wrong == 0);
 }
 
-TEST_CASE("grass.lod quadtree: across a smooth transition window each pixel shows the binary cut at its screen-door "
-          "value's threshold (the two bands share the window's blades on complementary pixels)") {
-    // The cell of the test above, its cut at 0.4 taken at the cell's centre (transition_distance =
-    // "cell", so every blade has the same cut). A window of width 0.25 around it: the volume draws
-    // a blade at x = bdth / ld on the pixels whose screen-door value h lies below 1 - beyond(x),
-    // the image on the others; so at pixel p the frame is the binary cut at x_v(h(p)), the
-    // threshold where beyond(x) reaches 1 - h. Binary frames at 17 cuts across the window bracket
-    // every pixel's x_v; where the two bracketing frames agree, the smooth frame must show what
-    // they show. A window taken at 1 - c instead of c, one that drops or doubles the window's
-    // blades, or a screen door that differs between the bands breaks it.
+TEST_CASE("grass.lod quadtree: a cut through a cell splits its blades by their roots' distance, not the cell's centre's") {
+    // The one cell of the tests above, the blades handing over to the image in a step at the
+    // distance of the cell's centre: cut per blade (the default), the roots nearer than that
+    // stay blades and the farther ones go to the image, so the frame shows both; cut at the
+    // centre (transition_distance = "cell", or a shader taking the centre for the root), the
+    // whole cell goes one way.
     const char* tilted =
         "[camera]\nposition = [0.5, 78.784620, 14.391854]\ntarget = [0.5, 0, 0.5]\nup = [0, 0, -1]\nfov = 0.9\n"
         "near = 40\nfar = 120";
     const Scene full = grass::test::one_cell_scene(tilted, "density = 1.0");
     const double centre = glm::distance(glm::vec3(0.5f, 78.784620f, 14.391854f), glm::vec3(0.5f, 0.0f, 0.5f));
-    const auto frame = [&](double cut, const std::string& transition) {
-        // The image's ramp from 0 to image_full is 1 - cut at the cell's centre.
-        Values values = quadtree_values(0, 0, 0, centre / (1.0 - cut), "none");
-        values["transition_distance"] = std::string("cell");
-        values["transition"] = transition;
-        values["transition_width"] = 0.25;
+    const auto frame = [&](double step, const std::string& distance) {
+        Values values = quadtree_values(step, step, step, step, "none");
+        values["transition"] = std::string("binary");
+        values["transition_distance"] = distance;
         return render(full, "grass.lod", values);
     };
+    const Image blades = frame(1e6, "blade"), image = frame(0.0, "blade");
+    for (const std::string distance : {"blade", "cell"}) {
+        CAPTURE(distance);
+        const Image split = frame(centre, distance);
+        int as_blades = 0, as_image = 0;
+        for (int y = 0; y < split.height; ++y)
+            for (int x = 0; x < split.width; ++x) {
+                const float *b = blades.at(x, y), *i = image.at(x, y), *got = split.at(x, y);
+                const auto same = [](const float* p, const float* q) {
+                    return std::abs(p[0] - q[0]) <= 1e-5f && std::abs(p[1] - q[1]) <= 1e-5f && std::abs(p[2] - q[2]) <= 1e-5f;
+                };
+                if (same(b, i)) continue;  // where the two agree, the split says nothing
+                as_blades += grass::test::shows_grass(b) && same(got, b);
+                as_image += grass::test::shows_grass(i) && same(got, i);
+            }
+        MESSAGE(distance << ": " << as_blades << " pixels as the blades, " << as_image << " as the image");
+        if (distance == "blade") {
+            CHECK(as_blades > 300);
+            CHECK(as_image > 300);
+        } else {
+            CHECK(std::min(as_blades, as_image) < 30);
+        }
+    }
+}
+
+TEST_CASE("grass.lod quadtree: across a smooth transition window each pixel shows the binary cut at its screen-door "
+          "value's threshold (the two bands share the window's blades on complementary pixels)") {
+    // The cell of the test above, one cut at 0.4 taken at the cell's centre (transition_distance =
+    // "cell", so every blade has the same cut): the blades against the volume (near/middle), or the
+    // volume against the image (middle/far). A window of width 0.25 around it: the nearer band
+    // draws a blade at x = bdth / ld on the pixels whose screen-door value h lies below
+    // 1 - beyond(x), the farther on the others; so at pixel p the frame is the binary cut at
+    // x_v(h(p)), the threshold where beyond(x) reaches 1 - h. Binary frames at 17 cuts across the
+    // window bracket every pixel's x_v; where the two bracketing frames agree, the smooth frame
+    // must show what they show. A window taken at 1 - c instead of c, one that drops or doubles
+    // the window's blades, or a screen door that differs between the bands breaks it.
+    const char* tilted =
+        "[camera]\nposition = [0.5, 78.784620, 14.391854]\ntarget = [0.5, 0, 0.5]\nup = [0, 0, -1]\nfov = 0.9\n"
+        "near = 40\nfar = 120";
+    const Scene full = grass::test::one_cell_scene(tilted, "density = 1.0");
+    const double centre = glm::distance(glm::vec3(0.5f, 78.784620f, 14.391854f), glm::vec3(0.5f, 0.0f, 0.5f));
     constexpr float kCut = 0.4f, kWidth = 0.25f;
     constexpr int kCuts = 16;
-    for (const auto& [transition, window] : {std::pair{"lemme", canopy::shader::GRASS_LOD_WINDOW_SMOOTHSTEP},
-                                             std::pair{"boulanger", canopy::shader::GRASS_LOD_WINDOW_LINEAR}}) {
-        CAPTURE(transition);
-        const float half = canopy::shader::lod_window_half_width(kCut, window, kWidth);
-        const float top = canopy::shader::lod_window_top(kCut, half), bottom = top - 2.0f * half;
-        std::vector<Image> cuts;
-        for (int k = 0; k <= kCuts; ++k) cuts.push_back(frame(bottom + (top - bottom) * double(k) / kCuts, "binary"));
-        const Image smooth = frame(kCut, transition);
-        int checked = 0, wrong = 0, in_window = 0;
-        for (int y = 0; y < smooth.height; ++y)
-            for (int x = 0; x < smooth.width; ++x) {
-                const float h = canopy::shader::lod_screen_door(glm::vec2(float(x), float(y)));
-                // x_v: the largest threshold the volume still draws at this pixel, by bisection.
-                float lo = 0.0f, hi = 1.0f;
-                for (int i = 0; i < 40; ++i) {
-                    const float mid = 0.5f * (lo + hi);
-                    (canopy::shader::lod_beyond(mid, kCut, window, kWidth) < 1.0f - h ? lo : hi) = mid;
+    for (const bool near_middle : {true, false}) {
+        CAPTURE(near_middle);
+        const auto frame = [&](double cut, const std::string& transition) {
+            // The blades' ramp from 0 to geometry_none is cut at the cell's centre, or the image's
+            // ramp from 0 to image_full is 1 - cut there.
+            Values values = near_middle ? quadtree_values(0, centre / (1.0 - cut), 1e6, 1e6, "none")
+                                        : quadtree_values(0, 0, 0, centre / (1.0 - cut), "none");
+            values["transition_distance"] = std::string("cell");
+            values["transition"] = transition;
+            values["transition_width"] = double(kWidth);
+            return render(full, "grass.lod", values);
+        };
+        for (const auto& [transition, window] : {std::pair{"lemme", canopy::shader::GRASS_LOD_WINDOW_SMOOTHSTEP},
+                                                 std::pair{"boulanger", canopy::shader::GRASS_LOD_WINDOW_LINEAR}}) {
+            CAPTURE(transition);
+            const float half = canopy::shader::lod_window_half_width(kCut, window, kWidth);
+            const float top = canopy::shader::lod_window_top(kCut, half), bottom = top - 2.0f * half;
+            std::vector<Image> cuts;
+            for (int k = 0; k <= kCuts; ++k) cuts.push_back(frame(bottom + (top - bottom) * double(k) / kCuts, "binary"));
+            const Image smooth = frame(kCut, transition);
+            int checked = 0, wrong = 0, in_window = 0;
+            for (int y = 0; y < smooth.height; ++y)
+                for (int x = 0; x < smooth.width; ++x) {
+                    const float h = canopy::shader::lod_screen_door(glm::vec2(float(x), float(y)));
+                    // x_v: the largest threshold the nearer band still draws at this pixel, by bisection.
+                    float lo = 0.0f, hi = 1.0f;
+                    for (int i = 0; i < 40; ++i) {
+                        const float mid = 0.5f * (lo + hi);
+                        (canopy::shader::lod_beyond(mid, kCut, window, kWidth) < 1.0f - h ? lo : hi) = mid;
+                    }
+                    const int k = std::clamp(int(std::floor((lo - bottom) / (top - bottom) * kCuts)), 0, kCuts - 1);
+                    const float* a = cuts[size_t(k)].at(x, y);
+                    const float* b = cuts[size_t(k + 1)].at(x, y);
+                    if (std::abs(a[0] - b[0]) > 1e-5f || std::abs(a[1] - b[1]) > 1e-5f || std::abs(a[2] - b[2]) > 1e-5f) continue;
+                    ++checked;
+                    // A pixel whose frame the cut changes within the window: the window's blades.
+                    const float* first = cuts.front().at(x, y);
+                    const float* last = cuts.back().at(x, y);
+                    in_window += std::abs(first[0] - last[0]) + std::abs(first[1] - last[1]) + std::abs(first[2] - last[2]) > 1e-4f;
+                    const float* got = smooth.at(x, y);
+                    for (int c = 0; c < 3; ++c) wrong += std::abs(got[c] - a[c]) > 1e-5f;
                 }
-                const int k = std::clamp(int(std::floor((lo - bottom) / (top - bottom) * kCuts)), 0, kCuts - 1);
-                const float* a = cuts[size_t(k)].at(x, y);
-                const float* b = cuts[size_t(k + 1)].at(x, y);
-                if (std::abs(a[0] - b[0]) > 1e-5f || std::abs(a[1] - b[1]) > 1e-5f || std::abs(a[2] - b[2]) > 1e-5f) continue;
-                ++checked;
-                // A pixel whose frame the cut changes within the window: the window's blades.
-                const float* first = cuts.front().at(x, y);
-                const float* last = cuts.back().at(x, y);
-                in_window += std::abs(first[0] - last[0]) + std::abs(first[1] - last[1]) + std::abs(first[2] - last[2]) > 1e-4f;
-                const float* got = smooth.at(x, y);
-                for (int c = 0; c < 3; ++c) wrong += std::abs(got[c] - a[c]) > 1e-5f;
-            }
-        CAPTURE(checked);
-        CAPTURE(in_window);
-        MESSAGE(std::string(transition) << ": " << checked << " pixels checked, " << in_window << " in the window, " << wrong << " wrong");
-        CHECK(checked > smooth.width * smooth.height * 3 / 4);
-        CHECK(in_window > 300);
-        CHECK(wrong == 0);
+            MESSAGE(std::string(near_middle ? "near/middle " : "middle/far ") << std::string(transition) << ": " << checked
+                                                                  << " pixels checked, " << in_window << " in the window, "
+                                                                  << wrong << " wrong");
+            CHECK(checked > smooth.width * smooth.height / 2);
+            CHECK(in_window > 300);
+            CHECK(wrong == 0);
+        }
     }
 }
 

@@ -114,7 +114,7 @@ TEST_CASE("grass transitions: filtered texels cutting at their blades' mean root
         const double near = r.at("near_middle_worst_share").get<double>();
         if (r.at("level").get<int>() <= 5) {
             CHECK(near <= 0.005);
-            CHECK(r.at("middle_far_bound_worst_share").get<double>() <= 0.005);
+            CHECK(r.at("middle_far_estimate_worst_share").get<double>() <= 0.005);
         }
         // Wider footprints hold roots farther from their mean.
         if (i > 0) CHECK(near >= rows[i - 1].at("near_middle_worst_share").get<double>());
