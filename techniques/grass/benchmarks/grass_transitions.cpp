@@ -64,9 +64,9 @@ glm::vec2 beyond_cuts(const Bands& b, const Window& w, float d, float t, float d
 // estimate (their footprints differ), not a bound.
 nlohmann::json filtered_roots(const grass::GrassField& field, const grass::BladePatch& patch,
                               const std::vector<Bands>& configurations, const Window& window, glm::vec3 target,
-                              glm::vec3 back, uint32_t resolution, std::string& markdown) {
-    constexpr int kLevels = 6;   // levels 1 to 6: footprints of 2 to 64 texels
-    constexpr int kEyes = 48;    // eyes every 2.5 m from the target out to 120 m
+                              glm::vec3 back, uint32_t resolution, int eyes, std::string& markdown) {
+    constexpr int kLevels = 6;  // levels 1 to 6: footprints of 2 to 64 texels
+    const float spacing = 120.0f / float(eyes);  // eyes from the target out to 120 m
     // Each level's mean root (patch x, z) of the blades in each square, all the patch's blades
     // (the bake draws them all; the density thins them at run time).
     std::vector<std::vector<glm::vec2>> means(kLevels + 1);
@@ -90,7 +90,7 @@ nlohmann::json filtered_roots(const grass::GrassField& field, const grass::Blade
     markdown += fmt::format(
         "\n## Filtered texels: blades drawn twice or never where a texel cuts at its blades' mean root\n\n"
         "A texel of a {}-texel bake at mip level L shows the blades of a square 2^L / {} of a cell wide and cuts them "
-        "at their mean root (blade_texels.h), while the blades cut at their own. At {} eyes every 2.5 m along the "
+        "at their mean root (blade_texels.h), while the blades cut at their own. At {} eyes every {:.3g} m along the "
         "camera's line (from the target out to 120 m), the share of the drawn blades' worth whose cut at the "
         "near/middle transition differs between the two (drawn twice, or never); the largest over the eyes, and "
         "at the middle/far transition twice the same figure (two texels meet there: an estimate, not a bound). "
@@ -98,13 +98,13 @@ nlohmann::json filtered_roots(const grass::GrassField& field, const grass::Blade
         "little across its edges; a volume slice's texel also gathers them along its section's depth, 1/8 of a "
         "cell with 8 slices: the 0.125 row).\n\n"
         "| bands | level | footprint (cell) | near/middle: worst eye | middle/far: estimate, worst eye |\n|---|---:|---:|---:|---:|\n",
-        resolution, resolution, kEyes);
+        resolution, resolution, eyes, spacing);
     nlohmann::json rows = nlohmann::json::array();
     for (const Bands& b : configurations)
         for (int level = 1; level <= kLevels; ++level) {
             double worst[2] = {0.0, 0.0};
-            for (int e = 0; e < kEyes; ++e) {
-                const glm::vec3 eye = target + (2.5f * float(e)) * back;
+            for (int e = 0; e < eyes; ++e) {
+                const glm::vec3 eye = target + (spacing * float(e)) * back;
                 double off[2] = {0.0, 0.0};
                 uint64_t drawn = 0;
                 grass::for_each_drawn_blade(field, patch, [&](const grass::FieldBlade& blade) {
@@ -152,7 +152,10 @@ public:
                 ParamSpec::real("transition_width", 0.05, 0.0, 0.25, "the window's half-width (grass.lod's)"),
                 ParamSpec::integer("resolution", 256, 16, 4096,
                                    "texels across a cell of the filtered bakes the second table models "
-                                   "(grass.lod's resolution and image_resolution)")};
+                                   "(grass.lod's resolution and image_resolution)"),
+                ParamSpec::integer("filtered_eyes", 48, 0, 1000,
+                                   "eyes of the second table, evenly from the camera's target out to 120 m "
+                                   "(48: every 2.5 m); 0 leaves the table out")};
     }
 
     FamilyBenchmarkResult run(const GpuContext&, const Scene& scene, const ParamSet& params) const override {
@@ -253,8 +256,10 @@ public:
             "Boulanger's density thresholds spread a transition's switches over its depth, a few blades in many cells; "
             "sharp bands gather them on a line of cells, each switching many of its blades at once.\n",
             others);
-        result.numbers["filtered_roots"] = filtered_roots(spec.field, patch, configurations, window, target, back,
-                                                          uint32_t(params.integer("resolution")), result.markdown);
+        if (const int eyes = int(params.integer("filtered_eyes")); eyes > 0)
+            result.numbers["filtered_roots"] = filtered_roots(spec.field, patch, configurations, window, target, back,
+                                                              uint32_t(params.integer("resolution")), eyes,
+                                                              result.markdown);
         result.numbers["eye"] = {eye.x, eye.y, eye.z};
         result.numbers["step"] = step;
         result.numbers["configurations"] = rows;
