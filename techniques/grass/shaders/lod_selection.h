@@ -108,28 +108,26 @@ CANOPY_FN float lod_window_half_width(float c, int window, float width) {
 // wholly at or below 0 and at c = 1 wholly at or above 1.
 CANOPY_FN float lod_window_top(float c, float half_width) { return clamp(c, 0.0f, 1.0f) * (1.0f + 2.0f * half_width); }
 
+// Whether cut c is crossed at once: a binary window, no width, or a cut at 0 or 1, where the
+// window lies wholly outside ]0, 1] (exactly the binary cut there, whatever its edge's rounding).
+CANOPY_FN bool lod_cut_is_step(float c, int window, float width) {
+    return window == GRASS_LOD_WINDOW_BINARY || !(width > 0.0f) || c <= 0.0f || c >= 1.0f;
+}
+
+// Where x lies across cut c's window, 0 below it to 1 above it (the window not a step).
+CANOPY_FN float lod_window_position(float x, float c, int window, float width) {
+    float w = lod_window_half_width(c, window, width);
+    return clamp((x - (lod_window_top(c, w) - 2.0f * w)) / (2.0f * w), 0.0f, 1.0f);
+}
+
 // The share of a blade at x = bdth / ld that lies beyond cut c, i.e. that the farther of the two
 // representations meeting at c draws: [x > c] for the binary cut, else a ramp over the window
 // (linear or smoothstep). 1 - lod_beyond(x, c) is Algorithm 1's opacity (lod_far_opacity: the
-// slices' in Boulanger's order) and Lemme's opacity_s (eq 5.26) with canopy's centred window. At
-// c = 0 and c = 1 the window lies wholly outside ]0, 1]: exactly the binary cut there, whatever
-// the rounding of its edge.
+// slices' in Boulanger's order) and Lemme's opacity_s (eq 5.26) with canopy's centred window.
 CANOPY_FN float lod_beyond(float x, float c, int window, float width) {
-    if (window == GRASS_LOD_WINDOW_BINARY || !(width > 0.0f) || c <= 0.0f || c >= 1.0f) return x > c ? 1.0f : 0.0f;
-    float w = lod_window_half_width(c, window, width);
-    float top = lod_window_top(c, w);
-    float t = clamp((x - (top - 2.0f * w)) / (2.0f * w), 0.0f, 1.0f);
+    if (lod_cut_is_step(c, window, width)) return x > c ? 1.0f : 0.0f;
+    float t = lod_window_position(x, c, window, width);
     return window == GRASS_LOD_WINDOW_LINEAR ? t : t * t * (3.0f - 2.0f * t);
-}
-
-// The integral of lod_beyond(., c) from below the window up to x (for a texel's threshold range).
-CANOPY_FN float lod_beyond_integral(float x, float c, int window, float width) {
-    if (window == GRASS_LOD_WINDOW_BINARY || !(width > 0.0f) || c <= 0.0f || c >= 1.0f) return max(x - c, 0.0f);
-    float w = lod_window_half_width(c, window, width);
-    float top = lod_window_top(c, w);
-    float t = clamp((x - (top - 2.0f * w)) / (2.0f * w), 0.0f, 1.0f);
-    float ramp = window == GRASS_LOD_WINDOW_LINEAR ? 0.5f * t * t : t * t * t - 0.5f * t * t * t * t;
-    return 2.0f * w * ramp + max(x - top, 0.0f);
 }
 
 // The mean of lod_beyond(., c) over thresholds spread evenly over [a, b] (x units, a <= b): the
@@ -138,12 +136,12 @@ CANOPY_FN float lod_beyond_integral(float x, float c, int window, float width) {
 // middle.
 CANOPY_FN float lod_beyond_mean(float a, float b, float c, int window, float width) {
     if (!(b - a > 1.0e-4f)) return lod_beyond(0.5f * (a + b), c, window, width);
-    if (window == GRASS_LOD_WINDOW_BINARY || !(width > 0.0f) || c <= 0.0f || c >= 1.0f)
-        return (max(b, c) - max(a, c)) / (b - a);
+    if (lod_cut_is_step(c, window, width)) return (max(b, c) - max(a, c)) / (b - a);
     float w = lod_window_half_width(c, window, width);
     float top = lod_window_top(c, w);
-    float ta = clamp((a - (top - 2.0f * w)) / (2.0f * w), 0.0f, 1.0f);
-    float tb = clamp((b - (top - 2.0f * w)) / (2.0f * w), 0.0f, 1.0f);
+    float ta = lod_window_position(a, c, window, width);
+    float tb = lod_window_position(b, c, window, width);
+    // The ramp's integral over the window, 2w times that of t (linear) or of 3t^2 - 2t^3 (smoothstep).
     float ramp = window == GRASS_LOD_WINDOW_LINEAR ? 0.5f * (tb - ta) * (tb + ta)
                                                    : (tb * tb * tb - ta * ta * ta) - 0.5f * (tb * tb * tb * tb - ta * ta * ta * ta);
     return (2.0f * w * ramp + (max(b, top) - max(a, top))) / (b - a);

@@ -32,7 +32,7 @@ void main() {
     vec2 band = lod_band(GRASS_LOD_VOLUME, lod_cuts(12.0, 4.0, 8.0, 10.0, 20.0));
     values[11] = vec4(band, grass_blade_in_band(0.5, 0.8, band) ? 1.0 : 0.0, lod_ramp_down(5.0, 5.0, 5.0));
     values[12] = vec4(lod_beyond(0.4, 0.5, GRASS_LOD_WINDOW_SMOOTHSTEP, 0.05),
-                      lod_beyond_integral(0.4, 0.5, GRASS_LOD_WINDOW_LINEAR, 0.05),
+                      lod_beyond_mean(0.3, 0.6, 0.5, GRASS_LOD_WINDOW_LINEAR, 0.05),
                       lod_band_interval(0.3, 0.8, band, GRASS_LOD_WINDOW_LINEAR, 0.05));
     values[13] = vec4(blade_texel_interval(vec2(0.2, 0.6), 0.7, band, GRASS_LOD_WINDOW_SMOOTHSTEP, 0.05),
                       lod_screen_door(vec2(3.5, 7.5)), lod_interval_draws(vec2(0.0, 0.5), 0.25) ? 1.0 : 0.0);
